@@ -1,0 +1,73 @@
+#pragma once
+// Visible-area occlusion level of a triangle mesh (thesis section 3.1).
+//
+// Every face is sampled (mesh_sampling.hpp). From each sample a shadow ray goes
+// to each viewpoint; the sample is visible from a viewpoint if no face other
+// than its own lies on the segment between them (up to a self-intersection
+// tolerance of `epsilon_scale` times the scene diagonal at both ends). A sample
+// is visible if any viewpoint sees it. Per face, w = visible samples / samples;
+// visible area = sum of w * area; occlusion level = 1 - visible area / total area.
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "occlusion/analysis/progress.hpp"
+#include "occlusion/core/mesh.hpp"
+#include "occlusion/core/octree.hpp"
+
+namespace occlusion {
+
+struct MeshOcclusionOptions {
+  double samples_per_unit_area = 100.0;
+  OctreeOptions octree;
+  std::uint64_t seed = 0;
+  unsigned threads = 0;  // 0 = all cores
+  // Self-intersection tolerance relative to the scene's bounding-box diagonal.
+  double epsilon_scale = 1e-5;
+};
+
+struct ViewpointVisibility {
+  Eigen::Vector3d position;
+  double visible_area = 0.0;      // area seen from this viewpoint alone
+  double visible_fraction = 0.0;  // visible_area / total_area
+};
+
+struct GroupVisibility {
+  std::string name;
+  std::size_t faces = 0;
+  double total_area = 0.0;
+  double visible_area = 0.0;
+  double occlusion_level = 0.0;
+};
+
+struct MeshOcclusionTimings {
+  double sampling_seconds = 0.0;
+  double build_seconds = 0.0;
+  double trace_seconds = 0.0;
+};
+
+struct MeshOcclusionResult {
+  double occlusion_level = 0.0;  // 1 - visible_area / total_area
+  double visible_area = 0.0;
+  double total_area = 0.0;
+  std::size_t faces = 0;
+  std::size_t samples = 0;
+  std::size_t rays = 0;
+  std::vector<ViewpointVisibility> viewpoints;
+  std::vector<GroupVisibility> groups;
+  // Per face: visible samples / samples, in [0, 1].
+  std::vector<float> face_visible_fraction;
+  OctreeStats octree;
+  MeshOcclusionTimings timings;
+};
+
+// Throws std::invalid_argument for an empty mesh, no viewpoints, a non-finite
+// viewpoint or invalid options; Cancelled if progress.cancel is set.
+MeshOcclusionResult compute_mesh_occlusion(const TriangleMesh& mesh,
+                                           const std::vector<Eigen::Vector3d>& viewpoints,
+                                           const MeshOcclusionOptions& options,
+                                           const Progress& progress = {});
+
+}  // namespace occlusion

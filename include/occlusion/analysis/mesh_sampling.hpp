@@ -1,0 +1,33 @@
+#pragma once
+// Area-proportional sampling of a triangle mesh.
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <vector>
+
+#include "occlusion/core/mesh.hpp"
+
+namespace occlusion {
+
+// Samples of all faces, stored face by face: the samples of face f are
+// points[first[f] .. first[f + 1]).
+struct MeshSamples {
+  std::vector<Eigen::Vector3d> points;
+  std::vector<std::uint32_t> face;  // face of each sample
+  std::vector<std::size_t> first;   // size face_count + 1
+
+  std::size_t size() const { return points.size(); }
+  std::size_t count_on(std::size_t f) const { return first[f + 1] - first[f]; }
+};
+
+// Face f gets max(1, round(area_f * samples_per_unit_area)) samples, so no face
+// silently drops out; each sample uses the seed's barycentric formula with a
+// random stream derived from (seed, f), so the result does not depend on the
+// order or thread in which faces are processed.
+// Throws std::invalid_argument if samples_per_unit_area is not finite and > 0.
+MeshSamples sample_mesh(const TriangleMesh& mesh, double samples_per_unit_area, std::uint64_t seed);
+
+// Number of samples face f of the given area gets (the rule above).
+std::size_t samples_for_area(double area, double samples_per_unit_area);
+
+}  // namespace occlusion

@@ -1,0 +1,52 @@
+#pragma once
+// The `mesh_occlusion` job (-moc): one request struct that the CLI flags, the
+// JSON config and the server all fill, one report they all print.
+
+#include <json/value.h>
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "occlusion/analysis/mesh_occlusion.hpp"
+#include "occlusion/analysis/progress.hpp"
+
+namespace occlusion {
+
+struct MeshOcclusionRequest {
+  std::string path;  // OBJ mesh
+  // Explicit viewpoints win; otherwise the pattern (1..7, see viewpoints.hpp).
+  std::vector<Eigen::Vector3d> viewpoints;
+  int pattern = 7;
+  double samples_per_unit_area = 100.0;
+  double octree_resolution = 0.0;  // smallest octree cell edge, scene units; 0 = no limit
+  bool enable_acceleration = true;
+  std::uint64_t seed = 0;
+  unsigned threads = 0;  // 0 = all cores
+  std::string out;       // directory for output files; empty = none
+};
+
+struct MeshOcclusionReport {
+  MeshOcclusionRequest request;
+  MeshOcclusionResult result;
+  std::vector<std::string> viewpoint_names;  // "centre", ... or "viewpoint_1", ...
+  std::vector<std::string> outputs;          // files written
+  std::vector<std::string> warnings;
+  double load_seconds = 0.0;
+  double total_seconds = 0.0;
+};
+
+// Checks the request's values; throws UsageError naming the offending option.
+void validate(const MeshOcclusionRequest& request);
+
+// Loads the mesh, computes, writes outputs. Throws UsageError, InputError,
+// OutputError, Cancelled.
+MeshOcclusionReport run_mesh_occlusion(const MeshOcclusionRequest& request,
+                                       const Progress& progress = {});
+
+// The report as one JSON object with the headline figure `occlusion_level`.
+Json::Value to_json(const MeshOcclusionReport& report);
+
+}  // namespace occlusion

@@ -1,0 +1,116 @@
+#pragma once
+// A hand-built octree over primitives (triangles now, spheres later).
+//
+// Construction: the root cell is the cube around all primitive centroids. A
+// cell is split at its centre into eight octants and each primitive goes to the
+// octant holding its centroid, so every primitive lives in exactly one leaf and
+// nothing is duplicated. Each child then gets TIGHT bounds: the union of its
+// primitives' boxes, which may overlap the siblings' (primitives straddling an
+// octant boundary). Chains of cells with a single non-empty octant are collapsed.
+// The tree is flattened into one contiguous array of 8-wide nodes whose child
+// boxes are stored as structure-of-arrays, so one loop tests all children.
+//
+// Queries (the interval and edge rules are those of triangle.hpp):
+// - intersect: closest hit in [t_min, t_max], front-to-back, shrinking t_max.
+// - occluded:  any hit in [t_min, t_max], returns at the first one found.
+// `ignore_id` skips one primitive (a sample's own triangle). Primitive ids are
+// the indices of the vector the tree was built from.
+// Batch versions run on `threads` threads (0 = all cores) and return exactly
+// what the single-ray calls return for each ray.
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "occlusion/core/aabb.hpp"
+#include "occlusion/core/hit.hpp"
+#include "occlusion/core/ray.hpp"
+#include "occlusion/core/triangle.hpp"
+
+namespace occlusion {
+
+struct OctreeOptions {
+  // Stop subdividing a cell that holds at most this many primitives.
+  std::size_t max_leaf_size = 4;
+  // Stop at this depth whatever the count (guards against coincident centroids).
+  int max_depth = 24;
+  // The config's `octree_resolution`: smallest cell edge length, in scene units.
+  // A cell whose edge is at most this is not split. 0 means no limit.
+  float min_cell_size = 0.0f;
+  // The config's `enable_acceleration`: false puts every primitive in one leaf,
+  // which makes every query a brute-force loop (a reference and a fallback).
+  bool enable_acceleration = true;
+};
+
+struct OctreeStats {
+  std::size_t primitives = 0;
+  std::size_t inner_nodes = 0;
+  std::size_t leaves = 0;
+  int depth = 0;  // deepest leaf, root = 0
+  std::size_t largest_leaf = 0;
+  double build_seconds = 0.0;
+  std::size_t memory_bytes = 0;
+};
+
+// One flattened 8-wide node: the boxes of up to eight children and where each lives.
+struct alignas(64) OctreeNode {
+  float lo_x[8], lo_y[8], lo_z[8];
+  float hi_x[8], hi_y[8], hi_z[8];
+  // count[k] == 0: child k is the inner node at nodes[index[k]].
+  // count[k] > 0: child k is a leaf, shapes[index[k] .. index[k] + count[k]).
+  std::uint32_t index[8];
+  std::uint32_t count[8];
+  std::uint32_t child_count = 0;  // children are packed in slots [0, child_count)
+};
+
+// Shape must provide bounds() -> Aabb and centroid() -> Eigen::Vector3f, and a
+// free function intersect_shape(const Ray&, float direction_length, const Shape&)
+// -> std::optional<float> following the rules above.
+template <class Shape>
+class Octree {
+ public:
+  Octree() = default;
+  explicit Octree(std::vector<Shape> shapes, const OctreeOptions& options = {});
+
+  std::optional<Hit> intersect(const Ray& ray, PrimitiveId ignore_id = kNoPrimitive) const;
+  bool occluded(const Ray& ray, PrimitiveId ignore_id = kNoPrimitive) const;
+
+  // rays[i] -> hits[i] / occluded[i] (1 or 0). ignore_ids may be null (ignore nothing)
+  // or point to `count` ids.
+  void intersect_batch(const Ray* rays, std::size_t count, const PrimitiveId* ignore_ids,
+                       std::optional<Hit>* hits, unsigned threads = 0) const;
+  void occluded_batch(const Ray* rays, std::size_t count, const PrimitiveId* ignore_ids,
+                      std::uint8_t* occluded, unsigned threads = 0) const;
+
+  std::size_t size() const { return shapes_.size(); }
+  const Aabb& bounds() const { return bounds_; }
+  const OctreeStats& stats() const { return stats_; }
+  // The shape that was at index `id` of the construction vector.
+  const Shape& shape(PrimitiveId id) const { return shapes_[position_of_[id]]; }
+
+ private:
+  template <bool kAnyHit>
+  std::optional<Hit> traverse(const Ray& ray, PrimitiveId ignore_id) const;
+
+  std::vector<OctreeNode> nodes_;           // nodes_[0] is the root
+  std::vector<Shape> shapes_;               // in leaf order
+  std::vector<PrimitiveId> ids_;            // ids_[leaf position] = original index
+  std::vector<std::uint32_t> position_of_;  // inverse of ids_
+  Aabb bounds_;
+  OctreeStats stats_;
+};
+
+// The kernel the triangle octree calls.
+inline std::optional<float> intersect_shape(const Ray& ray, float direction_length,
+                                            const PackedTriangle& tri) {
+  return intersect_triangle(ray, direction_length, tri);
+}
+
+using TriangleOctree = Octree<PackedTriangle>;
+extern template class Octree<PackedTriangle>;
+
+// Convenience: pack triangles for the octree.
+std::vector<PackedTriangle> pack_triangles(const std::vector<Triangle>& triangles);
+
+}  // namespace occlusion

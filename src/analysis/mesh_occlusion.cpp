@@ -1,0 +1,166 @@
+#include "occlusion/analysis/mesh_occlusion.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+#include "occlusion/analysis/mesh_sampling.hpp"
+
+namespace occlusion {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// Rays are traced in blocks so that progress and cancellation are checked
+// between blocks while each block still keeps every core busy.
+constexpr std::size_t kRaysPerBlock = std::size_t{1} << 16;
+
+void check_inputs(const TriangleMesh& mesh, const std::vector<Eigen::Vector3d>& viewpoints,
+                  const MeshOcclusionOptions& options) {
+  mesh.validate();
+  if (mesh.faces.empty()) throw std::invalid_argument("mesh occlusion: the mesh has no faces");
+  if (viewpoints.empty()) throw std::invalid_argument("mesh occlusion: no viewpoints given");
+  for (const auto& vp : viewpoints) {
+    if (!vp.allFinite()) throw std::invalid_argument("mesh occlusion: a viewpoint is not finite");
+  }
+  if (!std::isfinite(options.epsilon_scale) || options.epsilon_scale <= 0.0) {
+    throw std::invalid_argument("mesh occlusion: epsilon_scale must be a finite number > 0");
+  }
+}
+
+// The shadow ray from a sample to a viewpoint, or false when the two are closer
+// than the tolerance (the sample is then trivially visible).
+bool make_shadow_ray(const Eigen::Vector3d& sample, const Eigen::Vector3d& viewpoint,
+                     double epsilon, Ray& ray) {
+  const Eigen::Vector3d direction = viewpoint - sample;
+  const double length = direction.norm();
+  if (length <= 2.0 * epsilon) return false;
+  ray.origin = sample.cast<float>();
+  ray.direction = direction.cast<float>();
+  ray.t_min = static_cast<float>(epsilon / length);
+  ray.t_max = static_cast<float>(1.0 - epsilon / length);
+  return true;
+}
+
+}  // namespace
+
+MeshOcclusionResult compute_mesh_occlusion(const TriangleMesh& mesh,
+                                           const std::vector<Eigen::Vector3d>& viewpoints,
+                                           const MeshOcclusionOptions& options,
+                                           const Progress& progress) {
+  check_inputs(mesh, viewpoints, options);
+  MeshOcclusionResult result;
+
+  auto start = Clock::now();
+  progress("sampling", 0.0);
+  const MeshSamples samples = sample_mesh(mesh, options.samples_per_unit_area, options.seed);
+  result.timings.sampling_seconds = seconds_since(start);
+  progress.check_cancel();
+
+  start = Clock::now();
+  progress("building octree", 0.0);
+  const TriangleOctree tree(pack_triangles(mesh.triangles()), options.octree);
+  result.timings.build_seconds = seconds_since(start);
+  result.octree = tree.stats();
+  progress.check_cancel();
+
+  Eigen::Vector3d lo, hi;
+  mesh.bounds(lo, hi);
+  const double epsilon = options.epsilon_scale * std::max((hi - lo).norm(), 1e-30);
+
+  start = Clock::now();
+  const std::size_t view_count = viewpoints.size();
+  const std::size_t ray_count = samples.size() * view_count;
+  // seen[s * view_count + v]: sample s is visible from viewpoint v.
+  std::vector<std::uint8_t> seen(ray_count, 0);
+  std::vector<Ray> rays;
+  std::vector<PrimitiveId> ignore;
+  std::vector<std::size_t> slot;
+  std::vector<std::uint8_t> blocked;
+  progress("tracing", 0.0);
+  for (std::size_t block = 0; block < ray_count; block += kRaysPerBlock) {
+    const std::size_t block_end = std::min(ray_count, block + kRaysPerBlock);
+    rays.clear();
+    ignore.clear();
+    slot.clear();
+    for (std::size_t r = block; r < block_end; ++r) {
+      const std::size_t s = r / view_count;
+      Ray ray;
+      if (!make_shadow_ray(samples.points[s], viewpoints[r % view_count], epsilon, ray)) {
+        seen[r] = 1;
+        continue;
+      }
+      rays.push_back(ray);
+      ignore.push_back(samples.face[s]);
+      slot.push_back(r);
+    }
+    blocked.resize(rays.size());
+    tree.occluded_batch(rays.data(), rays.size(), ignore.data(), blocked.data(), options.threads);
+    for (std::size_t i = 0; i < rays.size(); ++i) seen[slot[i]] = blocked[i] ? 0 : 1;
+    progress.check_cancel();
+    progress("tracing", static_cast<double>(block_end) / static_cast<double>(ray_count));
+  }
+  result.timings.trace_seconds = seconds_since(start);
+
+  // Aggregate per face, per viewpoint and per group.
+  result.faces = mesh.face_count();
+  result.samples = samples.size();
+  result.rays = ray_count;
+  result.face_visible_fraction.resize(mesh.face_count());
+  std::vector<double> viewpoint_area(view_count, 0.0);
+  std::vector<std::size_t> seen_by_viewpoint(view_count);
+  result.groups.resize(mesh.group_names.size());
+  for (std::size_t g = 0; g < mesh.group_names.size(); ++g) {
+    result.groups[g].name = mesh.group_names[g];
+  }
+  for (std::size_t f = 0; f < mesh.face_count(); ++f) {
+    std::size_t visible = 0;
+    std::fill(seen_by_viewpoint.begin(), seen_by_viewpoint.end(), 0);
+    for (std::size_t s = samples.first[f]; s < samples.first[f + 1]; ++s) {
+      bool any = false;
+      for (std::size_t v = 0; v < view_count; ++v) {
+        const bool from_v = seen[s * view_count + v] != 0;
+        seen_by_viewpoint[v] += from_v ? 1 : 0;
+        any = any || from_v;
+      }
+      visible += any ? 1 : 0;
+    }
+    const double count = static_cast<double>(samples.count_on(f));
+    const double area = mesh.face_area(f);
+    const double weight = static_cast<double>(visible) / count;
+    result.face_visible_fraction[f] = static_cast<float>(weight);
+    result.total_area += area;
+    result.visible_area += weight * area;
+    for (std::size_t v = 0; v < view_count; ++v) {
+      viewpoint_area[v] += static_cast<double>(seen_by_viewpoint[v]) / count * area;
+    }
+    GroupVisibility& group = result.groups[mesh.face_group[f]];
+    ++group.faces;
+    group.total_area += area;
+    group.visible_area += weight * area;
+  }
+  // Zero total area cannot happen for a validated mesh read from disk, but a
+  // mesh built in code may hold only degenerate faces.
+  if (!(result.total_area > 0.0)) {
+    throw std::invalid_argument("mesh occlusion: the mesh has zero total area");
+  }
+  result.occlusion_level = 1.0 - result.visible_area / result.total_area;
+  for (auto& group : result.groups) {
+    group.occlusion_level =
+        group.total_area > 0.0 ? 1.0 - group.visible_area / group.total_area : 0.0;
+  }
+  for (std::size_t v = 0; v < view_count; ++v) {
+    result.viewpoints.push_back(
+        {viewpoints[v], viewpoint_area[v], viewpoint_area[v] / result.total_area});
+  }
+  progress("done", 1.0);
+  return result;
+}
+
+}  // namespace occlusion

@@ -1,0 +1,9 @@
+#include "occlusion/analysis/progress.hpp"
+
+namespace occlusion {
+
+void Progress::check_cancel() const {
+  if (cancel != nullptr && cancel->load(std::memory_order_relaxed)) throw Cancelled();
+}
+
+}  // namespace occlusion

@@ -1,0 +1,186 @@
+#include "occlusion/app/config.hpp"
+
+#include <json/reader.h>
+
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <sstream>
+
+#include "occlusion/app/errors.hpp"
+
+namespace occlusion {
+
+namespace {
+
+enum class KeyType { kString, kNumber, kUnsigned, kBool, kPointList };
+
+using Schema = std::map<std::string, KeyType>;
+
+// Sections and their keys. point_cloud is the seed's section for -poc; it is
+// checked here so that a config written for every job loads for any job.
+const std::map<std::string, Schema>& sections() {
+  static const std::map<std::string, Schema> kSections = {
+      {"mesh",
+       {{"path", KeyType::kString},
+        {"pattern", KeyType::kUnsigned},
+        {"viewpoints", KeyType::kPointList},
+        {"octree_resolution", KeyType::kNumber},
+        {"enable_acceleration", KeyType::kBool},
+        {"samples_per_unit_area", KeyType::kNumber},
+        {"seed", KeyType::kUnsigned},
+        {"threads", KeyType::kUnsigned},
+        {"out", KeyType::kString}}},
+      {"point_cloud",
+       {{"path", KeyType::kString},
+        {"pattern", KeyType::kUnsigned},
+        {"viewpoints", KeyType::kPointList},
+        {"num_rays_per_vp", KeyType::kUnsigned},
+        {"num_vp", KeyType::kUnsigned},
+        {"point_radius", KeyType::kNumber},
+        {"polygon_path", KeyType::kString},
+        {"octree_resolution", KeyType::kNumber},
+        {"seed", KeyType::kUnsigned},
+        {"threads", KeyType::kUnsigned},
+        {"out", KeyType::kString}}},
+  };
+  return kSections;
+}
+
+const char* type_name(KeyType type) {
+  switch (type) {
+    case KeyType::kString:
+      return "a string";
+    case KeyType::kNumber:
+      return "a number";
+    case KeyType::kUnsigned:
+      return "a non-negative integer";
+    case KeyType::kBool:
+      return "true or false";
+    case KeyType::kPointList:
+      return "a list of [x, y, z] points";
+  }
+  return "?";
+}
+
+bool has_type(const Json::Value& value, KeyType type) {
+  switch (type) {
+    case KeyType::kString:
+      return value.isString();
+    case KeyType::kNumber:
+      return value.isNumeric() && !value.isBool();
+    case KeyType::kUnsigned:
+      return (value.isUInt64() || (value.isInt64() && value.asInt64() >= 0)) && !value.isBool() &&
+             value.isIntegral();
+    case KeyType::kBool:
+      return value.isBool();
+    case KeyType::kPointList:
+      if (!value.isArray()) return false;
+      for (const auto& point : value) {
+        if (!point.isArray() || point.size() != 3) return false;
+        for (const auto& coordinate : point) {
+          if (!coordinate.isNumeric() || coordinate.isBool()) return false;
+        }
+      }
+      return true;
+  }
+  return false;
+}
+
+[[noreturn]] void fail(const Config& config, const std::string& message) {
+  throw UsageError(config.path + ": " + message);
+}
+
+void check_object(const Config& config, const Json::Value& value, const std::string& where) {
+  if (!value.isObject()) fail(config, "'" + where + "' must be an object");
+}
+
+void check(const Config& config) {
+  check_object(config, config.root, "(top level)");
+  for (const auto& top_key : config.root.getMemberNames()) {
+    if (top_key != "occlusion") fail(config, "unknown key '" + top_key + "'");
+  }
+  if (!config.root.isMember("occlusion")) fail(config, "missing key 'occlusion'");
+  const Json::Value& occlusion = config.root["occlusion"];
+  check_object(config, occlusion, "occlusion");
+  for (const auto& section_name : occlusion.getMemberNames()) {
+    const auto section = sections().find(section_name);
+    const std::string where = "occlusion." + section_name;
+    if (section == sections().end()) fail(config, "unknown key '" + where + "'");
+    const Json::Value& body = occlusion[section_name];
+    check_object(config, body, where);
+    for (const auto& key : body.getMemberNames()) {
+      const auto entry = section->second.find(key);
+      if (entry == section->second.end()) {
+        fail(config, "unknown key '" + where + "." + key + "'");
+      }
+      if (!has_type(body[key], entry->second)) {
+        fail(config, "'" + where + "." + key + "' must be " + type_name(entry->second));
+      }
+    }
+  }
+}
+
+std::string resolve(const Config& config, const std::string& path) {
+  const std::filesystem::path p(path);
+  if (p.is_absolute() || config.directory.empty()) return path;
+  return (std::filesystem::path(config.directory) / p).lexically_normal().string();
+}
+
+}  // namespace
+
+Config load_config(const std::string& path) {
+  Config config;
+  config.path = path;
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw UsageError(path + ": cannot open config file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  const std::string body = text.str();
+
+  Json::CharReaderBuilder builder;
+  builder["collectComments"] = false;
+  builder["rejectDupKeys"] = true;
+  const std::unique_ptr<Json::CharReader> reader(builder.newCharReader());
+  std::string errors;
+  if (!reader->parse(body.data(), body.data() + body.size(), &config.root, &errors)) {
+    throw UsageError(path + ": not valid JSON: " + errors);
+  }
+  config.directory = std::filesystem::path(path).parent_path().string();
+  check(config);
+  return config;
+}
+
+void apply_mesh_config(const Config& config, MeshOcclusionRequest& request) {
+  const Json::Value& mesh = config.root["occlusion"]["mesh"];
+  if (mesh.isNull()) return;
+  if (mesh.isMember("path")) request.path = resolve(config, mesh["path"].asString());
+  if (mesh.isMember("pattern")) {
+    request.pattern = static_cast<int>(std::min<Json::UInt64>(mesh["pattern"].asUInt64(), 1000));
+  }
+  if (mesh.isMember("viewpoints")) {
+    request.viewpoints.clear();
+    for (const auto& point : mesh["viewpoints"]) {
+      request.viewpoints.emplace_back(point[0].asDouble(), point[1].asDouble(),
+                                      point[2].asDouble());
+    }
+  }
+  if (mesh.isMember("octree_resolution")) {
+    request.octree_resolution = mesh["octree_resolution"].asDouble();
+  }
+  if (mesh.isMember("enable_acceleration")) {
+    request.enable_acceleration = mesh["enable_acceleration"].asBool();
+  }
+  if (mesh.isMember("samples_per_unit_area")) {
+    request.samples_per_unit_area = mesh["samples_per_unit_area"].asDouble();
+  }
+  if (mesh.isMember("seed")) request.seed = mesh["seed"].asUInt64();
+  if (mesh.isMember("threads")) {
+    request.threads = static_cast<unsigned>(
+        std::min<Json::UInt64>(mesh["threads"].asUInt64(), std::numeric_limits<unsigned>::max()));
+  }
+  if (mesh.isMember("out")) request.out = resolve(config, mesh["out"].asString());
+}
+
+}  // namespace occlusion

@@ -1,0 +1,37 @@
+#include "occlusion/app/json_output.hpp"
+
+#include <json/writer.h>
+
+namespace occlusion {
+
+Json::Value to_json(const Eigen::Vector3d& point) {
+  Json::Value array(Json::arrayValue);
+  for (int axis = 0; axis < 3; ++axis) array.append(point[axis]);
+  return array;
+}
+
+Json::Value to_json(const std::vector<std::string>& strings) {
+  Json::Value array(Json::arrayValue);
+  for (const auto& s : strings) array.append(s);
+  return array;
+}
+
+std::string format_json(const Json::Value& value) {
+  Json::StreamWriterBuilder builder;
+  builder["indentation"] = "  ";
+  builder["emitUTF8"] = true;
+  builder["precision"] = 15;
+  return Json::writeString(builder, value);
+}
+
+std::string csv_field(const std::string& text) {
+  if (text.find_first_of(",\"\n\r") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (const char c : text) {
+    if (c == '"') quoted += '"';
+    quoted += c;
+  }
+  return quoted + '"';
+}
+
+}  // namespace occlusion

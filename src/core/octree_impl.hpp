@@ -1,0 +1,343 @@
+#pragma once
+// The octree's template definitions. Included only by the .cpp files that
+// instantiate Octree for a shape type, so users of octree.hpp don't compile it.
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <stdexcept>
+#include <string>
+
+#include "occlusion/core/octree.hpp"
+#include "occlusion/core/parallel.hpp"
+
+namespace occlusion {
+
+namespace octree_detail {
+
+// Deep enough for any scene: the cell edge halves at each level, so 32 levels
+// reach 1e-10 of the scene size, below float resolution.
+inline constexpr int kMaxDepthLimit = 32;
+inline constexpr std::size_t kStackSize = 8 * (kMaxDepthLimit + 2);
+
+// A child under construction: a leaf range of shapes or an inner node.
+struct BuiltChild {
+  std::uint32_t index = 0;
+  std::uint32_t count = 0;  // 0 = inner node
+  Aabb box;
+};
+
+template <class Shape>
+class Builder {
+ public:
+  Builder(const std::vector<Shape>& shapes, const OctreeOptions& options,
+          std::vector<OctreeNode>& nodes, std::vector<std::uint32_t>& order, OctreeStats& stats)
+      : shapes_(shapes), options_(options), nodes_(nodes), order_(order), stats_(stats) {
+    boxes_.reserve(shapes.size());
+    centroids_.reserve(shapes.size());
+    for (const Shape& shape : shapes) {
+      boxes_.push_back(shape.bounds());
+      centroids_.push_back(shape.centroid());
+    }
+    scratch_.resize(shapes.size());
+  }
+
+  BuiltChild build_root() {
+    Aabb centroid_box;
+    for (const auto& c : centroids_) centroid_box.extend(c);
+    const float half = 0.5f * centroid_box.extent().maxCoeff();
+    return build(0, static_cast<std::uint32_t>(order_.size()), centroid_box.center(), half, 0);
+  }
+
+ private:
+  bool is_leaf(std::uint32_t count, float half, int depth) const {
+    return !options_.enable_acceleration || count <= options_.max_leaf_size ||
+           depth >= options_.max_depth || 2.0f * half <= options_.min_cell_size || half <= 0.0f;
+  }
+
+  BuiltChild make_leaf(std::uint32_t begin, std::uint32_t end, int depth) {
+    BuiltChild leaf;
+    leaf.index = begin;
+    leaf.count = end - begin;
+    for (std::uint32_t i = begin; i < end; ++i) leaf.box.extend(boxes_[order_[i]]);
+    ++stats_.leaves;
+    stats_.depth = std::max(stats_.depth, depth);
+    stats_.largest_leaf = std::max<std::size_t>(stats_.largest_leaf, leaf.count);
+    return leaf;
+  }
+
+  static int octant_of(const Eigen::Vector3f& p, const Eigen::Vector3f& centre) {
+    return (p.x() >= centre.x() ? 1 : 0) | (p.y() >= centre.y() ? 2 : 0) |
+           (p.z() >= centre.z() ? 4 : 0);
+  }
+
+  static Eigen::Vector3f octant_centre(int octant, const Eigen::Vector3f& centre, float half) {
+    const float q = 0.5f * half;
+    return centre +
+           Eigen::Vector3f((octant & 1) ? q : -q, (octant & 2) ? q : -q, (octant & 4) ? q : -q);
+  }
+
+  // Sorts order_[begin, end) by octant (a stable counting sort) and returns the
+  // start of each octant's run; starts[8] == end.
+  std::array<std::uint32_t, 9> partition(std::uint32_t begin, std::uint32_t end,
+                                         const Eigen::Vector3f& centre) {
+    std::array<std::uint32_t, 9> starts{};
+    for (std::uint32_t i = begin; i < end; ++i) {
+      ++starts[octant_of(centroids_[order_[i]], centre) + 1];
+    }
+    starts[0] = begin;
+    for (int k = 1; k <= 8; ++k) starts[k] += starts[k - 1];
+    std::array<std::uint32_t, 8> cursor;
+    std::copy(starts.begin(), starts.begin() + 8, cursor.begin());
+    for (std::uint32_t i = begin; i < end; ++i) {
+      const std::uint32_t id = order_[i];
+      scratch_[cursor[octant_of(centroids_[id], centre)]++] = id;
+    }
+    std::copy(scratch_.begin() + begin, scratch_.begin() + end, order_.begin() + begin);
+    return starts;
+  }
+
+  BuiltChild build(std::uint32_t begin, std::uint32_t end, Eigen::Vector3f centre, float half,
+                   int depth) {
+    std::array<std::uint32_t, 9> starts;
+    int cell_level = depth;
+    for (;;) {
+      if (is_leaf(end - begin, half, cell_level)) return make_leaf(begin, end, depth);
+      starts = partition(begin, end, centre);
+      int occupied = 0, last = 0;
+      for (int k = 0; k < 8; ++k) {
+        if (starts[k + 1] > starts[k]) {
+          ++occupied;
+          last = k;
+        }
+      }
+      if (occupied > 1) break;
+      // One occupied octant: descend into it without making a node.
+      centre = octant_centre(last, centre, half);
+      half *= 0.5f;
+      ++cell_level;
+    }
+
+    const auto node_index = static_cast<std::uint32_t>(nodes_.size());
+    nodes_.emplace_back();
+    ++stats_.inner_nodes;
+    std::array<BuiltChild, 8> children;
+    std::uint32_t child_count = 0;
+    for (int k = 0; k < 8; ++k) {
+      if (starts[k + 1] == starts[k]) continue;
+      children[child_count++] =
+          build(starts[k], starts[k + 1], octant_centre(k, centre, half), 0.5f * half, depth + 1);
+    }
+    // Fill after recursion: nodes_ may have reallocated meanwhile.
+    OctreeNode& node = nodes_[node_index];
+    fill_node(node, children.data(), child_count);
+    BuiltChild self;
+    self.index = node_index;
+    for (std::uint32_t k = 0; k < child_count; ++k) self.box.extend(children[k].box);
+    return self;
+  }
+
+ public:
+  static void fill_node(OctreeNode& node, const BuiltChild* children, std::uint32_t child_count) {
+    node = OctreeNode{};
+    // Unused slots hold a zero box; traversal masks them by child_count.
+    std::fill(std::begin(node.lo_x), std::end(node.lo_x), 0.0f);
+    std::fill(std::begin(node.lo_y), std::end(node.lo_y), 0.0f);
+    std::fill(std::begin(node.lo_z), std::end(node.lo_z), 0.0f);
+    std::fill(std::begin(node.hi_x), std::end(node.hi_x), 0.0f);
+    std::fill(std::begin(node.hi_y), std::end(node.hi_y), 0.0f);
+    std::fill(std::begin(node.hi_z), std::end(node.hi_z), 0.0f);
+    std::fill(std::begin(node.index), std::end(node.index), 0u);
+    std::fill(std::begin(node.count), std::end(node.count), 0u);
+    node.child_count = child_count;
+    for (std::uint32_t k = 0; k < child_count; ++k) {
+      // Padded: the traversal's branch-free slab test relies on it (aabb.hpp).
+      const Aabb box = pad_box(children[k].box);
+      node.lo_x[k] = box.lo.x();
+      node.lo_y[k] = box.lo.y();
+      node.lo_z[k] = box.lo.z();
+      node.hi_x[k] = box.hi.x();
+      node.hi_y[k] = box.hi.y();
+      node.hi_z[k] = box.hi.z();
+      node.index[k] = children[k].index;
+      node.count[k] = children[k].count;
+    }
+  }
+
+ private:
+  const std::vector<Shape>& shapes_;
+  const OctreeOptions& options_;
+  std::vector<OctreeNode>& nodes_;
+  std::vector<std::uint32_t>& order_;
+  OctreeStats& stats_;
+  std::vector<Aabb> boxes_;
+  std::vector<Eigen::Vector3f> centroids_;
+  std::vector<std::uint32_t> scratch_;
+};
+
+}  // namespace octree_detail
+
+template <class Shape>
+Octree<Shape>::Octree(std::vector<Shape> shapes, const OctreeOptions& options) {
+  if (options.max_leaf_size == 0) {
+    throw std::invalid_argument("octree: max_leaf_size must be at least 1");
+  }
+  if (options.max_depth < 0 || options.max_depth > octree_detail::kMaxDepthLimit) {
+    throw std::invalid_argument("octree: max_depth must be in [0, " +
+                                std::to_string(octree_detail::kMaxDepthLimit) + "]");
+  }
+  if (!(options.min_cell_size >= 0.0f)) {
+    throw std::invalid_argument("octree: octree_resolution must be >= 0");
+  }
+  if (shapes.size() >= kNoPrimitive) {
+    throw std::invalid_argument("octree: too many primitives");
+  }
+  const auto start = std::chrono::steady_clock::now();
+  stats_ = OctreeStats{};
+  stats_.primitives = shapes.size();
+  for (const Shape& shape : shapes) bounds_.extend(shape.bounds());
+
+  if (!shapes.empty()) {
+    std::vector<std::uint32_t> order(shapes.size());
+    for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
+    octree_detail::Builder<Shape> builder(shapes, options, nodes_, order, stats_);
+    const octree_detail::BuiltChild top = builder.build_root();
+    if (top.count > 0) {
+      // The whole scene is one leaf: give it a root node to live in.
+      nodes_.emplace_back();
+      octree_detail::Builder<Shape>::fill_node(nodes_[0], &top, 1);
+    }
+    shapes_.reserve(shapes.size());
+    ids_ = order;
+    position_of_.resize(order.size());
+    for (std::uint32_t position = 0; position < order.size(); ++position) {
+      shapes_.push_back(shapes[order[position]]);
+      position_of_[order[position]] = position;
+    }
+  }
+  stats_.memory_bytes = nodes_.size() * sizeof(OctreeNode) + shapes_.size() * sizeof(Shape) +
+                        (ids_.size() + position_of_.size()) * sizeof(std::uint32_t);
+  stats_.build_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+template <class Shape>
+template <bool kAnyHit>
+std::optional<Hit> Octree<Shape>::traverse(const Ray& query, PrimitiveId ignore_id) const {
+  if (nodes_.empty() || !(query.t_min <= query.t_max)) return std::nullopt;
+  Ray ray = query;  // t_max shrinks as closer hits are found
+  const Eigen::Vector3f inv = safe_inverse(ray.direction);
+  const float direction_length = ray.direction.norm();
+  const float ox = ray.origin.x(), oy = ray.origin.y(), oz = ray.origin.z();
+  const float ix = inv.x(), iy = inv.y(), iz = inv.z();
+
+  struct Entry {
+    std::uint32_t index;
+    std::uint32_t count;  // 0 = inner node
+    float t_enter;
+  };
+  Entry stack[octree_detail::kStackSize];
+  std::size_t top = 0;
+  stack[top++] = {0, 0, ray.t_min};
+  std::optional<Hit> best;
+
+  while (top > 0) {
+    const Entry entry = stack[--top];
+    if (entry.t_enter > ray.t_max) continue;
+    if (entry.count > 0) {
+      const std::uint32_t end = entry.index + entry.count;
+      for (std::uint32_t i = entry.index; i < end; ++i) {
+        const PrimitiveId id = ids_[i];
+        if (id == ignore_id) continue;
+        const std::optional<float> t = intersect_shape(ray, direction_length, shapes_[i]);
+        if (!t) continue;
+        if constexpr (kAnyHit) {
+          return Hit{*t, id};
+        } else {
+          // t <= t_max == best->t_hit here, so this takes a closer hit, and on a tie
+          // the lower id: the answer does not depend on traversal order.
+          if (!best || *t < best->t_hit || id < best->primitive_id) {
+            best = Hit{*t, id};
+            ray.t_max = *t;
+          }
+        }
+      }
+      continue;
+    }
+
+    const OctreeNode& node = nodes_[entry.index];
+    // All eight slots in one fixed-length loop the compiler can vectorise;
+    // slots past child_count are masked out below.
+    float t_near[8], t_far[8];
+    for (int k = 0; k < 8; ++k) {
+      const float x0 = (node.lo_x[k] - ox) * ix, x1 = (node.hi_x[k] - ox) * ix;
+      const float y0 = (node.lo_y[k] - oy) * iy, y1 = (node.hi_y[k] - oy) * iy;
+      const float z0 = (node.lo_z[k] - oz) * iz, z1 = (node.hi_z[k] - oz) * iz;
+      const float near_x = x0 < x1 ? x0 : x1, far_x = x0 < x1 ? x1 : x0;
+      const float near_y = y0 < y1 ? y0 : y1, far_y = y0 < y1 ? y1 : y0;
+      const float near_z = z0 < z1 ? z0 : z1, far_z = z0 < z1 ? z1 : z0;
+      float tn = near_x > near_y ? near_x : near_y;
+      tn = tn > near_z ? tn : near_z;
+      tn = tn > ray.t_min ? tn : ray.t_min;
+      float tf = far_x < far_y ? far_x : far_y;
+      tf = tf < far_z ? tf : far_z;
+      tf = tf < ray.t_max ? tf : ray.t_max;
+      t_near[k] = tn;
+      t_far[k] = tf;
+    }
+    // Collect the children hit, nearest first (insertion sort of at most 8).
+    Entry hits[8];
+    int hit_count = 0;
+    for (std::uint32_t k = 0; k < node.child_count; ++k) {
+      if (!(t_near[k] <= t_far[k])) continue;
+      Entry child{node.index[k], node.count[k], t_near[k]};
+      int j = hit_count++;
+      while (j > 0 && hits[j - 1].t_enter > child.t_enter) {
+        hits[j] = hits[j - 1];
+        --j;
+      }
+      hits[j] = child;
+    }
+    // Push farthest first so the nearest is popped next.
+    for (int j = hit_count - 1; j >= 0; --j) stack[top++] = hits[j];
+  }
+  return best;
+}
+
+template <class Shape>
+std::optional<Hit> Octree<Shape>::intersect(const Ray& ray, PrimitiveId ignore_id) const {
+  return traverse<false>(ray, ignore_id);
+}
+
+template <class Shape>
+bool Octree<Shape>::occluded(const Ray& ray, PrimitiveId ignore_id) const {
+  return traverse<true>(ray, ignore_id).has_value();
+}
+
+namespace octree_detail {
+inline constexpr std::size_t kBatchGrain = 512;
+}
+
+template <class Shape>
+void Octree<Shape>::intersect_batch(const Ray* rays, std::size_t count,
+                                    const PrimitiveId* ignore_ids, std::optional<Hit>* hits,
+                                    unsigned threads) const {
+  parallel_for(count, octree_detail::kBatchGrain, threads, [&](std::size_t b, std::size_t e) {
+    for (std::size_t i = b; i < e; ++i) {
+      hits[i] = intersect(rays[i], ignore_ids ? ignore_ids[i] : kNoPrimitive);
+    }
+  });
+}
+
+template <class Shape>
+void Octree<Shape>::occluded_batch(const Ray* rays, std::size_t count,
+                                   const PrimitiveId* ignore_ids, std::uint8_t* occluded_out,
+                                   unsigned threads) const {
+  parallel_for(count, octree_detail::kBatchGrain, threads, [&](std::size_t b, std::size_t e) {
+    for (std::size_t i = b; i < e; ++i) {
+      occluded_out[i] = occluded(rays[i], ignore_ids ? ignore_ids[i] : kNoPrimitive) ? 1 : 0;
+    }
+  });
+}
+
+}  // namespace occlusion

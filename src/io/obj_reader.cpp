@@ -1,0 +1,324 @@
+#include "occlusion/io/obj_reader.hpp"
+
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+#include "occlusion/io/input_error.hpp"
+
+namespace occlusion {
+namespace {
+
+// Relative to the squared bounding-box diagonal, so the test does not depend on units.
+constexpr double kDegenerateAreaScale = 1e-12;
+constexpr std::uint32_t kUnresolvedGroup = std::numeric_limits<std::uint32_t>::max();
+
+bool is_blank(char c) {
+  return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f';
+}
+
+// Splits one logical line into whitespace-separated tokens without allocating.
+class Tokens {
+ public:
+  explicit Tokens(std::string_view line) : rest_(line) {}
+
+  // The next token, or an empty view at the end of the line.
+  std::string_view next() {
+    std::size_t begin = 0;
+    while (begin < rest_.size() && is_blank(rest_[begin])) ++begin;
+    std::size_t end = begin;
+    while (end < rest_.size() && !is_blank(rest_[end])) ++end;
+    const std::string_view token = rest_.substr(begin, end - begin);
+    rest_.remove_prefix(end);
+    return token;
+  }
+
+ private:
+  std::string_view rest_;
+};
+
+// from_chars does not accept a leading '+', which some exporters write.
+std::string_view without_plus(std::string_view token) {
+  if (token.size() > 1 && token[0] == '+' && token[1] != '-' && token[1] != '+') {
+    token.remove_prefix(1);
+  }
+  return token;
+}
+
+enum class NumberStatus { kOk, kInvalid };
+
+NumberStatus parse_double(std::string_view token, double& value) {
+  token = without_plus(token);
+  const char* end = token.data() + token.size();
+  const auto [stop, error] = std::from_chars(token.data(), end, value);
+  if (stop != end) return NumberStatus::kInvalid;
+  if (error == std::errc::result_out_of_range) {
+    // from_chars leaves the value unset on overflow AND underflow; strtod tells
+    // them apart (HUGE_VAL, later rejected as non-finite, versus a tiny number).
+    const std::string copy(token);
+    value = std::strtod(copy.c_str(), nullptr);
+    return NumberStatus::kOk;
+  }
+  return error == std::errc() ? NumberStatus::kOk : NumberStatus::kInvalid;
+}
+
+bool parse_integer(std::string_view token, long long& value) {
+  token = without_plus(token);
+  const char* end = token.data() + token.size();
+  const auto [stop, error] = std::from_chars(token.data(), end, value);
+  return error == std::errc() && stop == end && !token.empty();
+}
+
+// The texture and normal parts of a corner (`/t`, `/t/n`, `//n`) are not used,
+// but a corner like `3/x` or `3/1/2/4` is a broken file, not something to skip.
+bool valid_corner_suffix(std::string_view suffix) {
+  int slashes = 0;
+  for (const char c : suffix) {
+    if (c == '/') {
+      if (++slashes > 2) return false;
+    } else if (!(c >= '0' && c <= '9') && c != '-' && c != '+') {
+      return false;
+    }
+  }
+  return true;
+}
+
+class ObjParser {
+ public:
+  ObjParser(std::string_view text, const std::string& source) : text_(text), source_(source) {}
+
+  TriangleMesh run() {
+    for_each_logical_line();
+    if (mesh_.faces.empty()) fail(0, "no faces (the file has no 'f' statement)");
+    check_indices_in_range();
+    check_no_degenerate_faces();
+    return std::move(mesh_);
+  }
+
+ private:
+  [[noreturn]] void fail(std::size_t line, std::string reason) const {
+    throw InputError(source_, line, std::move(reason));
+  }
+
+  // Splits the text into lines, joins `\` continuations, and reports each
+  // statement with the number of the line it starts on.
+  void for_each_logical_line() {
+    std::string joined;  // only used for continued lines, which are rare
+    std::size_t joined_start = 0;
+    std::size_t position = 0;
+    std::size_t line_number = 0;
+    while (position < text_.size()) {
+      std::size_t end = text_.find('\n', position);
+      if (end == std::string_view::npos) end = text_.size();
+      std::string_view line = text_.substr(position, end - position);
+      position = end + 1;
+      ++line_number;
+
+      std::size_t content_end = line.size();
+      while (content_end > 0 && is_blank(line[content_end - 1])) --content_end;
+      if (content_end > 0 && line[content_end - 1] == '\\') {
+        if (joined.empty()) joined_start = line_number;
+        joined.append(line.data(), content_end - 1);
+        joined.push_back(' ');
+        continue;
+      }
+      if (!joined.empty()) {
+        joined.append(line.data(), line.size());
+        statement(joined, joined_start);
+        joined.clear();
+      } else {
+        statement(line, line_number);
+      }
+    }
+    if (!joined.empty()) statement(joined, joined_start);
+  }
+
+  void statement(std::string_view line, std::size_t line_number) {
+    const std::size_t comment = line.find('#');
+    if (comment != std::string_view::npos) line = line.substr(0, comment);
+    Tokens tokens(line);
+    const std::string_view keyword = tokens.next();
+    if (keyword == "v") {
+      vertex(tokens, line_number);
+    } else if (keyword == "f") {
+      face(tokens, line_number);
+    } else if (keyword == "g" || keyword == "o") {
+      group(tokens);
+    }
+  }
+
+  void vertex(Tokens& tokens, std::size_t line_number) {
+    double xyz[3];
+    for (int axis = 0; axis < 3; ++axis) {
+      const std::string_view token = tokens.next();
+      if (token.empty()) {
+        fail(line_number, "vertex has " + std::to_string(axis) + " coordinates, expected 3");
+      }
+      if (parse_double(token, xyz[axis]) != NumberStatus::kOk) {
+        fail(line_number, "vertex coordinate '" + std::string(token) + "' is not a number");
+      }
+      if (!std::isfinite(xyz[axis])) {
+        fail(line_number, "vertex coordinate '" + std::string(token) + "' is not finite");
+      }
+    }
+    mesh_.vertices.emplace_back(xyz[0], xyz[1], xyz[2]);
+  }
+
+  void face(Tokens& tokens, std::size_t line_number) {
+    corners_.clear();
+    for (std::string_view token = tokens.next(); !token.empty(); token = tokens.next()) {
+      corners_.push_back(corner_index(token, line_number));
+    }
+    if (corners_.size() < 3) {
+      fail(line_number,
+           "face has " + std::to_string(corners_.size()) + " vertices, needs at least 3");
+    }
+    const std::uint32_t group_id = current_group_id();
+    for (std::size_t i = 1; i + 1 < corners_.size(); ++i) {
+      mesh_.faces.push_back({corners_[0], corners_[i], corners_[i + 1]});
+      mesh_.face_group.push_back(group_id);
+      face_line_.push_back(line_number);
+    }
+  }
+
+  // The 0-based vertex index of one face corner. A positive index past the
+  // vertices read so far is accepted here and checked once the file is read.
+  std::uint32_t corner_index(std::string_view token, std::size_t line_number) {
+    const std::size_t slash = token.find('/');
+    const std::string_view index_text = token.substr(0, slash);
+    long long index = 0;
+    if (!parse_integer(index_text, index) ||
+        (slash != std::string_view::npos && !valid_corner_suffix(token.substr(slash)))) {
+      fail(line_number, "face vertex '" + std::string(token) + "' is not a valid reference");
+    }
+    if (index == 0) fail(line_number, "face vertex index 0 is invalid (OBJ indices start at 1)");
+    const auto defined = static_cast<long long>(mesh_.vertices.size());
+    if (index < 0) {
+      if (defined + index < 0) {
+        fail(line_number, "relative face vertex index " + std::to_string(index) +
+                              " is out of range (" + std::to_string(defined) +
+                              " vertices defined so far)");
+      }
+      return static_cast<std::uint32_t>(defined + index);
+    }
+    if (index > static_cast<long long>(std::numeric_limits<std::uint32_t>::max())) {
+      fail(line_number, "face vertex index " + std::to_string(index) + " is out of range");
+    }
+    return static_cast<std::uint32_t>(index - 1);
+  }
+
+  void group(Tokens& tokens) {
+    std::string name;
+    for (std::string_view token = tokens.next(); !token.empty(); token = tokens.next()) {
+      if (!name.empty()) name.push_back(' ');
+      name.append(token.data(), token.size());
+    }
+    if (name.empty()) name = "default";
+    if (name != current_group_) {
+      current_group_ = std::move(name);
+      current_group_id_ = kUnresolvedGroup;
+    }
+  }
+
+  // Groups are numbered when their first face arrives, so empty groups never appear.
+  std::uint32_t current_group_id() {
+    if (current_group_id_ == kUnresolvedGroup) {
+      const auto [entry, inserted] = group_ids_.try_emplace(
+          current_group_, static_cast<std::uint32_t>(mesh_.group_names.size()));
+      if (inserted) mesh_.group_names.push_back(current_group_);
+      current_group_id_ = entry->second;
+    }
+    return current_group_id_;
+  }
+
+  void check_indices_in_range() const {
+    const std::size_t count = mesh_.vertices.size();
+    for (std::size_t f = 0; f < mesh_.faces.size(); ++f) {
+      for (const std::uint32_t index : mesh_.faces[f]) {
+        if (index >= count) {
+          fail(face_line_[f], "face vertex index " + std::to_string(std::size_t{index} + 1) +
+                                  " is out of range (the file has " + std::to_string(count) +
+                                  " vertices)");
+        }
+      }
+    }
+  }
+
+  void check_no_degenerate_faces() const {
+    Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+    Eigen::Vector3d hi = -lo;
+    for (const auto& face : mesh_.faces) {
+      for (const std::uint32_t index : face) {
+        lo = lo.cwiseMin(mesh_.vertices[index]);
+        hi = hi.cwiseMax(mesh_.vertices[index]);
+      }
+    }
+    const double min_area = kDegenerateAreaScale * (hi - lo).squaredNorm();
+    for (std::size_t f = 0; f < mesh_.faces.size(); ++f) {
+      const auto& [a, b, c] = mesh_.faces[f];
+      if (a == b || b == c || a == c) {
+        const std::uint32_t repeated = (a == b || a == c) ? a : b;
+        fail(face_line_[f], "degenerate face (zero area): vertex " +
+                                std::to_string(std::size_t{repeated} + 1) +
+                                " is used twice in one triangle");
+      }
+      const Eigen::Vector3d& p = mesh_.vertices[a];
+      const double area = 0.5 * (mesh_.vertices[b] - p).cross(mesh_.vertices[c] - p).norm();
+      if (area <= min_area) {
+        fail(face_line_[f], "degenerate face (zero area): vertices " +
+                                std::to_string(std::size_t{a} + 1) + ", " +
+                                std::to_string(std::size_t{b} + 1) + ", " +
+                                std::to_string(std::size_t{c} + 1) + " are collinear");
+      }
+    }
+  }
+
+  std::string_view text_;
+  const std::string& source_;
+  TriangleMesh mesh_;
+  std::vector<std::size_t> face_line_;  // per triangle, for messages after parsing
+  std::vector<std::uint32_t> corners_;  // scratch for the face being read
+  std::string current_group_ = "default";
+  std::uint32_t current_group_id_ = kUnresolvedGroup;
+  std::unordered_map<std::string, std::uint32_t> group_ids_;
+};
+
+std::string read_whole_file(const std::string& path) {
+  std::error_code status;
+  if (std::filesystem::is_directory(path, status)) {
+    throw InputError(path, 0, "is a directory, not a file");
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, 0, std::string("cannot open: ") + std::strerror(errno));
+  std::string text;
+  const auto size = std::filesystem::file_size(path, status);
+  if (!status) text.reserve(static_cast<std::size_t>(size));
+  // Chunked rather than one read of file_size bytes, so pipes work too.
+  char chunk[1 << 16];
+  while (in.read(chunk, sizeof chunk) || in.gcount() > 0) {
+    text.append(chunk, static_cast<std::size_t>(in.gcount()));
+  }
+  if (in.bad()) throw InputError(path, 0, std::string("read failed: ") + std::strerror(errno));
+  return text;
+}
+
+}  // namespace
+
+TriangleMesh parse_obj(std::string_view text, const std::string& source_name) {
+  return ObjParser(text, source_name).run();
+}
+
+TriangleMesh read_obj(const std::string& path) {
+  return parse_obj(read_whole_file(path), path);
+}
+
+}  // namespace occlusion

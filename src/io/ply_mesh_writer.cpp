@@ -1,0 +1,153 @@
+#include "occlusion/io/ply_mesh_writer.hpp"
+
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <ostream>
+#include <sstream>
+#include <stdexcept>
+
+#include "occlusion/io/atomic_file.hpp"
+#include "occlusion/io/colour_ramp.hpp"
+
+namespace occlusion {
+namespace {
+
+constexpr std::size_t kVertexBytes = 3 * 4 + 3 + 4;
+constexpr std::size_t kFaceBytes = 1 + 3 * 4 + 4 + 4;
+
+// Assembles bytes least significant first with shifts, which yields little-endian
+// on any host: no byte swapping needed and no host-endianness test to get wrong.
+class LittleEndianWriter {
+ public:
+  explicit LittleEndianWriter(char* cursor) : cursor_(cursor) {}
+
+  void u8(std::uint8_t value) { *cursor_++ = static_cast<char>(value); }
+  void u32(std::uint32_t value) {
+    for (int shift = 0; shift < 32; shift += 8) u8(static_cast<std::uint8_t>(value >> shift));
+  }
+  void i32(std::int32_t value) { u32(static_cast<std::uint32_t>(value)); }
+  void f32(float value) {
+    static_assert(sizeof(float) == 4 && std::numeric_limits<float>::is_iec559,
+                  "PLY float is IEEE 754 binary32");
+    std::uint32_t bits;
+    std::memcpy(&bits, &value, sizeof bits);
+    u32(bits);
+  }
+
+ private:
+  char* cursor_;
+};
+
+bool is_identifier(const std::string& name) {
+  if (name.empty()) return false;
+  for (const char c : name) {
+    const bool ok =
+        (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
+    if (!ok) return false;
+  }
+  return true;
+}
+
+void check_value_name(const std::string& name) {
+  if (!is_identifier(name)) {
+    throw std::invalid_argument("PLY property name '" + name +
+                                "' must be letters, digits and '_' only");
+  }
+  for (const char* taken : {"x", "y", "z", "red", "green", "blue", "vertex_indices", "group_id"}) {
+    if (name == taken) {
+      throw std::invalid_argument("PLY property name '" + name + "' is already used");
+    }
+  }
+}
+
+// A header comment ends at the end of the line, so a name must not contain one.
+std::string single_line(std::string text) {
+  for (char& c : text) {
+    if (c == '\n' || c == '\r') c = ' ';
+  }
+  return text;
+}
+
+std::string header(const TriangleMesh& mesh, const std::string& value_name) {
+  std::ostringstream out;
+  out << "ply\n"
+      << "format binary_little_endian 1.0\n"
+      << "comment written by occlusion\n"
+      << "comment " << value_name
+      << ": one value per face, repeated on the face's own 3 vertices so that it"
+         " loads as a scalar field\n"
+      << "comment colour: viridis ramp of " << value_name
+      << " clamped to [0,1], grey where it is NaN (no data)\n";
+  for (std::size_t g = 0; g < mesh.group_names.size(); ++g) {
+    out << "comment group " << g << ' ' << single_line(mesh.group_names[g]) << '\n';
+  }
+  out << "element vertex " << 3 * mesh.face_count() << '\n'
+      << "property float x\n"
+      << "property float y\n"
+      << "property float z\n"
+      << "property uchar red\n"
+      << "property uchar green\n"
+      << "property uchar blue\n"
+      << "property float " << value_name << '\n'
+      << "element face " << mesh.face_count() << '\n'
+      << "property list uchar int vertex_indices\n"
+      << "property float " << value_name << '\n'
+      << "property int group_id\n"
+      << "end_header\n";
+  return out.str();
+}
+
+std::string body(const TriangleMesh& mesh, const std::vector<float>& face_values) {
+  const std::size_t faces = mesh.face_count();
+  std::string bytes(faces * (3 * kVertexBytes + kFaceBytes), '\0');
+  LittleEndianWriter vertex_out(bytes.data());
+  for (std::size_t f = 0; f < faces; ++f) {
+    const auto rgb = colour_ramp(face_values[f]);
+    for (const std::uint32_t index : mesh.faces[f]) {
+      const Eigen::Vector3d& p = mesh.vertices[index];
+      vertex_out.f32(static_cast<float>(p.x()));
+      vertex_out.f32(static_cast<float>(p.y()));
+      vertex_out.f32(static_cast<float>(p.z()));
+      vertex_out.u8(rgb[0]);
+      vertex_out.u8(rgb[1]);
+      vertex_out.u8(rgb[2]);
+      vertex_out.f32(face_values[f]);
+    }
+  }
+  LittleEndianWriter face_out(bytes.data() + faces * 3 * kVertexBytes);
+  for (std::size_t f = 0; f < faces; ++f) {
+    const auto first = static_cast<std::int32_t>(3 * f);
+    face_out.u8(3);
+    face_out.i32(first);
+    face_out.i32(first + 1);
+    face_out.i32(first + 2);
+    face_out.f32(face_values[f]);
+    face_out.i32(static_cast<std::int32_t>(mesh.face_group[f]));
+  }
+  return bytes;
+}
+
+}  // namespace
+
+void write_mesh_ply(const std::string& path, const TriangleMesh& mesh,
+                    const std::vector<float>& face_values, const std::string& value_name) {
+  if (face_values.size() != mesh.face_count()) {
+    throw std::invalid_argument("write_mesh_ply: " + std::to_string(face_values.size()) +
+                                " values for " + std::to_string(mesh.face_count()) + " faces");
+  }
+  check_value_name(value_name);
+  mesh.validate();
+  // Vertex indices are PLY `int`.
+  if (mesh.face_count() > static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()) / 3) {
+    throw std::invalid_argument("write_mesh_ply: too many faces for 32-bit PLY indices");
+  }
+  const std::string head = header(mesh, value_name);
+  const std::string data = body(mesh, face_values);
+  write_file_atomically(path, [&](std::ostream& out) {
+    out.write(head.data(), static_cast<std::streamsize>(head.size()));
+    out.write(data.data(), static_cast<std::streamsize>(data.size()));
+  });
+}
+
+}  // namespace occlusion

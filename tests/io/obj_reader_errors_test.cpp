@@ -1,0 +1,164 @@
+// Every way an OBJ file can be wrong gives an InputError that names the file
+// and the line, never a crash or a quietly different mesh.
+
+#include <gtest/gtest.h>
+
+#include <cstddef>
+#include <string>
+
+#include "io/scratch_directory.hpp"
+#include "occlusion/io/input_error.hpp"
+#include "occlusion/io/obj_reader.hpp"
+
+namespace occlusion {
+namespace {
+
+const char* const kTriangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";  // lines 1-3
+
+// Parses `text` as "scene.obj" and checks the error's location and wording.
+void expect_error(const std::string& text, std::size_t line, const std::string& fragment) {
+  try {
+    parse_obj(text, "scene.obj");
+    ADD_FAILURE() << "no error for:\n" << text;
+  } catch (const InputError& error) {
+    const std::string message = error.what();
+    EXPECT_EQ(error.path, "scene.obj");
+    EXPECT_EQ(error.line, line) << message;
+    const std::string prefix =
+        line == 0 ? std::string("scene.obj: ") : "scene.obj:" + std::to_string(line) + ": ";
+    EXPECT_EQ(message.rfind(prefix, 0), 0u) << message;
+    EXPECT_NE(message.find(fragment), std::string::npos)
+        << "'" << message << "' lacks '" << fragment << "'";
+  }
+}
+
+TEST(ObjReaderErrors, MissingFileNamesThePath) {
+  const std::string path = "/nonexistent/dir/missing.obj";
+  try {
+    read_obj(path);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& error) {
+    EXPECT_EQ(error.path, path);
+    EXPECT_EQ(error.line, 0u);
+    EXPECT_EQ(std::string(error.what()).rfind(path + ": cannot open", 0), 0u) << error.what();
+  }
+}
+
+TEST(ObjReaderErrors, DirectoryIsNotAFile) {
+  testing::ScratchDirectory dir;
+  try {
+    read_obj(dir.path().string());
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("directory"), std::string::npos) << error.what();
+  }
+}
+
+TEST(ObjReaderErrors, BadContentInAFileNamesThePathAndLine) {
+  testing::ScratchDirectory dir;
+  const std::string path = dir.file("broken.obj");
+  testing::write_text(path, std::string(kTriangle) + "f 1 2 4\n");
+  try {
+    read_obj(path);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& error) {
+    EXPECT_EQ(error.path, path);
+    EXPECT_EQ(error.line, 4u);
+    EXPECT_EQ(std::string(error.what()).rfind(path + ":4: ", 0), 0u) << error.what();
+  }
+}
+
+TEST(ObjReaderErrors, IndexZero) {
+  expect_error(std::string(kTriangle) + "f 0 1 2\n", 4, "index 0");
+}
+
+TEST(ObjReaderErrors, PositiveIndexPastTheLastVertex) {
+  expect_error(std::string(kTriangle) + "f 1 2 3\n\nf 1 2 4\n", 6, "index 4 is out of range");
+}
+
+TEST(ObjReaderErrors, NegativeIndexBeforeTheFirstVertex) {
+  expect_error(std::string(kTriangle) + "f -1 -2 -4\n", 4, "-4 is out of range");
+}
+
+TEST(ObjReaderErrors, NegativeIndexCountsOnlyVerticesReadSoFar) {
+  // Four vertices in the file, but only three before the face.
+  expect_error(std::string(kTriangle) + "f -4 -2 -1\nv 1 1 0\n", 4, "out of range");
+}
+
+TEST(ObjReaderErrors, HugeIndex) {
+  expect_error(std::string(kTriangle) + "f 1 2 99999999999\n", 4, "out of range");
+}
+
+TEST(ObjReaderErrors, NonNumericCoordinate) {
+  expect_error("v 0 0 0\nv 1 abc 0\n", 2, "'abc' is not a number");
+}
+
+TEST(ObjReaderErrors, NumberWithTrailingGarbage) {
+  expect_error("v 0 0 0\nv 1 2 3x\n", 2, "'3x' is not a number");
+}
+
+TEST(ObjReaderErrors, MissingCoordinate) {
+  expect_error("v 0 0 0\n\nv 1 2\n", 3, "2 coordinates, expected 3");
+  expect_error("v\n", 1, "0 coordinates");
+}
+
+TEST(ObjReaderErrors, NonFiniteCoordinate) {
+  expect_error("v nan 0 0\n", 1, "not finite");
+  expect_error("v 0 -inf 0\n", 1, "not finite");
+  expect_error("v 0 0 1e400\n", 1, "not finite");
+}
+
+TEST(ObjReaderErrors, FaceWithFewerThanThreeVertices) {
+  expect_error(std::string(kTriangle) + "f 1 2\n", 4, "2 vertices, needs at least 3");
+  expect_error(std::string(kTriangle) + "f\n", 4, "0 vertices");
+}
+
+TEST(ObjReaderErrors, MalformedCorner) {
+  expect_error(std::string(kTriangle) + "f 1/x 2 3\n", 4, "'1/x' is not a valid reference");
+  expect_error(std::string(kTriangle) + "f a b c\n", 4, "'a' is not a valid reference");
+  expect_error(std::string(kTriangle) + "f 1/1/1/1 2 3\n", 4, "not a valid reference");
+  expect_error(std::string(kTriangle) + "f /1 2 3\n", 4, "not a valid reference");
+}
+
+TEST(ObjReaderErrors, RepeatedVertexIsDegenerate) {
+  expect_error(std::string(kTriangle) + "f 1 2 3\nf 1 2 2\n", 5, "degenerate face (zero area)");
+  // The same vertex reached through a relative index.
+  expect_error(std::string(kTriangle) + "f 3 1 -1\n", 4, "degenerate face (zero area)");
+}
+
+TEST(ObjReaderErrors, CollinearTriangleIsDegenerate) {
+  expect_error(std::string(kTriangle) + "v 2 0 0\nf 1 2 3\nf 1 2 4\n", 6,
+               "degenerate face (zero area)");
+}
+
+TEST(ObjReaderErrors, DistinctVerticesAtOnePointAreDegenerate) {
+  expect_error(std::string(kTriangle) + "v 1 0 0\nf 1 2 3\nf 1 2 4\n", 6,
+               "degenerate face (zero area)");
+}
+
+TEST(ObjReaderErrors, AreaJustBelowTheRelativeThresholdIsDegenerate) {
+  // Diagonal^2 = 2, threshold 2e-12; this sliver has area 0.5 * 1e-12.
+  expect_error(std::string(kTriangle) + "v 0.5 1e-12 0\nf 1 2 3\nf 1 2 4\n", 6,
+               "degenerate face (zero area)");
+}
+
+TEST(ObjReaderErrors, DegenerateFanTriangleNamesThePolygonLine) {
+  // The quad's second fan triangle (1, 3, 4) is collinear: vertex 4 lies on edge 1-3.
+  expect_error(std::string(kTriangle) + "v 0 0.5 0\n\nf 1 2 3 4\n", 6,
+               "degenerate face (zero area)");
+}
+
+TEST(ObjReaderErrors, LineNumbersCountContinuedAndCrlfLines) {
+  // Lines: 1-3 vertices (CRLF), 4-5 one continued face, 6 the bad face.
+  expect_error("v 0 0 0\r\nv 1 0 0\r\nv 0 1 0\r\nf 1 2 \\\r\n3\r\nf 1 2 7\r\n", 6, "out of range");
+  // An error inside a continued statement names the line it starts on.
+  expect_error("v 0 0 0\nv 1 \\\n x 0\n", 2, "'x' is not a number");
+}
+
+TEST(ObjReaderErrors, NoFaces) {
+  expect_error("", 0, "no faces");
+  expect_error(std::string(kTriangle) + "g empty\nl 1 2\n", 0, "no faces");
+}
+
+}  // namespace
+}  // namespace occlusion
