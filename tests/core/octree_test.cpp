@@ -144,7 +144,7 @@ INSTANTIATE_TEST_SUITE_P(
                       NamedOptions{"leaf_16", options_with(16, 0.0f, true)},
                       NamedOptions{"min_cell_2", options_with(4, 2.0f, true)},
                       NamedOptions{"brute_force", options_with(4, 0.0f, false)}),
-    [](const ::testing::TestParamInfo<NamedOptions>& info) { return info.param.name; });
+    [](const ::testing::TestParamInfo<NamedOptions>& param_info) { return param_info.param.name; });
 
 TEST(Octree, BatchEqualsSingleRayOnAllThreads) {
   const TriangleOctree tree(pack_triangles(test_scene(10000)));

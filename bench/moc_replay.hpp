@@ -1,0 +1,45 @@
+#pragma once
+// compute_mesh_occlusion's ray casting, taken apart so that the benchmark can
+// time the octree and Embree on the very same shadow rays and check that both
+// give the analysis' answer.
+
+#include <Eigen/Core>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "occlusion/analysis/mesh_sampling.hpp"
+#include "occlusion/core/hit.hpp"
+#include "occlusion/core/mesh.hpp"
+#include "occlusion/core/ray.hpp"
+
+namespace occlusion::bench {
+
+struct ShadowRays {
+  // Sample-major like the analysis: pair (sample s, viewpoint v) is slot
+  // s * viewpoints + v. A sample within 2 eps of a viewpoint is trivially
+  // visible from it and gets no ray, so rays[i] serves slot[i].
+  std::vector<Ray> rays;
+  // The face each ray starts on, which the query must not count as a blocker.
+  std::vector<PrimitiveId> ignore;
+  std::vector<std::size_t> slot;
+  std::size_t samples = 0;
+  std::size_t viewpoints = 0;
+};
+
+// direction = viewpoint - sample (t = 1 at the viewpoint), and the interval
+// [eps / |d|, 1 - eps / |d|] keeps `epsilon` metres clear at both ends.
+ShadowRays make_shadow_rays(const MeshSamples& samples,
+                            const std::vector<Eigen::Vector3d>& viewpoints, double epsilon);
+
+// The analysis' reduction of per-ray flags (occluded[i] for shadow.rays[i])
+// to the occlusion level: a sample is visible if any viewpoint sees it.
+double occlusion_level_from_flags(const TriangleMesh& mesh, const MeshSamples& samples,
+                                  const ShadowRays& shadow, const std::uint8_t* occluded);
+
+// A samples_per_unit_area for which sample_mesh yields at least `samples`
+// samples: samples / total area if that suffices, else the smallest density
+// above it that does (within 1e-9 relative).
+double samples_per_unit_area_for(const TriangleMesh& mesh, std::size_t samples);
+
+}  // namespace occlusion::bench
