@@ -20,8 +20,27 @@ namespace octree_detail {
 inline constexpr int kMaxDepthLimit = 32;
 inline constexpr std::size_t kStackSize = 8 * (kMaxDepthLimit + 2);
 
+// kRankedMask[s][m]: the bit mask m with bit k moved to bit k ^ s.
+struct RankedMaskTable {
+  std::uint8_t table[8][256];
+  constexpr RankedMaskTable() : table{} {
+    for (int s = 0; s < 8; ++s) {
+      for (int m = 0; m < 256; ++m) {
+        int ranked = 0;
+        for (int k = 0; k < 8; ++k) {
+          if (m & (1 << k)) ranked |= 1 << (k ^ s);
+        }
+        table[s][m] = static_cast<std::uint8_t>(ranked);
+      }
+    }
+  }
+  constexpr const std::uint8_t* operator[](int s) const { return table[s]; }
+};
+inline constexpr RankedMaskTable kRankedMask{};
+
 // A child under construction: a leaf range of shapes or an inner node.
 struct BuiltChild {
+  int octant = 0;  // slot in the parent node
   std::uint32_t index = 0;
   std::uint32_t count = 0;  // 0 = inner node
   Aabb box;
@@ -125,8 +144,9 @@ class Builder {
     std::uint32_t child_count = 0;
     for (int k = 0; k < 8; ++k) {
       if (starts[k + 1] == starts[k]) continue;
-      children[child_count++] =
+      children[child_count] =
           build(starts[k], starts[k + 1], octant_centre(k, centre, half), 0.5f * half, depth + 1);
+      children[child_count++].octant = k;
     }
     // Fill after recursion: nodes_ may have reallocated meanwhile.
     OctreeNode& node = nodes_[node_index];
@@ -140,7 +160,7 @@ class Builder {
  public:
   static void fill_node(OctreeNode& node, const BuiltChild* children, std::uint32_t child_count) {
     node = OctreeNode{};
-    // Unused slots hold a zero box; traversal masks them by child_count.
+    // Unused slots hold a zero box; traversal masks them with `occupied`.
     std::fill(std::begin(node.lo_x), std::end(node.lo_x), 0.0f);
     std::fill(std::begin(node.lo_y), std::end(node.lo_y), 0.0f);
     std::fill(std::begin(node.lo_z), std::end(node.lo_z), 0.0f);
@@ -149,18 +169,19 @@ class Builder {
     std::fill(std::begin(node.hi_z), std::end(node.hi_z), 0.0f);
     std::fill(std::begin(node.index), std::end(node.index), 0u);
     std::fill(std::begin(node.count), std::end(node.count), 0u);
-    node.child_count = child_count;
-    for (std::uint32_t k = 0; k < child_count; ++k) {
+    for (std::uint32_t c = 0; c < child_count; ++c) {
+      const int k = children[c].octant;
+      node.occupied |= 1u << k;
       // Padded: the traversal's branch-free slab test relies on it (aabb.hpp).
-      const Aabb box = pad_box(children[k].box);
+      const Aabb box = pad_box(children[c].box);
       node.lo_x[k] = box.lo.x();
       node.lo_y[k] = box.lo.y();
       node.lo_z[k] = box.lo.z();
       node.hi_x[k] = box.hi.x();
       node.hi_y[k] = box.hi.y();
       node.hi_z[k] = box.hi.z();
-      node.index[k] = children[k].index;
-      node.count[k] = children[k].count;
+      node.index[k] = children[c].index;
+      node.count[k] = children[c].count;
     }
   }
 
@@ -230,6 +251,10 @@ std::optional<Hit> Octree<Shape>::traverse(const Ray& query, PrimitiveId ignore_
   const float direction_length = ray.direction.norm();
   const float ox = ray.origin.x(), oy = ray.origin.y(), oz = ray.origin.z();
   const float ix = inv.x(), iy = inv.y(), iz = inv.z();
+  const float oix = ox * ix, oiy = oy * iy, oiz = oz * iz;
+  // The octant a ray enters first: lower half along an axis it travels up.
+  const int near_octant = (ray.direction.x() < 0.0f ? 1 : 0) | (ray.direction.y() < 0.0f ? 2 : 0) |
+                          (ray.direction.z() < 0.0f ? 4 : 0);
 
   struct Entry {
     std::uint32_t index;
@@ -267,39 +292,30 @@ std::optional<Hit> Octree<Shape>::traverse(const Ray& query, PrimitiveId ignore_
 
     const OctreeNode& node = nodes_[entry.index];
     // All eight slots in one fixed-length loop the compiler can vectorise;
-    // slots past child_count are masked out below.
+    // empty slots are masked out with `occupied` below.
     float t_near[8], t_far[8];
     for (int k = 0; k < 8; ++k) {
-      const float x0 = (node.lo_x[k] - ox) * ix, x1 = (node.hi_x[k] - ox) * ix;
-      const float y0 = (node.lo_y[k] - oy) * iy, y1 = (node.hi_y[k] - oy) * iy;
-      const float z0 = (node.lo_z[k] - oz) * iz, z1 = (node.hi_z[k] - oz) * iz;
-      const float near_x = x0 < x1 ? x0 : x1, far_x = x0 < x1 ? x1 : x0;
-      const float near_y = y0 < y1 ? y0 : y1, far_y = y0 < y1 ? y1 : y0;
-      const float near_z = z0 < z1 ? z0 : z1, far_z = z0 < z1 ? z1 : z0;
-      float tn = near_x > near_y ? near_x : near_y;
-      tn = tn > near_z ? tn : near_z;
-      tn = tn > ray.t_min ? tn : ray.t_min;
-      float tf = far_x < far_y ? far_x : far_y;
-      tf = tf < far_z ? tf : far_z;
-      tf = tf < ray.t_max ? tf : ray.t_max;
-      t_near[k] = tn;
-      t_far[k] = tf;
+      // std::min/max map to single minps/maxps instructions.
+      const float x0 = node.lo_x[k] * ix - oix, x1 = node.hi_x[k] * ix - oix;
+      const float y0 = node.lo_y[k] * iy - oiy, y1 = node.hi_y[k] * iy - oiy;
+      const float z0 = node.lo_z[k] * iz - oiz, z1 = node.hi_z[k] * iz - oiz;
+      t_near[k] = std::max(std::max(std::min(x0, x1), std::min(y0, y1)),
+                           std::max(std::min(z0, z1), ray.t_min));
+      t_far[k] = std::min(std::min(std::max(x0, x1), std::max(y0, y1)),
+                          std::min(std::max(z0, z1), ray.t_max));
     }
-    // Collect the children hit, nearest first (insertion sort of at most 8).
-    Entry hits[8];
-    int hit_count = 0;
-    for (std::uint32_t k = 0; k < node.child_count; ++k) {
-      if (!(t_near[k] <= t_far[k])) continue;
-      Entry child{node.index[k], node.count[k], t_near[k]};
-      int j = hit_count++;
-      while (j > 0 && hits[j - 1].t_enter > child.t_enter) {
-        hits[j] = hits[j - 1];
-        --j;
-      }
-      hits[j] = child;
+    std::uint32_t hit_mask = 0;
+    for (int k = 0; k < 8; ++k) hit_mask |= static_cast<std::uint32_t>(t_near[k] <= t_far[k]) << k;
+    hit_mask &= node.occupied;
+    // Push farthest first so that the nearest is popped next: relabel slot k as
+    // k ^ near_octant (front-to-back rank) and push from the highest rank down.
+    std::uint32_t ranked = octree_detail::kRankedMask[near_octant][hit_mask];
+    while (ranked != 0) {
+      const int rank = 31 - __builtin_clz(ranked);
+      ranked &= ~(1u << rank);
+      const int k = rank ^ near_octant;
+      stack[top++] = Entry{node.index[k], node.count[k], t_near[k]};
     }
-    // Push farthest first so the nearest is popped next.
-    for (int j = hit_count - 1; j >= 0; --j) stack[top++] = hits[j];
   }
   return best;
 }

@@ -53,7 +53,10 @@ struct OctreeStats {
   std::size_t memory_bytes = 0;
 };
 
-// One flattened 8-wide node: the boxes of up to eight children and where each lives.
+// One flattened 8-wide node: the boxes of up to eight children and where each
+// lives. Child k sits in slot k = its octant (bit 0: upper x, bit 1: upper y,
+// bit 2: upper z), so a ray visits slots front to back in the order k ^ s,
+// where s holds the signs of its direction: no sorting during traversal.
 struct alignas(64) OctreeNode {
   float lo_x[8], lo_y[8], lo_z[8];
   float hi_x[8], hi_y[8], hi_z[8];
@@ -61,7 +64,7 @@ struct alignas(64) OctreeNode {
   // count[k] > 0: child k is a leaf, shapes[index[k] .. index[k] + count[k]).
   std::uint32_t index[8];
   std::uint32_t count[8];
-  std::uint32_t child_count = 0;  // children are packed in slots [0, child_count)
+  std::uint32_t occupied = 0;  // bit k set: slot k holds a child
 };
 
 // Shape must provide bounds() -> Aabb and centroid() -> Eigen::Vector3f, and a
