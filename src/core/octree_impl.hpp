@@ -10,6 +10,7 @@
 
 #include "occlusion/core/octree.hpp"
 #include "occlusion/core/parallel.hpp"
+#include "octree_slab.hpp"
 
 namespace occlusion {
 
@@ -249,9 +250,7 @@ std::optional<Hit> Octree<Shape>::traverse(const Ray& query, PrimitiveId ignore_
   Ray ray = query;  // t_max shrinks as closer hits are found
   const Eigen::Vector3f inv = safe_inverse(ray.direction);
   const float direction_length = ray.direction.norm();
-  const float ox = ray.origin.x(), oy = ray.origin.y(), oz = ray.origin.z();
-  const float ix = inv.x(), iy = inv.y(), iz = inv.z();
-  const float oix = ox * ix, oiy = oy * iy, oiz = oz * iz;
+  octree_detail::SlabRay slab(ray.origin, inv, ray.t_min, ray.t_max);
   // The octant a ray enters first: lower half along an axis it travels up.
   const int near_octant = (ray.direction.x() < 0.0f ? 1 : 0) | (ray.direction.y() < 0.0f ? 2 : 0) |
                           (ray.direction.z() < 0.0f ? 4 : 0);
@@ -268,7 +267,8 @@ std::optional<Hit> Octree<Shape>::traverse(const Ray& query, PrimitiveId ignore_
 
   while (top > 0) {
     const Entry entry = stack[--top];
-    if (entry.t_enter > ray.t_max) continue;
+    // Only a closest-hit query shrinks t_max below what a child was pushed with.
+    if (!kAnyHit && entry.t_enter > ray.t_max) continue;
     if (entry.count > 0) {
       const std::uint32_t end = entry.index + entry.count;
       for (std::uint32_t i = entry.index; i < end; ++i) {
@@ -284,6 +284,7 @@ std::optional<Hit> Octree<Shape>::traverse(const Ray& query, PrimitiveId ignore_
           if (!best || *t < best->t_hit || id < best->primitive_id) {
             best = Hit{*t, id};
             ray.t_max = *t;
+            slab.set_t_max(*t);
           }
         }
       }
@@ -293,19 +294,8 @@ std::optional<Hit> Octree<Shape>::traverse(const Ray& query, PrimitiveId ignore_
     const OctreeNode& node = nodes_[entry.index];
     // All eight slots in one fixed-length loop the compiler can vectorise;
     // empty slots are masked out with `occupied` below.
-    float t_near[8], t_far[8];
-    for (int k = 0; k < 8; ++k) {
-      // std::min/max map to single minps/maxps instructions.
-      const float x0 = node.lo_x[k] * ix - oix, x1 = node.hi_x[k] * ix - oix;
-      const float y0 = node.lo_y[k] * iy - oiy, y1 = node.hi_y[k] * iy - oiy;
-      const float z0 = node.lo_z[k] * iz - oiz, z1 = node.hi_z[k] * iz - oiz;
-      t_near[k] = std::max(std::max(std::min(x0, x1), std::min(y0, y1)),
-                           std::max(std::min(z0, z1), ray.t_min));
-      t_far[k] = std::min(std::min(std::max(x0, x1), std::max(y0, y1)),
-                          std::min(std::max(z0, z1), ray.t_max));
-    }
-    std::uint32_t hit_mask = 0;
-    for (int k = 0; k < 8; ++k) hit_mask |= static_cast<std::uint32_t>(t_near[k] <= t_far[k]) << k;
+    float t_near[8];
+    std::uint32_t hit_mask = octree_detail::slab_test_8(node, slab, t_near);
     hit_mask &= node.occupied;
     // Push farthest first so that the nearest is popped next: relabel slot k as
     // k ^ near_octant (front-to-back rank) and push from the highest rank down.

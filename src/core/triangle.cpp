@@ -1,14 +1,6 @@
 #include "occlusion/core/triangle.hpp"
 
-#include <cmath>
-
 namespace occlusion {
-
-namespace {
-// Relative tolerance of the parallel test |d . n| <= kParallelTolerance |d| |n|:
-// about the float rounding of the determinant itself.
-constexpr float kParallelTolerance = 1e-7f;
-}  // namespace
 
 Aabb Triangle::bounds() const {
   Aabb box;
@@ -35,26 +27,6 @@ Aabb PackedTriangle::bounds() const {
   box.extend(v0 + e1);
   box.extend(v0 + e2);
   return box;
-}
-
-std::optional<float> intersect_triangle(const Ray& ray, float direction_length,
-                                        const PackedTriangle& tri) {
-  // Möller–Trumbore with det = e1 . (d x e2) = -(d . n), using the stored normal.
-  const float det = -ray.direction.dot(tri.normal);
-  if (!(std::abs(det) > kParallelTolerance * direction_length * tri.normal_length)) {
-    return std::nullopt;  // parallel to the plane, or a degenerate triangle (n = 0)
-  }
-  const float inv_det = 1.0f / det;
-  const Eigen::Vector3f s = ray.origin - tri.v0;
-  const Eigen::Vector3f p = ray.direction.cross(tri.e2);
-  const float u = s.dot(p) * inv_det;
-  if (u < 0.0f || u > 1.0f) return std::nullopt;
-  const Eigen::Vector3f q = s.cross(tri.e1);
-  const float v = ray.direction.dot(q) * inv_det;
-  if (v < 0.0f || u + v > 1.0f) return std::nullopt;
-  const float t = tri.e2.dot(q) * inv_det;
-  if (t < ray.t_min || t > ray.t_max) return std::nullopt;
-  return t;
 }
 
 }  // namespace occlusion

@@ -15,6 +15,7 @@
 // - Both faces are hit: no back-face culling (meshes are surfaces, not solids).
 
 #include <Eigen/Geometry>
+#include <cmath>
 #include <optional>
 
 #include "occlusion/core/aabb.hpp"
@@ -44,11 +45,36 @@ struct PackedTriangle {
   Eigen::Vector3f centroid() const { return v0 + (e1 + e2) / 3.0f; }
 };
 
+// Relative tolerance of the parallel test |d . n| <= kParallelTolerance |d| |n|:
+// about the float rounding of the determinant itself.
+inline constexpr float kParallelTolerance = 1e-7f;
+
 // Möller–Trumbore. Returns the hit parameter t, or nothing, under the rules above.
 // `direction_length` is ray.direction.norm(), passed in so that a traversal
-// computes it once per ray, not once per triangle.
-std::optional<float> intersect_triangle(const Ray& ray, float direction_length,
-                                        const PackedTriangle& tri);
+// computes it once per ray, not once per triangle. Inline: it is the octree's
+// leaf test.
+inline std::optional<float> intersect_triangle(const Ray& ray, float direction_length,
+                                               const PackedTriangle& tri) {
+  // det = e1 . (d x e2) = -(d . n), using the stored normal.
+  const float det = -ray.direction.dot(tri.normal);
+  if (!(std::abs(det) > kParallelTolerance * direction_length * tri.normal_length)) {
+    return std::nullopt;  // parallel to the plane, or a degenerate triangle (n = 0)
+  }
+  // Barycentric tests on values scaled by |det|, so that the division is paid
+  // only by rays that do cross the triangle's interior or boundary.
+  const float sign = det > 0.0f ? 1.0f : -1.0f;
+  const float abs_det = det * sign;
+  const Eigen::Vector3f s = ray.origin - tri.v0;
+  const Eigen::Vector3f p = ray.direction.cross(tri.e2);
+  const float u_scaled = s.dot(p) * sign;
+  if (u_scaled < 0.0f || u_scaled > abs_det) return std::nullopt;
+  const Eigen::Vector3f q = s.cross(tri.e1);
+  const float v_scaled = ray.direction.dot(q) * sign;
+  if (v_scaled < 0.0f || u_scaled + v_scaled > abs_det) return std::nullopt;
+  const float t = tri.e2.dot(q) / det;
+  if (t < ray.t_min || t > ray.t_max) return std::nullopt;
+  return t;
+}
 
 inline std::optional<float> intersect_triangle(const Ray& ray, const Triangle& tri) {
   return intersect_triangle(ray, ray.direction.norm(), PackedTriangle(tri));
