@@ -27,3 +27,14 @@ std::vector<Eigen::Vector3d> pattern_viewpoints(int pattern, const Eigen::Vector
 std::vector<std::string> pattern_viewpoint_names(int pattern);
 
 }  // namespace occlusion
+
+namespace occlusion {
+
+// `count` viewpoints placed reproducibly inside the box [lo, hi] (z is up):
+// an nx x ny grid at mid-height over the middle 80% of the floor plan, with
+// nx x ny the smallest near-square grid holding `count`, filled row by row.
+// Throws std::invalid_argument for count == 0 or an empty box.
+std::vector<Eigen::Vector3d> grid_viewpoints(std::size_t count, const Eigen::Vector3d& lo,
+                                             const Eigen::Vector3d& hi);
+
+}  // namespace occlusion

@@ -1,0 +1,74 @@
+#pragma once
+// Point-cloud occlusion (thesis 3.3): each point is a sphere of point_radius;
+// from each viewpoint a spherical light source sends num_rays_per_vp rays in
+// directions uniform on the sphere. A ray that hits no point and does not
+// leave through an opening is an occlusion ray; the occlusion level is the
+// share of occlusion rays among all rays.
+//
+// Exterior-structure variant (thesis 3.3.5): only the points marked in
+// `blocking` stop rays (e.g. walls, floor, ceiling).
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <vector>
+
+#include "occlusion/analysis/progress.hpp"
+#include "occlusion/core/octree.hpp"
+#include "occlusion/core/point_cloud.hpp"
+#include "occlusion/core/polygon.hpp"
+
+namespace occlusion {
+
+enum class DirectionSampling {
+  kUniform,    // the seed's theta/phi sampling, seeded
+  kFibonacci,  // a Fibonacci lattice, randomly rotated per viewpoint: lower variance
+};
+
+struct CloudOcclusionOptions {
+  double point_radius = 0.01;
+  std::size_t num_rays_per_vp = 30000;
+  DirectionSampling sampling = DirectionSampling::kUniform;
+  // Radius of the spherical light source: rays start at viewpoint + r * direction.
+  double light_radius = 0.0;
+  OctreeOptions octree;
+  std::uint64_t seed = 0;
+  unsigned threads = 0;
+  // Empty: every point blocks. Otherwise blocking[i] says whether point i does.
+  std::vector<bool> blocking;
+  // Keep each occlusion ray's direction per viewpoint (for the viewer).
+  bool keep_escape_directions = false;
+};
+
+struct ViewpointRays {
+  Eigen::Vector3d position;
+  std::size_t rays = 0;
+  std::size_t hits = 0;              // stopped by a point
+  std::size_t through_openings = 0;  // left through an opening (and hit no point first)
+  std::size_t occlusion_rays = 0;    // neither
+  double occlusion_level = 0.0;      // occlusion_rays / rays
+  std::vector<Eigen::Vector3f> escape_directions;  // if kept: unit directions
+};
+
+struct CloudOcclusionResult {
+  double occlusion_level = 0.0;  // all occlusion rays / all rays
+  std::size_t rays = 0, hits = 0, through_openings = 0, occlusion_rays = 0;
+  std::size_t points = 0, blocking_points = 0;
+  std::vector<ViewpointRays> viewpoints;
+  OctreeStats octree;
+  double build_seconds = 0.0, trace_seconds = 0.0;
+};
+
+// Throws std::invalid_argument for an empty cloud, no viewpoints, a non-finite
+// viewpoint, point_radius <= 0, num_rays_per_vp == 0, or a blocking mask of the
+// wrong size; Cancelled when progress.cancel is set.
+CloudOcclusionResult compute_cloud_occlusion(const PointCloud& cloud,
+                                             const std::vector<Eigen::Vector3d>& viewpoints,
+                                             const std::vector<PlanarPolygon>& openings,
+                                             const CloudOcclusionOptions& options,
+                                             const Progress& progress = {});
+
+// Interior/exterior point ratio (thesis 3.3.5): points not in `exterior` over
+// points in it; +infinity when no point is exterior.
+double interior_exterior_ratio(const std::vector<bool>& exterior);
+
+}  // namespace occlusion

@@ -1,0 +1,41 @@
+#pragma once
+// Fixed-viewpoint scan (-fscan): which points of a full cloud do the viewpoints
+// really see? Point i is seen from viewpoint v if the segment between them
+// meets no other point's sphere (radius point_radius), not counting hits
+// within self_tolerance of point i (its neighbours on the same surface would
+// otherwise hide it at grazing angles) nor within point_radius of the
+// viewpoint (a viewpoint placed inside a point's sphere would see nothing).
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <vector>
+
+#include "occlusion/analysis/progress.hpp"
+#include "occlusion/core/octree.hpp"
+#include "occlusion/core/point_cloud.hpp"
+
+namespace occlusion {
+
+struct ScanOptions {
+  double point_radius = 0.01;
+  // Negative: 2 * point_radius (the default of the interface).
+  double self_tolerance = -1.0;
+  OctreeOptions octree;
+  unsigned threads = 0;
+};
+
+struct ScanResult {
+  std::vector<std::uint16_t> visible_count;  // per point: viewpoints that see it
+  std::size_t visible_points = 0;            // seen by at least one viewpoint
+  double visible_fraction = 0.0;             // visible_points / points
+  std::vector<std::size_t> seen_by_viewpoint;  // points each viewpoint sees
+  OctreeStats octree;
+  double build_seconds = 0.0, trace_seconds = 0.0;
+};
+
+// Throws std::invalid_argument for an empty cloud, no or non-finite viewpoints,
+// point_radius <= 0, or more than 65535 viewpoints; Cancelled on cancel.
+ScanResult scan_cloud(const PointCloud& cloud, const std::vector<Eigen::Vector3d>& viewpoints,
+                      const ScanOptions& options, const Progress& progress = {});
+
+}  // namespace occlusion

@@ -1,0 +1,68 @@
+#include "occlusion/core/point_cloud.hpp"
+
+#include <limits>
+#include <stdexcept>
+
+namespace occlusion {
+
+namespace {
+void check_size(std::size_t size, std::size_t points, const char* what) {
+  if (size != 0 && size != points) {
+    throw std::invalid_argument(std::string("point cloud: ") + what + " has " +
+                                std::to_string(size) + " entries for " + std::to_string(points) +
+                                " points");
+  }
+}
+
+template <class T>
+void keep_where(const std::vector<T>& in, const std::vector<bool>& keep, std::vector<T>& out) {
+  if (in.empty()) return;
+  for (std::size_t i = 0; i < in.size(); ++i) {
+    if (keep[i]) out.push_back(in[i]);
+  }
+}
+}  // namespace
+
+void PointCloud::validate() const {
+  check_size(colours.size(), size(), "colours");
+  check_size(labels.size(), size(), "labels");
+  check_size(instances.size(), size(), "instances");
+  for (std::size_t i = 0; i < size(); ++i) {
+    if (!positions[i].allFinite()) {
+      throw std::invalid_argument("point cloud: point " + std::to_string(i) + " is not finite");
+    }
+  }
+  if (!class_names.empty()) {
+    for (std::size_t i = 0; i < labels.size(); ++i) {
+      if (labels[i] >= static_cast<std::int32_t>(class_names.size())) {
+        throw std::invalid_argument("point cloud: point " + std::to_string(i) + " has label " +
+                                    std::to_string(labels[i]) + " but only " +
+                                    std::to_string(class_names.size()) + " class names");
+      }
+    }
+  }
+}
+
+PointCloud PointCloud::subset(const std::vector<bool>& keep) const {
+  if (keep.size() != size()) {
+    throw std::invalid_argument("point cloud: subset mask has the wrong size");
+  }
+  PointCloud out;
+  out.class_names = class_names;
+  keep_where(positions, keep, out.positions);
+  keep_where(colours, keep, out.colours);
+  keep_where(labels, keep, out.labels);
+  keep_where(instances, keep, out.instances);
+  return out;
+}
+
+void PointCloud::bounds(Eigen::Vector3f& lo, Eigen::Vector3f& hi) const {
+  lo.setConstant(std::numeric_limits<float>::infinity());
+  hi.setConstant(-std::numeric_limits<float>::infinity());
+  for (const auto& p : positions) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+}
+
+}  // namespace occlusion
