@@ -14,7 +14,7 @@ namespace occlusion {
 
 namespace {
 
-enum class KeyType { kString, kNumber, kUnsigned, kBool, kPointList };
+enum class KeyType { kString, kNumber, kUnsigned, kBool, kPointList, kStringList };
 
 using Schema = std::map<std::string, KeyType>;
 
@@ -26,23 +26,38 @@ const std::map<std::string, Schema>& sections() {
        {{"path", KeyType::kString},
         {"pattern", KeyType::kUnsigned},
         {"viewpoints", KeyType::kPointList},
+        {"num_vp", KeyType::kUnsigned},
         {"octree_resolution", KeyType::kNumber},
         {"enable_acceleration", KeyType::kBool},
         {"samples_per_unit_area", KeyType::kNumber},
         {"seed", KeyType::kUnsigned},
         {"threads", KeyType::kUnsigned},
         {"out", KeyType::kString}}},
+      // -poc and -fscan both read this section (the seed's "point_cloud").
       {"point_cloud",
        {{"path", KeyType::kString},
         {"pattern", KeyType::kUnsigned},
         {"viewpoints", KeyType::kPointList},
-        {"num_rays_per_vp", KeyType::kUnsigned},
         {"num_vp", KeyType::kUnsigned},
+        {"num_rays_per_vp", KeyType::kUnsigned},
         {"point_radius", KeyType::kNumber},
         {"polygon_path", KeyType::kString},
         {"octree_resolution", KeyType::kNumber},
+        {"enable_acceleration", KeyType::kBool},
+        {"sampling", KeyType::kString},
+        {"light_radius", KeyType::kNumber},
+        {"exterior", KeyType::kBool},
+        {"exterior_classes", KeyType::kStringList},
+        {"self_tolerance", KeyType::kNumber},
+        {"format", KeyType::kString},
+        {"skip_bad_lines", KeyType::kBool},
         {"seed", KeyType::kUnsigned},
         {"threads", KeyType::kUnsigned},
+        {"out", KeyType::kString}}},
+      {"reconstruct",
+       {{"path", KeyType::kString},
+        {"format", KeyType::kString},
+        {"skip_bad_lines", KeyType::kBool},
         {"out", KeyType::kString}}},
   };
   return kSections;
@@ -60,6 +75,8 @@ const char* type_name(KeyType type) {
       return "true or false";
     case KeyType::kPointList:
       return "a list of [x, y, z] points";
+    case KeyType::kStringList:
+      return "a list of strings";
   }
   return "?";
 }
@@ -82,6 +99,12 @@ bool has_type(const Json::Value& value, KeyType type) {
         for (const auto& coordinate : point) {
           if (!coordinate.isNumeric() || coordinate.isBool()) return false;
         }
+      }
+      return true;
+    case KeyType::kStringList:
+      if (!value.isArray()) return false;
+      for (const auto& item : value) {
+        if (!item.isString()) return false;
       }
       return true;
   }
@@ -152,35 +175,68 @@ Config load_config(const std::string& path) {
   return config;
 }
 
-void apply_mesh_config(const Config& config, MeshOcclusionRequest& request) {
-  const Json::Value& mesh = config.root["occlusion"]["mesh"];
-  if (mesh.isNull()) return;
-  if (mesh.isMember("path")) request.path = resolve(config, mesh["path"].asString());
-  if (mesh.isMember("pattern")) {
-    request.pattern = static_cast<int>(std::min<Json::UInt64>(mesh["pattern"].asUInt64(), 1000));
+ConfigSection::ConfigSection(const Config& config, const std::string& name)
+    : config_(config), name_(name), body_(config.root["occlusion"][name]) {}
+
+bool ConfigSection::has(const std::string& key) const {
+  return body_.isObject() && body_.isMember(key);
+}
+
+void ConfigSection::read(const std::string& key, std::string& out) const {
+  if (has(key)) out = body_[key].asString();
+}
+
+void ConfigSection::read_path(const std::string& key, std::string& out) const {
+  if (has(key)) out = resolve(config_, body_[key].asString());
+}
+
+void ConfigSection::read(const std::string& key, double& out) const {
+  if (has(key)) out = body_[key].asDouble();
+}
+
+void ConfigSection::read(const std::string& key, bool& out) const {
+  if (has(key)) out = body_[key].asBool();
+}
+
+void ConfigSection::read(const std::string& key, std::uint64_t& out) const {
+  if (has(key)) out = body_[key].asUInt64();
+}
+
+void ConfigSection::read(const std::string& key, unsigned& out) const {
+  if (!has(key)) return;
+  const Json::UInt64 value = body_[key].asUInt64();
+  if (value > std::numeric_limits<unsigned>::max()) {
+    fail(config_, "'occlusion." + name_ + "." + key + "' is too large");
   }
-  if (mesh.isMember("viewpoints")) {
-    request.viewpoints.clear();
-    for (const auto& point : mesh["viewpoints"]) {
-      request.viewpoints.emplace_back(point[0].asDouble(), point[1].asDouble(),
-                                      point[2].asDouble());
+  out = static_cast<unsigned>(value);
+}
+
+void ConfigSection::read(const std::string& key, std::vector<std::string>& out) const {
+  if (!has(key)) return;
+  out.clear();
+  for (const auto& item : body_[key]) out.push_back(item.asString());
+}
+
+void ConfigSection::read_viewpoints(ViewpointChoice& out) const {
+  const int kinds =
+      (has("viewpoints") ? 1 : 0) + (has("pattern") ? 1 : 0) + (has("num_vp") ? 1 : 0);
+  if (kinds > 1) {
+    fail(config_, "occlusion." + name_ + ": give one of 'viewpoints', 'pattern' or 'num_vp'");
+  }
+  if (has("viewpoints")) {
+    std::vector<Eigen::Vector3d> points;
+    for (const auto& point : body_["viewpoints"]) {
+      points.emplace_back(point[0].asDouble(), point[1].asDouble(), point[2].asDouble());
     }
+    out = ViewpointChoice::from_points(points);
   }
-  if (mesh.isMember("octree_resolution")) {
-    request.octree_resolution = mesh["octree_resolution"].asDouble();
+  if (has("pattern")) {
+    out = ViewpointChoice::from_pattern(
+        static_cast<int>(std::min<Json::UInt64>(body_["pattern"].asUInt64(), 1000)));
   }
-  if (mesh.isMember("enable_acceleration")) {
-    request.enable_acceleration = mesh["enable_acceleration"].asBool();
+  if (has("num_vp")) {
+    out = ViewpointChoice::from_grid(static_cast<std::size_t>(body_["num_vp"].asUInt64()));
   }
-  if (mesh.isMember("samples_per_unit_area")) {
-    request.samples_per_unit_area = mesh["samples_per_unit_area"].asDouble();
-  }
-  if (mesh.isMember("seed")) request.seed = mesh["seed"].asUInt64();
-  if (mesh.isMember("threads")) {
-    request.threads = static_cast<unsigned>(
-        std::min<Json::UInt64>(mesh["threads"].asUInt64(), std::numeric_limits<unsigned>::max()));
-  }
-  if (mesh.isMember("out")) request.out = resolve(config, mesh["out"].asString());
 }
 
 }  // namespace occlusion

@@ -2,13 +2,11 @@
 
 #include <json/writer.h>
 
-#include <chrono>
 #include <cmath>
-#include <filesystem>
 #include <iomanip>
 
+#include "job_support.hpp"
 #include "occlusion/analysis/mesh_sampling.hpp"
-#include "occlusion/analysis/viewpoints.hpp"
 #include "occlusion/app/errors.hpp"
 #include "occlusion/app/json_output.hpp"
 #include "occlusion/io/atomic_file.hpp"
@@ -18,25 +16,6 @@
 namespace occlusion {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-// Files written with --out, named after the mesh so that several meshes can
-// share one output folder.
-struct OutputPaths {
-  std::string json, ply, csv;
-};
-
-OutputPaths output_paths(const MeshOcclusionRequest& request) {
-  const std::string stem = std::filesystem::path(request.path).stem().string();
-  const std::filesystem::path dir(request.out);
-  return {(dir / (stem + ".moc.json")).string(), (dir / (stem + ".moc.ply")).string(),
-          (dir / (stem + ".moc.csv")).string()};
-}
 
 void write_face_csv(const std::string& path, const TriangleMesh& mesh,
                     const MeshOcclusionReport& report) {
@@ -55,13 +34,7 @@ void write_face_csv(const std::string& path, const TriangleMesh& mesh,
 
 void validate(const MeshOcclusionRequest& request) {
   if (request.path.empty()) throw UsageError("no mesh given (-moc MESH or occlusion.mesh.path)");
-  if (request.viewpoints.empty() &&
-      (request.pattern < kMinPattern || request.pattern > kMaxPattern)) {
-    throw UsageError("--pattern must be 1..7, got " + std::to_string(request.pattern));
-  }
-  for (const auto& vp : request.viewpoints) {
-    if (!vp.allFinite()) throw UsageError("--viewpoint must be finite");
-  }
+  request.viewpoints.validate();
   if (!std::isfinite(request.samples_per_unit_area) || request.samples_per_unit_area <= 0.0) {
     throw UsageError("--samples-per-unit-area must be a number > 0");
   }
@@ -70,29 +43,34 @@ void validate(const MeshOcclusionRequest& request) {
   }
 }
 
+void apply_config(const Config& config, MeshOcclusionRequest& request) {
+  const ConfigSection section(config, "mesh");
+  section.read_path("path", request.path);
+  section.read_viewpoints(request.viewpoints);
+  section.read("samples_per_unit_area", request.samples_per_unit_area);
+  section.read("octree_resolution", request.octree_resolution);
+  section.read("enable_acceleration", request.enable_acceleration);
+  section.read("seed", request.seed);
+  section.read("threads", request.threads);
+  section.read_path("out", request.out);
+}
+
 MeshOcclusionReport run_mesh_occlusion(const MeshOcclusionRequest& request,
                                        const Progress& progress) {
   validate(request);
-  const auto start = Clock::now();
+  const auto start = job::Clock::now();
   MeshOcclusionReport report;
   report.request = request;
 
   progress("loading", 0.0);
   const TriangleMesh mesh = read_obj(request.path);
-  report.load_seconds = seconds_since(start);
+  report.load_seconds = job::seconds_since(start);
   progress.check_cancel();
 
   Eigen::Vector3d lo, hi;
   mesh.bounds(lo, hi);
-  std::vector<Eigen::Vector3d> viewpoints = request.viewpoints;
-  if (viewpoints.empty()) {
-    viewpoints = pattern_viewpoints(request.pattern, lo, hi);
-    report.viewpoint_names = pattern_viewpoint_names(request.pattern);
-  } else {
-    for (std::size_t v = 0; v < viewpoints.size(); ++v) {
-      report.viewpoint_names.push_back("viewpoint_" + std::to_string(v + 1));
-    }
-  }
+  ViewpointChoice::Resolved viewpoints = request.viewpoints.resolve(lo, hi);
+  report.viewpoint_names = viewpoints.names;
   const double half_extent = 0.5 * (hi - lo).maxCoeff();
   if (request.enable_acceleration && request.octree_resolution >= half_extent) {
     report.warnings.push_back("octree_resolution " + std::to_string(request.octree_resolution) +
@@ -107,19 +85,22 @@ MeshOcclusionReport run_mesh_occlusion(const MeshOcclusionRequest& request,
   options.octree.enable_acceleration = request.enable_acceleration;
   options.seed = request.seed;
   options.threads = request.threads;
-  report.result = compute_mesh_occlusion(mesh, viewpoints, options, progress);
+  report.result = compute_mesh_occlusion(mesh, viewpoints.positions, options, progress);
 
   if (!request.out.empty()) {
     ensure_directory(request.out);
-    const OutputPaths paths = output_paths(request);
-    write_mesh_ply(paths.ply, mesh, report.result.face_visible_fraction, "visible_fraction");
-    write_face_csv(paths.csv, mesh, report);
-    report.outputs = {paths.json, paths.ply, paths.csv};
-    report.total_seconds = seconds_since(start);
+    // Named after the mesh so that several meshes can share one output folder.
+    const std::string json_path = job::output_path(request.out, request.path, ".moc.json");
+    const std::string ply_path = job::output_path(request.out, request.path, ".moc.ply");
+    const std::string csv_path = job::output_path(request.out, request.path, ".moc.csv");
+    write_mesh_ply(ply_path, mesh, report.result.face_visible_fraction, "visible_fraction");
+    write_face_csv(csv_path, mesh, report);
+    report.outputs = {json_path, ply_path, csv_path};
+    report.total_seconds = job::seconds_since(start);
     const Json::Value json = to_json(report);
-    write_file_atomically(paths.json, [&](std::ostream& out) { out << format_json(json) << '\n'; });
+    write_file_atomically(json_path, [&](std::ostream& out) { out << format_json(json) << '\n'; });
   }
-  report.total_seconds = seconds_since(start);
+  report.total_seconds = job::seconds_since(start);
   return report;
 }
 
@@ -159,8 +140,7 @@ Json::Value to_json(const MeshOcclusionReport& report) {
   }
   json["groups"] = groups;
 
-  Json::Value parameters(Json::objectValue);
-  parameters["pattern"] = q.viewpoints.empty() ? Json::Value(q.pattern) : Json::Value();
+  Json::Value parameters = q.viewpoints.to_json();
   parameters["samples_per_unit_area"] = q.samples_per_unit_area;
   parameters["octree_resolution"] = q.octree_resolution;
   parameters["enable_acceleration"] = q.enable_acceleration;

@@ -7,11 +7,6 @@
 
 namespace occlusion::cli {
 
-std::string Arguments::value_of(const std::string& option) {
-  if (done()) throw UsageError(option + " needs a value");
-  return take();
-}
-
 double parse_number(const std::string& option, const std::string& text) {
   double value = 0.0;
   const char* end = text.data() + text.size();

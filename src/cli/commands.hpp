@@ -7,6 +7,8 @@ namespace occlusion::cli {
 // Each returns the process exit code; errors propagate as exceptions that
 // main() maps to exit codes.
 int run_mesh_occlusion_command(const std::vector<std::string>& args);
-void print_mesh_occlusion_help();
+int run_cloud_occlusion_command(const std::vector<std::string>& args);
+int run_scan_command(const std::vector<std::string>& args);
+int run_reconstruct_command(const std::vector<std::string>& args);
 
 }  // namespace occlusion::cli

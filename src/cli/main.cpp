@@ -28,6 +28,9 @@ void print_help() {
       "\n"
       "commands:\n"
       "  -moc, mesh-occlusion MESH.obj    visible-area occlusion level of a triangle mesh\n"
+      "  -poc, cloud-occlusion CLOUD      occlusion ray ratio of a point cloud, with openings\n"
+      "  -fscan, scan CLOUD               the points that fixed viewpoints really see\n"
+      "  -recon, reconstruct FOLDER       S3DIS room or Area folder -> one labelled cloud\n"
       "\n"
       "Run 'occlusion COMMAND --help' for a command's options.\n"
       "Exit codes: 0 success, 1 failure, 2 usage or configuration error, 3 input file error.\n");
@@ -45,6 +48,15 @@ int dispatch(const std::vector<std::string>& args) {
   const std::vector<std::string> rest(args.begin() + 1, args.end());
   if (args[0] == "-moc" || args[0] == "mesh-occlusion") {
     return occlusion::cli::run_mesh_occlusion_command(rest);
+  }
+  if (args[0] == "-poc" || args[0] == "cloud-occlusion") {
+    return occlusion::cli::run_cloud_occlusion_command(rest);
+  }
+  if (args[0] == "-fscan" || args[0] == "scan") {
+    return occlusion::cli::run_scan_command(rest);
+  }
+  if (args[0] == "-recon" || args[0] == "reconstruct") {
+    return occlusion::cli::run_reconstruct_command(rest);
   }
   throw occlusion::UsageError("unknown command '" + args[0] + "' (see occlusion --help)");
 }

@@ -1,13 +1,12 @@
 #include <cstdio>
-#include <iostream>
 
 #include "arguments.hpp"
 #include "commands.hpp"
-#include "occlusion/analysis/viewpoints.hpp"
+#include "common_options.hpp"
 #include "occlusion/app/config.hpp"
 #include "occlusion/app/errors.hpp"
-#include "occlusion/app/json_output.hpp"
 #include "occlusion/app/mesh_occlusion_job.hpp"
+#include "option_table.hpp"
 #include "progress_printer.hpp"
 
 namespace occlusion::cli {
@@ -16,72 +15,39 @@ namespace {
 
 struct MeshOcclusionCommand {
   MeshOcclusionRequest request;
-  bool json = false;
-  bool quiet = false;
-  bool help = false;
+  OutputOptions output;
 };
 
-MeshOcclusionCommand parse(const std::vector<std::string>& raw) {
+MeshOcclusionCommand parse(const std::vector<std::string>& args) {
   MeshOcclusionCommand command;
-  // The config is applied first so that every other option overrides it,
-  // wherever it stands on the line.
-  for (std::size_t i = 0; i < raw.size(); ++i) {
-    if (raw[i] == "--config") {
-      if (i + 1 >= raw.size()) throw UsageError("--config needs a value");
-      apply_mesh_config(load_config(raw[i + 1]), command.request);
-    }
-  }
-  Arguments args(raw);
-  bool pattern_given = false;
+  MeshOcclusionRequest& request = command.request;
+  if (const auto config = config_path(args)) apply_config(load_config(*config), request);
+
+  ViewpointOptions viewpoints;
   bool path_given = false;
-  std::vector<Eigen::Vector3d> viewpoints;
-  while (!args.done()) {
-    const std::string arg = args.take();
-    if (arg == "--config") {
-      args.take();
-    } else if (arg == "-h" || arg == "--help") {
-      command.help = true;
-    } else if (arg == "--json") {
-      command.json = true;
-    } else if (arg == "--quiet" || arg == "-q") {
-      command.quiet = true;
-    } else if (arg == "--pattern") {
-      const auto pattern = parse_unsigned(arg, args.value_of(arg));
-      if (pattern < kMinPattern || pattern > kMaxPattern) {
-        throw UsageError("--pattern must be 1..7, got " + std::to_string(pattern));
-      }
-      command.request.pattern = static_cast<int>(pattern);
-      pattern_given = true;
-    } else if (arg == "--viewpoint") {
-      viewpoints.push_back(parse_point(arg, args.value_of(arg)));
-    } else if (arg == "--samples-per-unit-area") {
-      command.request.samples_per_unit_area = parse_number(arg, args.value_of(arg));
-    } else if (arg == "--octree-resolution") {
-      command.request.octree_resolution = parse_number(arg, args.value_of(arg));
-    } else if (arg == "--enable-acceleration") {
-      command.request.enable_acceleration = parse_bool(arg, args.value_of(arg));
-    } else if (arg == "--seed") {
-      command.request.seed = parse_unsigned(arg, args.value_of(arg));
-    } else if (arg == "--threads") {
-      const auto threads = parse_unsigned(arg, args.value_of(arg));
-      if (threads > 1024) throw UsageError("--threads must be at most 1024");
-      command.request.threads = static_cast<unsigned>(threads);
-    } else if (arg == "--out") {
-      command.request.out = args.value_of(arg);
-    } else if (!arg.empty() && arg[0] == '-') {
-      throw UsageError("unknown option '" + arg + "' for -moc (see occlusion -moc --help)");
-    } else if (!path_given) {
-      command.request.path = arg;  // overrides the config's path
-      path_given = true;
-    } else {
-      throw UsageError("unexpected argument '" + arg + "': -moc takes one mesh");
+  OptionTable table("-moc");
+  add_output_options(table, command.output);
+  add_viewpoint_options(table, viewpoints, /*allow_grid=*/true);
+  add_seed_option(table, request.seed);
+  add_threads_option(table, request.threads);
+  table.value({"--samples-per-unit-area"}, [&](const std::string& option, const std::string& v) {
+    request.samples_per_unit_area = parse_number(option, v);
+  });
+  table.value({"--octree-resolution"}, [&](const std::string& option, const std::string& v) {
+    request.octree_resolution = parse_number(option, v);
+  });
+  table.value({"--enable-acceleration"}, [&](const std::string& option, const std::string& v) {
+    request.enable_acceleration = parse_bool(option, v);
+  });
+  table.value({"--out"}, [&](const std::string&, const std::string& v) { request.out = v; });
+  table.parse(args, [&](const std::string& positional) {
+    if (path_given) {
+      throw UsageError("unexpected argument '" + positional + "': -moc takes one mesh");
     }
-  }
-  if (pattern_given && !viewpoints.empty()) {
-    throw UsageError("give either --pattern or --viewpoint, not both");
-  }
-  if (pattern_given) command.request.viewpoints.clear();
-  if (!viewpoints.empty()) command.request.viewpoints = viewpoints;
+    request.path = positional;  // overrides the config's path
+    path_given = true;
+  });
+  viewpoints.apply_to(request.viewpoints);
   return command;
 }
 
@@ -113,7 +79,7 @@ void print_human(const MeshOcclusionReport& report) {
 
 }  // namespace
 
-void print_mesh_occlusion_help() {
+static void print_mesh_occlusion_help() {
   std::printf(
       "usage: occlusion -moc MESH.obj [options]\n"
       "\n"
@@ -128,6 +94,8 @@ void print_mesh_occlusion_help() {
       "centre-min;\n"
       "                                1 C, 2 U, 3 L, 4 C+U, 5 C+L, 6 U+L, 7 C+U+L\n"
       "  --viewpoint X,Y,Z             explicit viewpoint (repeatable; instead of --pattern)\n"
+      "  --num-vp N                    N viewpoints on a grid at mid-height (instead of "
+      "--pattern)\n"
       "  --samples-per-unit-area X     samples per unit of area (default 100; every face gets\n"
       "                                at least one)\n"
       "  --octree-resolution X         smallest octree cell edge in scene units (default 0 = no "
@@ -144,17 +112,15 @@ void print_mesh_occlusion_help() {
 
 int run_mesh_occlusion_command(const std::vector<std::string>& args) {
   const MeshOcclusionCommand command = parse(args);
-  if (command.help) {
+  if (command.output.help) {
     print_mesh_occlusion_help();
     return 0;
   }
   const MeshOcclusionReport report =
-      run_mesh_occlusion(command.request, make_progress_printer("moc", command.quiet));
-  for (const auto& warning : report.warnings) {
-    std::fprintf(stderr, "occlusion: warning: %s\n", warning.c_str());
-  }
-  if (command.json) {
-    std::cout << format_json(to_json(report)) << std::endl;
+      run_mesh_occlusion(command.request, make_progress_printer("moc", command.output.quiet));
+  print_warnings(report.warnings);
+  if (command.output.json) {
+    print_json(to_json(report));
   } else {
     print_human(report);
   }

@@ -1,24 +1,25 @@
 #pragma once
-// The reference the octree is checked against: every triangle, in order, with
-// the same kernel and the same tie rule (equal t: lower id).
+// The reference the octree is checked against: every shape, in order, with
+// the same kernel (intersect_shape) and the same tie rule (equal t: lower id).
 
 #include <optional>
 #include <vector>
 
 #include "occlusion/core/hit.hpp"
-#include "occlusion/core/triangle.hpp"
+#include "occlusion/core/octree.hpp"
+#include "occlusion/core/sphere_octree.hpp"
 
 namespace occlusion::testing {
 
-inline std::optional<Hit> brute_force_intersect(const std::vector<PackedTriangle>& triangles,
-                                                const Ray& query,
-                                                PrimitiveId ignore_id = kNoPrimitive) {
+template <class Shape>
+std::optional<Hit> brute_force_intersect(const std::vector<Shape>& shapes, const Ray& query,
+                                         PrimitiveId ignore_id = kNoPrimitive) {
   Ray ray = query;
   const float length = ray.direction.norm();
   std::optional<Hit> best;
-  for (PrimitiveId id = 0; id < triangles.size(); ++id) {
+  for (PrimitiveId id = 0; id < shapes.size(); ++id) {
     if (id == ignore_id) continue;
-    const auto t = intersect_triangle(ray, length, triangles[id]);
+    const auto t = intersect_shape(ray, length, shapes[id]);
     if (t && (!best || *t < best->t_hit)) {
       best = Hit{*t, id};
       ray.t_max = *t;

@@ -5,6 +5,13 @@
 // leave through an opening is an occlusion ray; the occlusion level is the
 // share of occlusion rays among all rays.
 //
+// Ray k of viewpoint v starts at v + light_radius * d_k and runs along the unit
+// direction d_k (sphere_directions.hpp: it depends on the seed, v and k only,
+// so results do not depend on the thread count). A ray that crosses an opening
+// no later than its first point hit has left the room: it counts as an exit,
+// not a hit. Rays are traced in blocks, so memory does not grow with the ray
+// count (except the escape directions, when kept).
+//
 // Exterior-structure variant (thesis 3.3.5): only the points marked in
 // `blocking` stop rays (e.g. walls, floor, ceiling).
 
@@ -13,16 +20,12 @@
 #include <vector>
 
 #include "occlusion/analysis/progress.hpp"
+#include "occlusion/analysis/sphere_directions.hpp"
 #include "occlusion/core/octree.hpp"
 #include "occlusion/core/point_cloud.hpp"
 #include "occlusion/core/polygon.hpp"
 
 namespace occlusion {
-
-enum class DirectionSampling {
-  kUniform,    // the seed's theta/phi sampling, seeded
-  kFibonacci,  // a Fibonacci lattice, randomly rotated per viewpoint: lower variance
-};
 
 struct CloudOcclusionOptions {
   double point_radius = 0.01;

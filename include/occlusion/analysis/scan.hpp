@@ -3,8 +3,15 @@
 // really see? Point i is seen from viewpoint v if the segment between them
 // meets no other point's sphere (radius point_radius), not counting hits
 // within self_tolerance of point i (its neighbours on the same surface would
-// otherwise hide it at grazing angles) nor within point_radius of the
-// viewpoint (a viewpoint placed inside a point's sphere would see nothing).
+// otherwise hide it) nor within 2 * point_radius of the viewpoint (every sphere
+// that holds the viewpoint ends there, so a viewpoint placed inside a point's
+// sphere, or on a point, still sees). A point closer to the viewpoint than
+// 2 * point_radius + self_tolerance is seen.
+//
+// On a densely sampled surface a neighbour's sphere reaches the ray up to
+// point_radius / sin(elevation) from the point, so a surface seen at an
+// elevation below asin(point_radius / self_tolerance) hides itself: 30 degrees
+// with the default tolerance.
 
 #include <Eigen/Core>
 #include <cstdint>
@@ -25,9 +32,9 @@ struct ScanOptions {
 };
 
 struct ScanResult {
-  std::vector<std::uint16_t> visible_count;  // per point: viewpoints that see it
-  std::size_t visible_points = 0;            // seen by at least one viewpoint
-  double visible_fraction = 0.0;             // visible_points / points
+  std::vector<std::uint16_t> visible_count;    // per point: viewpoints that see it
+  std::size_t visible_points = 0;              // seen by at least one viewpoint
+  double visible_fraction = 0.0;               // visible_points / points
   std::vector<std::size_t> seen_by_viewpoint;  // points each viewpoint sees
   OctreeStats octree;
   double build_seconds = 0.0, trace_seconds = 0.0;

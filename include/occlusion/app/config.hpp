@@ -1,15 +1,18 @@
 #pragma once
 // The JSON configuration file, in the seed's shape (thesis listing 4.14):
 //   { "occlusion": { "mesh": { "path": ..., "pattern": 4, ... },
-//                    "point_cloud": { ... } } }
-// Every key is checked: an unknown key or a wrong type is a UsageError that
-// names the key. Relative paths are resolved against the config file's folder.
+//                    "point_cloud": { ... }, "reconstruct": { ... } } }
+// The whole file is checked on load: an unknown key or a wrong type is a
+// UsageError that names the key. Relative paths are resolved against the
+// config file's folder. Each job reads its own section (ConfigSection).
 
 #include <json/value.h>
 
+#include <cstdint>
 #include <string>
+#include <vector>
 
-#include "occlusion/app/mesh_occlusion_job.hpp"
+#include "occlusion/app/viewpoint_choice.hpp"
 
 namespace occlusion {
 
@@ -22,7 +25,27 @@ struct Config {
 // Reads and checks the whole file (all sections). Throws UsageError.
 Config load_config(const std::string& path);
 
-// Copies the `occlusion.mesh` section into the request (keys absent stay as they are).
-void apply_mesh_config(const Config& config, MeshOcclusionRequest& request);
+// One section, e.g. "mesh". Each read leaves `out` unchanged when the key is
+// absent; types were checked by load_config.
+class ConfigSection {
+ public:
+  ConfigSection(const Config& config, const std::string& name);
+
+  bool has(const std::string& key) const;
+  void read(const std::string& key, std::string& out) const;
+  void read_path(const std::string& key, std::string& out) const;  // resolved
+  void read(const std::string& key, double& out) const;
+  void read(const std::string& key, bool& out) const;
+  void read(const std::string& key, std::uint64_t& out) const;
+  void read(const std::string& key, unsigned& out) const;
+  void read(const std::string& key, std::vector<std::string>& out) const;
+  // "viewpoints", "pattern" or "num_vp": at most one may be present.
+  void read_viewpoints(ViewpointChoice& out) const;
+
+ private:
+  const Config& config_;
+  std::string name_;
+  const Json::Value& body_;
+};
 
 }  // namespace occlusion

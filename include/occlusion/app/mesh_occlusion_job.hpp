@@ -12,14 +12,14 @@
 
 #include "occlusion/analysis/mesh_occlusion.hpp"
 #include "occlusion/analysis/progress.hpp"
+#include "occlusion/app/config.hpp"
+#include "occlusion/app/viewpoint_choice.hpp"
 
 namespace occlusion {
 
 struct MeshOcclusionRequest {
   std::string path;  // OBJ mesh
-  // Explicit viewpoints win; otherwise the pattern (1..7, see viewpoints.hpp).
-  std::vector<Eigen::Vector3d> viewpoints;
-  int pattern = 7;
+  ViewpointChoice viewpoints = ViewpointChoice::from_pattern(7);
   double samples_per_unit_area = 100.0;
   double octree_resolution = 0.0;  // smallest octree cell edge, scene units; 0 = no limit
   bool enable_acceleration = true;
@@ -40,6 +40,9 @@ struct MeshOcclusionReport {
 
 // Checks the request's values; throws UsageError naming the offending option.
 void validate(const MeshOcclusionRequest& request);
+
+// Copies the config's `occlusion.mesh` section into the request.
+void apply_config(const Config& config, MeshOcclusionRequest& request);
 
 // Loads the mesh, computes, writes outputs. Throws UsageError, InputError,
 // OutputError, Cancelled.

@@ -1,0 +1,333 @@
+// bench_poc [--points N] [--triangles N] [--rays-per-vp N] [--threads T] [--seed S] [--cli PATH]
+//
+// Times the point-cloud hot paths (-poc closest hits, -fscan shadow rays) on a
+// sampled furnished room against Intel Embree's sphere points, and the
+// `occlusion -poc` and `-fscan` commands end to end. See README.md.
+
+#include <malloc.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <exception>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "bench_args.hpp"
+#include "bench_common.hpp"
+#include "child_process.hpp"
+#include "cloud_replay.hpp"
+#include "embree_points.hpp"
+#include "occlusion/analysis/cloud_occlusion.hpp"
+#include "occlusion/analysis/scan.hpp"
+#include "occlusion/analysis/viewpoints.hpp"
+#include "occlusion/core/sphere_octree.hpp"
+#include "occlusion/io/cloud_io.hpp"
+#include "room_generator.hpp"
+
+namespace {
+
+using namespace occlusion;
+using namespace occlusion::bench;
+namespace fs = std::filesystem;
+
+constexpr std::size_t kGridViewpoints = 9;
+constexpr int kPattern = 7;
+constexpr double kPointRadius = 0.01;
+// Hit parameters of both tracers agree if within this, relative.
+constexpr double kTTolerance = 1e-4;
+constexpr const char* kUsage =
+    "usage: bench_poc [--points N] [--triangles N] [--rays-per-vp N] [--threads T] [--seed S]\n"
+    "                 [--cli PATH]\n";
+
+struct Options {
+  std::size_t points = 1'000'000;
+  std::size_t triangles = 100'000;
+  std::size_t rays_per_vp = 30'000;
+  unsigned threads = 2;
+  std::uint64_t seed = 1;
+  std::string cli;  // empty: <build dir>/occlusion
+};
+
+Options parse(int argc, char** argv) {
+  Options o;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--points") {
+      o.points = parse_unsigned(arg, flag_value(argc, argv, i));
+    } else if (arg == "--triangles") {
+      o.triangles = parse_unsigned(arg, flag_value(argc, argv, i));
+    } else if (arg == "--rays-per-vp") {
+      o.rays_per_vp = parse_unsigned(arg, flag_value(argc, argv, i));
+    } else if (arg == "--threads") {
+      o.threads = static_cast<unsigned>(
+          std::min<std::uint64_t>(parse_unsigned(arg, flag_value(argc, argv, i)), 1024));
+    } else if (arg == "--seed") {
+      o.seed = parse_unsigned(arg, flag_value(argc, argv, i));
+    } else if (arg == "--cli") {
+      o.cli = flag_value(argc, argv, i);
+    } else {
+      throw UsageError("unknown argument '" + arg + "'");
+    }
+  }
+  if (o.points == 0 || o.triangles == 0 || o.rays_per_vp == 0 || o.threads == 0) {
+    throw UsageError("--points, --triangles, --rays-per-vp and --threads must be > 0");
+  }
+  if (o.points > 100'000'000) throw UsageError("--points must be at most 100000000");
+  return o;
+}
+
+// "load 0.05 s, build 0.40, trace 0.90, total 1.40" from a job's JSON timings.
+std::string cli_timings(const Json::Value& json) {
+  const Json::Value& t = json["timings"];
+  char text[160];
+  std::snprintf(text, sizeof text, "load %.3f s, build %.3f, trace %.3f, total %.3f",
+                t["load_seconds"].asDouble(), t["build_seconds"].asDouble(),
+                t["trace_seconds"].asDouble(), t["total_seconds"].asDouble());
+  return text;
+}
+
+// One line per command: wall time from fork to exit, the job's time after
+// loading (total - load in its JSON, what the 2 s goal is about), and peak RSS.
+bool print_end_to_end(const char* name, const CliRun& run, bool after_loading_goal) {
+  const ChildResult& c = run.best;
+  if (c.exit_code != 0) {
+    std::printf("%s end-to-end: FAILED (exit %d)\n%s", name, c.exit_code, c.err.c_str());
+    return false;
+  }
+  std::printf("%s end-to-end: %.2f s", name, c.wall_seconds);
+  if (run.json.isMember("timings")) {
+    const Json::Value& t = run.json["timings"];
+    std::printf(", after loading %.2f s%s",
+                (t["total_seconds"].asDouble() - t["load_seconds"].asDouble()),
+                after_loading_goal ? " (goal < 2 s)" : "");
+  }
+  std::printf(", peak RSS: %.0f MB (goal < 400 MB)\n", static_cast<double>(c.peak_rss_bytes) / 1e6);
+  return true;
+}
+
+int run(const Options& o) {
+  const fs::path bench_dir = fs::read_symlink("/proc/self/exe").parent_path();
+  const std::string cli = o.cli.empty() ? (bench_dir.parent_path() / "occlusion").string() : o.cli;
+  const std::string cloud_path = (bench_dir / "bench_cloud.pcd").string();
+
+  // The room is generated, sampled, written and dropped before the CLI runs.
+  double generate_seconds = 0.0;
+  std::size_t triangles = 0;
+  {
+    const auto start = std::chrono::steady_clock::now();
+    const GeneratedRoom room = generate_room(o.triangles, o.seed);
+    const PointCloud sampled = sample_point_cloud(room.mesh, o.points, o.seed);
+    generate_seconds = seconds_since(start);
+    triangles = room.mesh.face_count();
+    write_cloud(cloud_path, sampled, {}, CloudFormat::kPcdBinary);
+  }
+
+  // The CLI runs first, while this process is small: see child_process.hpp on ru_maxrss.
+  malloc_trim(0);
+  const std::string threads = std::to_string(o.threads);
+  const std::string radius = exact(kPointRadius);
+  std::fprintf(stderr, "bench_poc: running %s -poc on %s ...\n", cli.c_str(), cloud_path.c_str());
+  const CliRun poc_cli =
+      run_cli({cli, "-poc", cloud_path, "--num-vp", std::to_string(kGridViewpoints),
+               "--num-rays-per-vp", std::to_string(o.rays_per_vp), "--point-radius", radius,
+               "--threads", threads, "--seed", std::to_string(o.seed), "--json"},
+              (bench_dir / "bench_poc_cli").string());
+  std::fprintf(stderr, "bench_poc: running %s -fscan ...\n", cli.c_str());
+  const CliRun scan_cli = run_cli({cli, "-fscan", cloud_path, "--pattern", std::to_string(kPattern),
+                                   "--point-radius", radius, "--threads", threads, "--json"},
+                                  (bench_dir / "bench_fscan_cli").string());
+
+  auto start = std::chrono::steady_clock::now();
+  const PointCloud cloud = read_cloud(cloud_path);
+  const double read_seconds = seconds_since(start);
+  Eigen::Vector3f lo_f, hi_f;
+  cloud.bounds(lo_f, hi_f);  // what the jobs place viewpoints in
+  const Eigen::Vector3d lo = lo_f.cast<double>(), hi = hi_f.cast<double>();
+
+  CloudOcclusionOptions poc;  // the analysis' defaults, as the CLI passes them
+  poc.point_radius = kPointRadius;
+  poc.num_rays_per_vp = o.rays_per_vp;
+  poc.seed = o.seed;
+  poc.threads = o.threads;
+  const std::vector<Eigen::Vector3d> grid = grid_viewpoints(kGridViewpoints, lo, hi);
+  const std::vector<Ray> poc_rays = make_poc_rays(grid, poc);
+  ScanOptions scan;
+  scan.point_radius = kPointRadius;
+  scan.threads = o.threads;
+  const std::vector<Eigen::Vector3d> pattern = pattern_viewpoints(kPattern, lo, hi);
+  const ScanRays scan_rays = make_scan_rays(cloud, pattern, scan);
+  const std::size_t np = poc_rays.size(), ns = scan_rays.rays.size();
+
+  std::fprintf(stderr, "bench_poc: our octree ...\n");
+  std::optional<SphereOctree> tree;
+  const double our_build = best_of([&] {
+    tree.reset();
+    const auto t0 = std::chrono::steady_clock::now();
+    tree.emplace(make_spheres(cloud.positions, static_cast<float>(kPointRadius)), poc.octree);
+    return seconds_since(t0);
+  });
+  std::vector<std::optional<Hit>> our_hits(np);
+  const double our_poc = best_of([&] {
+    const auto t0 = std::chrono::steady_clock::now();
+    tree->intersect_batch(poc_rays.data(), np, nullptr, our_hits.data(), o.threads);
+    return seconds_since(t0);
+  });
+  std::vector<std::uint8_t> our_blocked(ns);
+  const double our_scan = best_of([&] {
+    const auto t0 = std::chrono::steady_clock::now();
+    tree->occluded_batch(scan_rays.rays.data(), ns, scan_rays.ignore.data(), our_blocked.data(),
+                         o.threads);
+    return seconds_since(t0);
+  });
+
+  std::fprintf(stderr, "bench_poc: embree ...\n");
+  EmbreePoints embree(o.threads);
+  const std::vector<Sphere> spheres =
+      make_spheres(cloud.positions, static_cast<float>(kPointRadius));
+  const double embree_build = best_of([&] { return embree.build(spheres); });
+  std::vector<std::optional<Hit>> their_hits(np);
+  const double embree_poc = best_of([&] {
+    const auto t0 = std::chrono::steady_clock::now();
+    embree.intersect(poc_rays.data(), np, their_hits.data(), o.threads);
+    return seconds_since(t0);
+  });
+  std::vector<std::uint8_t> their_blocked(ns);
+  const double embree_scan = best_of([&] {
+    const auto t0 = std::chrono::steady_clock::now();
+    embree.occluded(scan_rays.rays.data(), ns, their_blocked.data(), o.threads);
+    return seconds_since(t0);
+  });
+
+  std::fprintf(stderr, "bench_poc: compute_cloud_occlusion and scan_cloud in process ...\n");
+  start = std::chrono::steady_clock::now();
+  const CloudOcclusionResult poc_library = compute_cloud_occlusion(cloud, grid, {}, poc);
+  const double poc_library_seconds = seconds_since(start);
+  start = std::chrono::steady_clock::now();
+  const ScanResult scan_library = scan_cloud(cloud, pattern, scan);
+  const double scan_library_seconds = seconds_since(start);
+
+  // -poc: hit or miss, and where.
+  std::vector<std::uint8_t> ours_hit(np), theirs_hit(np);
+  std::size_t only_ours = 0, only_theirs = 0, both = 0, same_t = 0, same_point = 0;
+  double worst_t = 0.0;
+  for (std::size_t i = 0; i < np; ++i) {
+    ours_hit[i] = our_hits[i].has_value();
+    theirs_hit[i] = their_hits[i].has_value();
+    only_ours += ours_hit[i] && !theirs_hit[i];
+    only_theirs += theirs_hit[i] && !ours_hit[i];
+    if (!ours_hit[i] || !theirs_hit[i]) continue;
+    ++both;
+    const double a = our_hits[i]->t_hit, b = their_hits[i]->t_hit;
+    const double relative = std::abs(a - b) / std::max({std::abs(a), std::abs(b), 1e-30});
+    worst_t = std::max(worst_t, relative);
+    same_t += relative <= kTTolerance;
+    same_point += our_hits[i]->primitive_id == their_hits[i]->primitive_id;
+  }
+  // -fscan: blocked or not.
+  std::size_t scan_ours = 0, scan_theirs = 0, scan_only_ours = 0, scan_only_theirs = 0;
+  for (std::size_t i = 0; i < ns; ++i) {
+    scan_ours += our_blocked[i];
+    scan_theirs += their_blocked[i];
+    scan_only_ours += our_blocked[i] && !their_blocked[i];
+    scan_only_theirs += their_blocked[i] && !our_blocked[i];
+  }
+  const auto percent = [](std::size_t k, std::size_t n) {
+    return n > 0 ? 100.0 * static_cast<double>(k) / static_cast<double>(n) : 100.0;
+  };
+  std::size_t ours_hits = 0, theirs_hits = 0;
+  for (std::size_t i = 0; i < np; ++i) {
+    ours_hits += ours_hit[i];
+    theirs_hits += theirs_hit[i];
+  }
+
+  std::printf("bench_poc: furnished room sampled as points, seed %llu, %u thread(s), best of %d\n",
+              static_cast<unsigned long long>(o.seed), o.threads, kRepetitions);
+  std::printf(
+      "cloud    %s points of %s triangles (generated in %.3f s), radius %g; binary PCD %.1f MiB, "
+      "read in %.3f s\n",
+      grouped(cloud.size()).c_str(), grouped(triangles).c_str(), generate_seconds, kPointRadius,
+      mib(static_cast<std::size_t>(fs::file_size(cloud_path))), read_seconds);
+  std::printf("poc      %zu grid viewpoints x %s rays = %s rays, closest hit\n", grid.size(),
+              grouped(o.rays_per_vp).c_str(), grouped(np).c_str());
+  std::printf("fscan    pattern %d: %zu viewpoints x %s points = %s shadow rays, any hit\n\n",
+              kPattern, pattern.size(), grouped(cloud.size()).c_str(), grouped(ns).c_str());
+  const std::string embree_name = "embree " + EmbreePoints::version() + " SPHERE_POINT";
+  std::printf("%-48s %10s %10s %12s %10s\n", "", "build (s)", "trace (s)", "rays/s", "hit");
+  const auto row = [](const std::string& what, double build, double trace, std::size_t rays,
+                      double hit_percent) {
+    std::printf("%-48s %10.4f %10.4f %10.2f M %9.3f%%\n", what.c_str(), build, trace,
+                static_cast<double>(rays) / trace / 1e6, hit_percent);
+  };
+  row("poc   ours   SphereOctree intersect_batch", our_build, our_poc, np, percent(ours_hits, np));
+  row("poc   " + embree_name + " rtcIntersect1", embree_build, embree_poc, np,
+      percent(theirs_hits, np));
+  row("fscan ours   SphereOctree occluded_batch", our_build, our_scan, ns, percent(scan_ours, ns));
+  row("fscan " + embree_name + " rtcOccluded1", embree_build, embree_scan, ns,
+      percent(scan_theirs, ns));
+
+  const OctreeStats& s = tree->stats();
+  std::printf("\noctree   %s inner nodes, %s leaves, depth %d, largest leaf %zu, %.1f MiB\n",
+              grouped(s.inner_nodes).c_str(), grouped(s.leaves).c_str(), s.depth, s.largest_leaf,
+              mib(s.memory_bytes));
+  std::printf(
+      "poc      hit/miss agree on %.4f%% of rays (%zu hit only for us, %zu only for Embree); of "
+      "%s common hits, t within %g relative on %.4f%% (largest difference %.2g), same point on "
+      "%.4f%%\n",
+      percent(np - only_ours - only_theirs, np), only_ours, only_theirs, grouped(both).c_str(),
+      kTTolerance, percent(same_t, both), worst_t, percent(same_point, both));
+  std::printf(
+      "fscan    flags agree on %.4f%% of rays: %zu blocked only for us, %zu only for Embree\n",
+      percent(ns - scan_only_ours - scan_only_theirs, ns), scan_only_ours, scan_only_theirs);
+  std::printf("level    poc occlusion level: ours %.6f, embree %.6f, compute_cloud_occlusion %.6f",
+              poc_level_from_hits(ours_hit.data(), np), poc_level_from_hits(theirs_hit.data(), np),
+              poc_library.occlusion_level);
+  if (poc_cli.json.isMember("occlusion_level")) {
+    std::printf(", CLI %.6f", poc_cli.json["occlusion_level"].asDouble());
+  }
+  std::printf("\n         fscan visible fraction: ours %.6f, embree %.6f, scan_cloud %.6f",
+              visible_fraction_from_flags(scan_rays, our_blocked.data()),
+              visible_fraction_from_flags(scan_rays, their_blocked.data()),
+              scan_library.visible_fraction);
+  if (scan_cli.json.isMember("visible_fraction")) {
+    std::printf(", CLI %.6f", scan_cli.json["visible_fraction"].asDouble());
+  }
+  std::printf(
+      "\nlibrary  compute_cloud_occlusion %.3f s (build %.3f, trace %.3f); scan_cloud %.3f s "
+      "(build %.3f, trace %.3f)\n",
+      poc_library_seconds, poc_library.build_seconds, poc_library.trace_seconds,
+      scan_library_seconds, scan_library.build_seconds, scan_library.trace_seconds);
+  if (poc_cli.json.isMember("timings")) {
+    std::printf("CLI      -poc   %s\n", cli_timings(poc_cli.json).c_str());
+  }
+  if (scan_cli.json.isMember("timings")) {
+    std::printf("CLI      -fscan %s\n", cli_timings(scan_cli.json).c_str());
+  }
+
+  std::printf("\npoc ours/embree throughput: %.2f\n", embree_poc / our_poc);
+  std::printf("fscan ours/embree throughput: %.2f\n", embree_scan / our_scan);
+  const bool poc_ok = print_end_to_end("poc", poc_cli, true);
+  const bool scan_ok = print_end_to_end("fscan", scan_cli, false);
+  return poc_ok && scan_ok ? 0 : 1;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options options;
+  try {
+    options = parse(argc, argv);
+  } catch (const UsageError& e) {
+    std::fprintf(stderr, "bench_poc: %s\n%s", e.what(), kUsage);
+    return 2;
+  }
+  try {
+    return run(options);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "bench_poc: %s\n", e.what());
+    return 1;
+  }
+}

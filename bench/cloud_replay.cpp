@@ -1,0 +1,84 @@
+#include "cloud_replay.hpp"
+
+#include <limits>
+
+#include "moc_replay.hpp"
+#include "occlusion/analysis/mesh_sampling.hpp"
+#include "occlusion/analysis/sphere_directions.hpp"
+
+namespace occlusion::bench {
+
+PointCloud sample_point_cloud(const TriangleMesh& mesh, std::size_t points, std::uint64_t seed) {
+  const MeshSamples samples = sample_mesh(mesh, samples_per_unit_area_for(mesh, points), seed);
+  PointCloud cloud;
+  cloud.positions.reserve(samples.size());
+  for (const Eigen::Vector3d& p : samples.points) cloud.positions.push_back(p.cast<float>());
+  return cloud;
+}
+
+std::vector<Ray> make_poc_rays(const std::vector<Eigen::Vector3d>& viewpoints,
+                               const CloudOcclusionOptions& options) {
+  const std::size_t per_view = options.num_rays_per_vp;
+  std::vector<Ray> rays(per_view * viewpoints.size());
+  for (std::size_t v = 0; v < viewpoints.size(); ++v) {
+    const SphereDirections directions(options.sampling, per_view, options.seed, v);
+    for (std::size_t k = 0; k < per_view; ++k) {
+      // Formed in double and rounded once, as the analysis does.
+      const Eigen::Vector3d d = directions(k);
+      Ray& ray = rays[v * per_view + k];
+      ray.origin = (viewpoints[v] + options.light_radius * d).cast<float>();
+      ray.direction = d.cast<float>();
+      ray.t_min = 0.0f;
+      ray.t_max = std::numeric_limits<float>::infinity();
+    }
+  }
+  return rays;
+}
+
+double poc_level_from_hits(const std::uint8_t* hit, std::size_t count) {
+  std::size_t misses = 0;
+  for (std::size_t i = 0; i < count; ++i) misses += hit[i] ? 0 : 1;
+  return count > 0 ? static_cast<double>(misses) / static_cast<double>(count) : 0.0;
+}
+
+ScanRays make_scan_rays(const PointCloud& cloud, const std::vector<Eigen::Vector3d>& viewpoints,
+                        const ScanOptions& options) {
+  const double radius = options.point_radius;
+  const double tolerance = options.self_tolerance < 0.0 ? 2.0 * radius : options.self_tolerance;
+  const double near_viewpoint = 2.0 * radius;
+  ScanRays out;
+  out.points = cloud.size();
+  out.viewpoints = viewpoints.size();
+  out.rays.resize(out.points * out.viewpoints);
+  out.ignore.resize(out.rays.size());
+  for (std::size_t v = 0; v < out.viewpoints; ++v) {
+    for (std::size_t i = 0; i < out.points; ++i) {
+      const Eigen::Vector3d direction = cloud.positions[i].cast<double>() - viewpoints[v];
+      const double length = direction.norm();
+      Ray& ray = out.rays[v * out.points + i];
+      ray.origin = viewpoints[v].cast<float>();
+      ray.direction = direction.cast<float>();
+      out.ignore[v * out.points + i] = static_cast<PrimitiveId>(i);
+      if (length > near_viewpoint + tolerance) {
+        ray.t_min = static_cast<float>(near_viewpoint / length);
+        ray.t_max = static_cast<float>(1.0 - tolerance / length);
+      } else {
+        ray.t_min = 1.0f;
+        ray.t_max = 0.0f;
+      }
+    }
+  }
+  return out;
+}
+
+double visible_fraction_from_flags(const ScanRays& scan, const std::uint8_t* blocked) {
+  std::vector<std::uint8_t> seen(scan.points, 0);
+  for (std::size_t r = 0; r < scan.rays.size(); ++r) {
+    if (!blocked[r]) seen[r % scan.points] = 1;
+  }
+  std::size_t visible = 0;
+  for (const std::uint8_t s : seen) visible += s;
+  return scan.points > 0 ? static_cast<double>(visible) / static_cast<double>(scan.points) : 0.0;
+}
+
+}  // namespace occlusion::bench

@@ -1,0 +1,66 @@
+#pragma once
+// The `cloud_occlusion` job (-poc): occlusion ray ratio of a point cloud from
+// spherical light sources at the viewpoints, with openings, and optionally the
+// exterior-structure variant and the interior/exterior point ratio.
+
+#include <json/value.h>
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "occlusion/analysis/cloud_occlusion.hpp"
+#include "occlusion/app/config.hpp"
+#include "occlusion/app/viewpoint_choice.hpp"
+
+namespace occlusion {
+
+struct CloudOcclusionRequest {
+  std::string path;
+  ViewpointChoice viewpoints = ViewpointChoice::from_grid(9);
+  std::uint64_t num_rays_per_vp = 30000;
+  double point_radius = 0.01;
+  std::string polygon_path;  // openings file; empty = none
+  double octree_resolution = 0.0;
+  bool enable_acceleration = true;
+  std::string sampling = "uniform";  // or "fibonacci"
+  double light_radius = 0.0;
+  bool exterior = false;  // also compute the exterior-structure variant
+  std::vector<std::string> exterior_classes = {"wall", "floor", "ceiling"};
+  bool skip_bad_lines = false;
+  std::uint64_t seed = 0;
+  unsigned threads = 0;
+  std::string out;
+};
+
+struct ExteriorReport {
+  CloudOcclusionResult result;
+  std::size_t exterior_points = 0;
+  std::size_t interior_points = 0;
+  double interior_exterior_ratio = 0.0;
+};
+
+struct CloudOcclusionReport {
+  CloudOcclusionRequest request;
+  CloudOcclusionResult result;
+  std::optional<ExteriorReport> exterior;
+  std::vector<std::string> viewpoint_names;
+  std::size_t openings = 0;
+  std::size_t dropped_nan = 0;
+  std::size_t skipped_lines = 0;
+  std::vector<std::string> outputs;
+  std::vector<std::string> warnings;
+  double load_seconds = 0.0;
+  double total_seconds = 0.0;
+};
+
+void validate(const CloudOcclusionRequest& request);
+// Copies the config's `occlusion.point_cloud` section into the request.
+void apply_config(const Config& config, CloudOcclusionRequest& request);
+CloudOcclusionReport run_cloud_occlusion(const CloudOcclusionRequest& request,
+                                         const Progress& progress = {});
+// Headline: occlusion_level.
+Json::Value to_json(const CloudOcclusionReport& report);
+
+}  // namespace occlusion

@@ -1,0 +1,57 @@
+#pragma once
+// The `scan` job (-fscan): keep the points of a full cloud that the
+// viewpoints really see, all attributes kept.
+
+#include <json/value.h>
+
+#include <string>
+#include <vector>
+
+#include "occlusion/analysis/scan.hpp"
+#include "occlusion/app/config.hpp"
+#include "occlusion/app/viewpoint_choice.hpp"
+
+namespace occlusion {
+
+struct ScanRequest {
+  std::string path;
+  ViewpointChoice viewpoints = ViewpointChoice::from_pattern(7);
+  double point_radius = 0.01;
+  double self_tolerance = -1.0;  // negative: 2 * point_radius
+  double octree_resolution = 0.0;
+  bool enable_acceleration = true;
+  std::string format = "ply";  // of the written clouds: ply or pcd
+  bool skip_bad_lines = false;
+  unsigned threads = 0;
+  std::string out;
+};
+
+struct ClassVisibility {
+  std::string name;
+  std::size_t points = 0;
+  std::size_t visible = 0;
+  double visible_fraction = 0.0;
+};
+
+struct ScanReport {
+  ScanRequest request;
+  ScanResult result;
+  std::vector<std::string> viewpoint_names;
+  std::vector<Eigen::Vector3d> viewpoint_positions;
+  std::vector<ClassVisibility> classes;  // empty for unlabelled clouds
+  std::size_t dropped_nan = 0;
+  std::size_t skipped_lines = 0;
+  std::vector<std::string> outputs;
+  std::vector<std::string> warnings;
+  double load_seconds = 0.0;
+  double total_seconds = 0.0;
+};
+
+void validate(const ScanRequest& request);
+// Copies the config's `occlusion.point_cloud` section into the request.
+void apply_config(const Config& config, ScanRequest& request);
+ScanReport run_scan(const ScanRequest& request, const Progress& progress = {});
+// Headline: visible_fraction.
+Json::Value to_json(const ScanReport& report);
+
+}  // namespace occlusion

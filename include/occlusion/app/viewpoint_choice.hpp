@@ -1,0 +1,39 @@
+#pragma once
+// How a job's viewpoints are chosen, shared by every job that has them:
+// explicit points, a pattern (1..7, viewpoints.hpp), or num_vp points on a
+// grid (grid_viewpoints). Exactly one is in force.
+
+#include <json/value.h>
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+namespace occlusion {
+
+struct ViewpointChoice {
+  enum class Kind { kPoints, kPattern, kGrid };
+  Kind kind = Kind::kPattern;
+  std::vector<Eigen::Vector3d> points;
+  int pattern = 7;
+  std::size_t grid_count = 9;
+
+  static ViewpointChoice from_points(std::vector<Eigen::Vector3d> points);
+  static ViewpointChoice from_pattern(int pattern);
+  static ViewpointChoice from_grid(std::size_t count);
+
+  // Throws UsageError naming the option at fault.
+  void validate() const;
+
+  struct Resolved {
+    std::vector<Eigen::Vector3d> positions;
+    std::vector<std::string> names;
+  };
+  // Positions for a scene with bounding box [lo, hi].
+  Resolved resolve(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi) const;
+
+  // {"pattern": 7} or {"num_vp": 9} or {"viewpoints": [[x,y,z], ...]}
+  Json::Value to_json() const;
+};
+
+}  // namespace occlusion

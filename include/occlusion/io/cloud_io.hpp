@@ -1,0 +1,90 @@
+#pragma once
+// Point clouds in and out: PCD, PLY, plain text and S3DIS folders, all into the
+// one PointCloud type (core/point_cloud.hpp). The formats are described in
+// docs/formats.md.
+//
+// read_cloud chooses the reader by what `path` is:
+//   .pcd                ascii, binary or binary_compressed (PCL); fields x y z,
+//                       rgb/rgba (packed) or r g b, label, instance or object
+//   .ply                ascii, binary_little_endian or binary_big_endian; vertex
+//                       x y z, red green blue, label or class, instance or object;
+//                       `comment class <id> <name>` header lines give class names
+//   .txt .xyz .pts      `x y z`, `x y z label`, `x y z r g b` or `x y z r g b label`,
+//                       the same column count on every line; `#` and `//` lines
+//                       are comments
+//   a directory         an S3DIS room (<room>/Annotations/<class>_<k>.txt) or an
+//                       S3DIS Area (a directory of rooms, concatenated)
+// Points with a NaN or infinite coordinate (organised Kinect frames mark missing
+// depth that way) are dropped and counted in CloudReadReport::dropped_nan.
+// Properties the cloud has no slot for (PLY and PCD) are returned in the report.
+//
+// Every malformed input is an InputError naming the file and the 1-based line,
+// or the byte offset for binary data: truncated data, a header whose counts
+// disagree with the data, a non-numeric token, a column count that changes, an
+// unknown S3DIS class, and a file with no points at all.
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "occlusion/core/point_cloud.hpp"
+
+namespace occlusion {
+
+// One per-point value beside the cloud: written after the cloud's own fields,
+// and read back from properties the cloud has no slot for.
+struct ScalarField {
+  std::string name;
+  std::vector<float> values;  // one per point
+  bool integer = false;       // stored as int32 (values must then be whole numbers)
+};
+
+struct CloudReadOptions {
+  // Real S3DIS files have a few corrupt lines (Area_5/hallway_6 has a stray
+  // 0x10 byte). When set, a text line that does not parse is skipped and
+  // counted instead of being an error. Binary formats are never skipped over.
+  bool skip_bad_lines = false;
+};
+
+struct CloudReadReport {
+  std::size_t dropped_nan = 0;     // points dropped for a non-finite coordinate
+  std::size_t skipped_lines = 0;   // bad text lines skipped (skip_bad_lines)
+  std::vector<std::string> rooms;  // S3DIS room folder names, in reading order
+  // PLY and PCD properties other than those the cloud holds, in file order,
+  // one value per kept point (points dropped for NaN are dropped here too).
+  std::vector<ScalarField> extra_fields;
+};
+
+// Throws InputError as described above. `report`, when given, is filled in
+// (counts are added to what it already holds, rooms and fields appended).
+PointCloud read_cloud(const std::string& path, const CloudReadOptions& options = {},
+                      CloudReadReport* report = nullptr);
+
+enum class CloudFormat { kPcdBinaryCompressed, kPcdBinary, kPcdAscii, kPlyBinary, kPlyAscii };
+
+// Writes x y z (float), the colour (PCD: packed float `rgb`, as PCL does; PLY:
+// uchar red green blue), `label` and int32 `instance` when the cloud has them,
+// then `extra` in order (int32 when integer, else float). `label` is int32 in
+// PLY and uint32 in PCD, the type PCL's PointXYZL and PointXYZRGBL insist on
+// (-1 is stored as 0xFFFFFFFF and read back as -1). Class names are kept
+// as `class <id> <name>` header comments, which read_cloud restores (PCL and
+// other readers skip them). The format defaults to the extension's: .pcd is
+// binary_compressed, .ply binary little-endian. Floats in ascii files are
+// written with the fewest digits that read back exactly.
+//
+// std::invalid_argument for an invalid cloud (PointCloud::validate), an extra
+// field whose size differs from the point count, whose name is not an
+// identifier or is already used, or an integer field with a non-whole value;
+// for no format and an extension other than .pcd or .ply, or a format that
+// contradicts the extension. OutputError if the file cannot be written. Written
+// atomically (atomic_file.hpp).
+void write_cloud(const std::string& path, const PointCloud& cloud,
+                 const std::vector<ScalarField>& extra = {},
+                 std::optional<CloudFormat> format = {});
+
+// The 13 S3DIS classes; a label is an index into this list: ceiling, floor,
+// wall, beam, column, window, door, table, chair, sofa, bookcase, board, clutter.
+const std::vector<std::string>& s3dis_class_names();
+
+}  // namespace occlusion

@@ -1,0 +1,176 @@
+#include "occlusion/analysis/cloud_occlusion.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <stdexcept>
+
+#include "occlusion/core/parallel.hpp"
+#include "occlusion/core/sphere_octree.hpp"
+
+namespace occlusion {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// Per-ray state lives only for one block, so memory does not grow with the
+// number of rays; a block is still large enough to keep every core busy.
+constexpr std::size_t kRaysPerBlock = std::size_t{1} << 15;
+constexpr std::size_t kClassifyGrain = 1024;
+
+enum RayClass : std::uint8_t { kHit, kThroughOpening, kOcclusion };
+
+void check_inputs(const PointCloud& cloud, const std::vector<Eigen::Vector3d>& viewpoints,
+                  const CloudOcclusionOptions& options) {
+  cloud.validate();
+  if (cloud.size() == 0) throw std::invalid_argument("cloud occlusion: the cloud has no points");
+  if (viewpoints.empty()) throw std::invalid_argument("cloud occlusion: no viewpoints given");
+  for (const auto& vp : viewpoints) {
+    if (!vp.allFinite()) throw std::invalid_argument("cloud occlusion: a viewpoint is not finite");
+  }
+  if (!std::isfinite(options.point_radius) || options.point_radius <= 0.0) {
+    throw std::invalid_argument("cloud occlusion: point_radius must be a finite number > 0");
+  }
+  if (options.num_rays_per_vp == 0) {
+    throw std::invalid_argument("cloud occlusion: num_rays_per_vp must be > 0");
+  }
+  if (!std::isfinite(options.light_radius) || options.light_radius < 0.0) {
+    throw std::invalid_argument("cloud occlusion: light_radius must be a finite number >= 0");
+  }
+  if (!options.blocking.empty() && options.blocking.size() != cloud.size()) {
+    throw std::invalid_argument("cloud occlusion: the blocking mask has " +
+                                std::to_string(options.blocking.size()) + " entries for " +
+                                std::to_string(cloud.size()) + " points");
+  }
+}
+
+// Only blocking points go into the tree: the others must not stop rays, and
+// the result needs no hit ids, so they need not be mapped back.
+std::vector<Eigen::Vector3f> blocking_positions(const PointCloud& cloud,
+                                                const std::vector<bool>& blocking) {
+  if (blocking.empty()) return cloud.positions;
+  std::vector<Eigen::Vector3f> kept;
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    if (blocking[i]) kept.push_back(cloud.positions[i]);
+  }
+  return kept;
+}
+
+// A ray that hit a point may still have left the room first, through an
+// opening in front of that point.
+RayClass classify(const Ray& ray, const std::optional<Hit>& hit,
+                  const std::vector<PlanarPolygon>& openings) {
+  Ray before_hit = ray;
+  if (hit) before_hit.t_max = hit->t_hit;
+  for (const PlanarPolygon& opening : openings) {
+    if (opening.intersect(before_hit)) return kThroughOpening;
+  }
+  return hit ? kHit : kOcclusion;
+}
+
+}  // namespace
+
+CloudOcclusionResult compute_cloud_occlusion(const PointCloud& cloud,
+                                             const std::vector<Eigen::Vector3d>& viewpoints,
+                                             const std::vector<PlanarPolygon>& openings,
+                                             const CloudOcclusionOptions& options,
+                                             const Progress& progress) {
+  check_inputs(cloud, viewpoints, options);
+  CloudOcclusionResult result;
+
+  auto start = Clock::now();
+  progress("building octree", 0.0);
+  const SphereOctree tree(make_spheres(blocking_positions(cloud, options.blocking),
+                                       static_cast<float>(options.point_radius)),
+                          options.octree);
+  result.build_seconds = seconds_since(start);
+  result.octree = tree.stats();
+  result.points = cloud.size();
+  result.blocking_points = tree.size();
+  progress.check_cancel();
+
+  start = Clock::now();
+  const std::size_t per_view = options.num_rays_per_vp;
+  const std::size_t ray_count = per_view * viewpoints.size();
+  std::vector<SphereDirections> directions;
+  result.viewpoints.resize(viewpoints.size());
+  for (std::size_t v = 0; v < viewpoints.size(); ++v) {
+    directions.emplace_back(options.sampling, per_view, options.seed, v);
+    result.viewpoints[v].position = viewpoints[v];
+  }
+
+  std::vector<Ray> rays;
+  std::vector<std::optional<Hit>> hits;
+  std::vector<RayClass> classes;
+  progress("tracing", 0.0);
+  for (std::size_t block = 0; block < ray_count; block += kRaysPerBlock) {
+    const std::size_t block_size = std::min(ray_count, block + kRaysPerBlock) - block;
+    rays.resize(block_size);
+    hits.resize(block_size);
+    classes.resize(block_size);
+    parallel_for(block_size, kClassifyGrain, options.threads, [&](std::size_t b, std::size_t e) {
+      for (std::size_t i = b; i < e; ++i) {
+        const std::size_t r = block + i;
+        const std::size_t v = r / per_view;
+        const Eigen::Vector3d d = directions[v](r % per_view);
+        rays[i].origin = (viewpoints[v] + options.light_radius * d).cast<float>();
+        rays[i].direction = d.cast<float>();
+        rays[i].t_min = 0.0f;
+        rays[i].t_max = std::numeric_limits<float>::infinity();
+      }
+    });
+    tree.intersect_batch(rays.data(), block_size, nullptr, hits.data(), options.threads);
+    parallel_for(block_size, kClassifyGrain, options.threads, [&](std::size_t b, std::size_t e) {
+      for (std::size_t i = b; i < e; ++i) classes[i] = classify(rays[i], hits[i], openings);
+    });
+    // Counted in ray order on this thread: escape directions keep a fixed order.
+    for (std::size_t i = 0; i < block_size; ++i) {
+      ViewpointRays& view = result.viewpoints[(block + i) / per_view];
+      switch (classes[i]) {
+        case kHit:
+          ++view.hits;
+          break;
+        case kThroughOpening:
+          ++view.through_openings;
+          break;
+        case kOcclusion:
+          ++view.occlusion_rays;
+          if (options.keep_escape_directions) {
+            view.escape_directions.push_back(rays[i].direction);
+          }
+          break;
+      }
+    }
+    progress.check_cancel();
+    progress("tracing", static_cast<double>(block + block_size) / static_cast<double>(ray_count));
+  }
+  result.trace_seconds = seconds_since(start);
+
+  for (ViewpointRays& view : result.viewpoints) {
+    view.rays = per_view;
+    view.occlusion_level = static_cast<double>(view.occlusion_rays) / static_cast<double>(per_view);
+    result.rays += view.rays;
+    result.hits += view.hits;
+    result.through_openings += view.through_openings;
+    result.occlusion_rays += view.occlusion_rays;
+  }
+  result.occlusion_level =
+      static_cast<double>(result.occlusion_rays) / static_cast<double>(result.rays);
+  progress("done", 1.0);
+  return result;
+}
+
+double interior_exterior_ratio(const std::vector<bool>& exterior) {
+  const auto outside = static_cast<std::size_t>(std::count(exterior.begin(), exterior.end(), true));
+  if (outside == 0) return std::numeric_limits<double>::infinity();
+  return static_cast<double>(exterior.size() - outside) / static_cast<double>(outside);
+}
+
+}  // namespace occlusion

@@ -1,0 +1,125 @@
+#include "occlusion/analysis/scan.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "occlusion/core/parallel.hpp"
+#include "occlusion/core/sphere_octree.hpp"
+
+namespace occlusion {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// Blocks bound the per-ray memory and set how often progress and cancel are checked.
+constexpr std::size_t kRaysPerBlock = std::size_t{1} << 16;
+constexpr std::size_t kRayGrain = 2048;
+
+void check_inputs(const PointCloud& cloud, const std::vector<Eigen::Vector3d>& viewpoints,
+                  const ScanOptions& options) {
+  cloud.validate();
+  if (cloud.size() == 0) throw std::invalid_argument("scan: the cloud has no points");
+  if (viewpoints.empty()) throw std::invalid_argument("scan: no viewpoints given");
+  if (viewpoints.size() > std::numeric_limits<std::uint16_t>::max()) {
+    throw std::invalid_argument("scan: at most 65535 viewpoints, got " +
+                                std::to_string(viewpoints.size()));
+  }
+  for (const auto& vp : viewpoints) {
+    if (!vp.allFinite()) throw std::invalid_argument("scan: a viewpoint is not finite");
+  }
+  if (!std::isfinite(options.point_radius) || options.point_radius <= 0.0) {
+    throw std::invalid_argument("scan: point_radius must be a finite number > 0");
+  }
+  if (std::isnan(options.self_tolerance) || std::isinf(options.self_tolerance)) {
+    throw std::invalid_argument("scan: self_tolerance must be a finite number");
+  }
+}
+
+}  // namespace
+
+ScanResult scan_cloud(const PointCloud& cloud, const std::vector<Eigen::Vector3d>& viewpoints,
+                      const ScanOptions& options, const Progress& progress) {
+  check_inputs(cloud, viewpoints, options);
+  ScanResult result;
+  const double radius = options.point_radius;
+  const double tolerance = options.self_tolerance < 0.0 ? 2.0 * radius : options.self_tolerance;
+  // Any sphere holding the viewpoint ends within 2 r of it, so ignoring that
+  // much of each ray lets a viewpoint placed inside (or on) a point see out.
+  const double near_viewpoint = 2.0 * radius;
+
+  auto start = Clock::now();
+  progress("building octree", 0.0);
+  const SphereOctree tree(make_spheres(cloud.positions, static_cast<float>(radius)),
+                          options.octree);
+  result.build_seconds = seconds_since(start);
+  result.octree = tree.stats();
+  progress.check_cancel();
+
+  start = Clock::now();
+  const std::size_t points = cloud.size();
+  const std::size_t ray_count = points * viewpoints.size();
+  result.visible_count.assign(points, 0);
+  result.seen_by_viewpoint.assign(viewpoints.size(), 0);
+  std::vector<Ray> rays;
+  std::vector<PrimitiveId> ignore;
+  std::vector<std::uint8_t> blocked;
+  progress("tracing", 0.0);
+  // Viewpoint-major order: neighbouring rays go to neighbouring points, which
+  // keeps a thread's traversals in the same part of the tree.
+  for (std::size_t block = 0; block < ray_count; block += kRaysPerBlock) {
+    const std::size_t block_size = std::min(ray_count, block + kRaysPerBlock) - block;
+    rays.resize(block_size);
+    ignore.resize(block_size);
+    blocked.resize(block_size);
+    parallel_for(block_size, kRayGrain, options.threads, [&](std::size_t b, std::size_t e) {
+      for (std::size_t i = b; i < e; ++i) {
+        const std::size_t r = block + i;
+        const std::size_t point = r % points;
+        const Eigen::Vector3d& viewpoint = viewpoints[r / points];
+        const Eigen::Vector3d direction = cloud.positions[point].cast<double>() - viewpoint;
+        const double length = direction.norm();
+        Ray& ray = rays[i];
+        ray.origin = viewpoint.cast<float>();
+        ray.direction = direction.cast<float>();
+        ignore[i] = static_cast<PrimitiveId>(point);
+        if (length > near_viewpoint + tolerance) {
+          ray.t_min = static_cast<float>(near_viewpoint / length);
+          ray.t_max = static_cast<float>(1.0 - tolerance / length);
+        } else {
+          // Too close to the viewpoint to be hidden: an empty interval, which
+          // the octree answers with "not occluded" at once.
+          ray.t_min = 1.0f;
+          ray.t_max = 0.0f;
+        }
+      }
+    });
+    tree.occluded_batch(rays.data(), block_size, ignore.data(), blocked.data(), options.threads);
+    for (std::size_t i = 0; i < block_size; ++i) {
+      if (blocked[i]) continue;
+      const std::size_t r = block + i;
+      ++result.visible_count[r % points];
+      ++result.seen_by_viewpoint[r / points];
+    }
+    progress.check_cancel();
+    progress("tracing", static_cast<double>(block + block_size) / static_cast<double>(ray_count));
+  }
+  result.trace_seconds = seconds_since(start);
+
+  result.visible_points = static_cast<std::size_t>(
+      std::count_if(result.visible_count.begin(), result.visible_count.end(),
+                    [](std::uint16_t count) { return count > 0; }));
+  result.visible_fraction =
+      static_cast<double>(result.visible_points) / static_cast<double>(points);
+  progress("done", 1.0);
+  return result;
+}
+
+}  // namespace occlusion

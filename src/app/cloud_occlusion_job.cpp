@@ -1,0 +1,251 @@
+#include "occlusion/app/cloud_occlusion_job.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+
+#include "job_support.hpp"
+#include "occlusion/app/errors.hpp"
+#include "occlusion/app/json_output.hpp"
+#include "occlusion/io/atomic_file.hpp"
+#include "occlusion/io/cloud_io.hpp"
+#include "occlusion/io/input_error.hpp"
+#include "occlusion/io/polygon_file.hpp"
+
+namespace occlusion {
+
+namespace {
+
+DirectionSampling parse_sampling(const std::string& name) {
+  if (name == "uniform") return DirectionSampling::kUniform;
+  if (name == "fibonacci") return DirectionSampling::kFibonacci;
+  throw UsageError("--sampling must be uniform or fibonacci, got '" + name + "'");
+}
+
+// Which points are exterior structure: those whose class is in `classes`.
+std::vector<bool> exterior_mask(const PointCloud& cloud, const std::vector<std::string>& classes,
+                                const std::string& path) {
+  if (!cloud.has_labels() || cloud.class_names.empty()) {
+    throw UsageError("--exterior needs a labelled cloud with class names; " + path +
+                     " has none (use an S3DIS folder, or a PLY written by -recon)");
+  }
+  std::vector<bool> is_exterior_class(cloud.class_names.size(), false);
+  for (const auto& name : classes) {
+    const auto it = std::find(cloud.class_names.begin(), cloud.class_names.end(), name);
+    if (it == cloud.class_names.end()) {
+      std::string known;
+      for (const auto& n : cloud.class_names) known += (known.empty() ? "" : ", ") + n;
+      throw UsageError("--exterior-classes: no class '" + name + "' in " + path +
+                       " (classes: " + known + ")");
+    }
+    is_exterior_class[static_cast<std::size_t>(it - cloud.class_names.begin())] = true;
+  }
+  std::vector<bool> mask(cloud.size(), false);
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    const std::int32_t label = cloud.labels[i];
+    mask[i] = label >= 0 && is_exterior_class[static_cast<std::size_t>(label)];
+  }
+  return mask;
+}
+
+void write_escapes(const std::string& path, const CloudOcclusionResult& result) {
+  write_file_atomically(path, [&](std::ostream& out) {
+    out << "viewpoint,dx,dy,dz\n" << std::setprecision(7);
+    for (std::size_t v = 0; v < result.viewpoints.size(); ++v) {
+      for (const auto& d : result.viewpoints[v].escape_directions) {
+        out << v << ',' << d.x() << ',' << d.y() << ',' << d.z() << '\n';
+      }
+    }
+  });
+}
+
+Json::Value result_json(const CloudOcclusionResult& r, const std::vector<std::string>& names) {
+  Json::Value json(Json::objectValue);
+  json["occlusion_level"] = r.occlusion_level;
+  json["rays"] = Json::UInt64(r.rays);
+  json["hits"] = Json::UInt64(r.hits);
+  json["through_openings"] = Json::UInt64(r.through_openings);
+  json["occlusion_rays"] = Json::UInt64(r.occlusion_rays);
+  json["blocking_points"] = Json::UInt64(r.blocking_points);
+  Json::Value viewpoints(Json::arrayValue);
+  for (std::size_t v = 0; v < r.viewpoints.size(); ++v) {
+    const ViewpointRays& vp = r.viewpoints[v];
+    Json::Value entry = job::viewpoint_json(names.at(v), vp.position);
+    entry["occlusion_level"] = vp.occlusion_level;
+    entry["rays"] = Json::UInt64(vp.rays);
+    entry["hits"] = Json::UInt64(vp.hits);
+    entry["through_openings"] = Json::UInt64(vp.through_openings);
+    entry["occlusion_rays"] = Json::UInt64(vp.occlusion_rays);
+    viewpoints.append(entry);
+  }
+  json["viewpoints"] = viewpoints;
+  return json;
+}
+
+}  // namespace
+
+void validate(const CloudOcclusionRequest& request) {
+  if (request.path.empty()) {
+    throw UsageError("no cloud given (-poc CLOUD or occlusion.point_cloud.path)");
+  }
+  request.viewpoints.validate();
+  if (request.num_rays_per_vp == 0 || request.num_rays_per_vp > 100'000'000) {
+    throw UsageError("--num-rays-per-vp must be 1..100000000");
+  }
+  if (!std::isfinite(request.point_radius) || request.point_radius <= 0.0) {
+    throw UsageError("--point-radius must be a number > 0");
+  }
+  if (!std::isfinite(request.octree_resolution) || request.octree_resolution < 0.0) {
+    throw UsageError("--octree-resolution must be a number >= 0");
+  }
+  if (!std::isfinite(request.light_radius) || request.light_radius < 0.0) {
+    throw UsageError("--light-radius must be a number >= 0");
+  }
+  parse_sampling(request.sampling);
+  if (request.exterior && request.exterior_classes.empty()) {
+    throw UsageError("--exterior-classes must name at least one class");
+  }
+}
+
+void apply_config(const Config& config, CloudOcclusionRequest& request) {
+  const ConfigSection section(config, "point_cloud");
+  section.read_path("path", request.path);
+  section.read_viewpoints(request.viewpoints);
+  section.read("num_rays_per_vp", request.num_rays_per_vp);
+  section.read("point_radius", request.point_radius);
+  section.read_path("polygon_path", request.polygon_path);
+  section.read("octree_resolution", request.octree_resolution);
+  section.read("enable_acceleration", request.enable_acceleration);
+  section.read("sampling", request.sampling);
+  section.read("light_radius", request.light_radius);
+  section.read("exterior", request.exterior);
+  section.read("exterior_classes", request.exterior_classes);
+  section.read("skip_bad_lines", request.skip_bad_lines);
+  section.read("seed", request.seed);
+  section.read("threads", request.threads);
+  section.read_path("out", request.out);
+}
+
+CloudOcclusionReport run_cloud_occlusion(const CloudOcclusionRequest& request,
+                                         const Progress& progress) {
+  validate(request);
+  const auto start = job::Clock::now();
+  CloudOcclusionReport report;
+  report.request = request;
+
+  progress("loading", 0.0);
+  CloudReadOptions read_options;
+  read_options.skip_bad_lines = request.skip_bad_lines;
+  CloudReadReport read_report;
+  const PointCloud cloud = read_cloud(request.path, read_options, &read_report);
+  report.dropped_nan = read_report.dropped_nan;
+  report.skipped_lines = read_report.skipped_lines;
+  std::vector<PlanarPolygon> openings;
+  if (!request.polygon_path.empty()) {
+    for (const auto& boundary : read_polygons(request.polygon_path)) {
+      try {
+        openings.emplace_back(boundary);
+      } catch (const std::invalid_argument& e) {
+        throw InputError(request.polygon_path, 0,
+                         "opening " + std::to_string(openings.size() + 1) + ": " + e.what());
+      }
+    }
+  }
+  report.openings = openings.size();
+  report.load_seconds = job::seconds_since(start);
+  progress.check_cancel();
+
+  const ViewpointChoice::Resolved viewpoints = job::resolve_for_cloud(request.viewpoints, cloud);
+  report.viewpoint_names = viewpoints.names;
+
+  CloudOcclusionOptions options;
+  options.point_radius = request.point_radius;
+  options.num_rays_per_vp = static_cast<std::size_t>(request.num_rays_per_vp);
+  options.sampling = parse_sampling(request.sampling);
+  options.light_radius = request.light_radius;
+  options.octree.min_cell_size = static_cast<float>(request.octree_resolution);
+  options.octree.enable_acceleration = request.enable_acceleration;
+  options.seed = request.seed;
+  options.threads = request.threads;
+  options.keep_escape_directions = !request.out.empty();
+  report.result = compute_cloud_occlusion(cloud, viewpoints.positions, openings, options, progress);
+
+  if (request.exterior) {
+    ExteriorReport exterior;
+    options.blocking = exterior_mask(cloud, request.exterior_classes, request.path);
+    exterior.exterior_points = static_cast<std::size_t>(
+        std::count(options.blocking.begin(), options.blocking.end(), true));
+    exterior.interior_points = cloud.size() - exterior.exterior_points;
+    exterior.interior_exterior_ratio = interior_exterior_ratio(options.blocking);
+    options.keep_escape_directions = false;
+    exterior.result =
+        compute_cloud_occlusion(cloud, viewpoints.positions, openings, options, progress);
+    report.exterior = exterior;
+  }
+
+  if (!request.out.empty()) {
+    ensure_directory(request.out);
+    const std::string json_path = job::output_path(request.out, request.path, ".poc.json");
+    const std::string escapes_path =
+        job::output_path(request.out, request.path, ".poc.escapes.csv");
+    write_escapes(escapes_path, report.result);
+    report.outputs = {json_path, escapes_path};
+    report.total_seconds = job::seconds_since(start);
+    const Json::Value json = to_json(report);
+    write_file_atomically(json_path, [&](std::ostream& out) { out << format_json(json) << '\n'; });
+  }
+  report.total_seconds = job::seconds_since(start);
+  return report;
+}
+
+Json::Value to_json(const CloudOcclusionReport& report) {
+  const CloudOcclusionRequest& q = report.request;
+  Json::Value json = result_json(report.result, report.viewpoint_names);
+  json["job"] = "cloud_occlusion";
+  json["input"] = q.path;
+  json["points"] = Json::UInt64(report.result.points);
+  json["openings"] = Json::UInt64(report.openings);
+  json["dropped_nan_points"] = Json::UInt64(report.dropped_nan);
+  json["skipped_lines"] = Json::UInt64(report.skipped_lines);
+  if (report.exterior) {
+    Json::Value exterior = result_json(report.exterior->result, report.viewpoint_names);
+    exterior["classes"] = to_json(q.exterior_classes);
+    exterior["exterior_points"] = Json::UInt64(report.exterior->exterior_points);
+    exterior["interior_points"] = Json::UInt64(report.exterior->interior_points);
+    json["exterior"] = exterior;
+    // JSON has no infinity: a cloud without exterior points has no ratio.
+    const double ratio = report.exterior->interior_exterior_ratio;
+    json["interior_exterior_ratio"] = std::isfinite(ratio) ? Json::Value(ratio) : Json::Value();
+  }
+
+  Json::Value parameters = q.viewpoints.to_json();
+  parameters["num_rays_per_vp"] = Json::UInt64(q.num_rays_per_vp);
+  parameters["point_radius"] = q.point_radius;
+  parameters["polygon_path"] = q.polygon_path;
+  parameters["octree_resolution"] = q.octree_resolution;
+  parameters["enable_acceleration"] = q.enable_acceleration;
+  parameters["sampling"] = q.sampling;
+  parameters["light_radius"] = q.light_radius;
+  parameters["seed"] = Json::UInt64(q.seed);
+  parameters["threads"] = q.threads;
+  json["parameters"] = parameters;
+
+  Json::Value octree(Json::objectValue);
+  octree["inner_nodes"] = Json::UInt64(report.result.octree.inner_nodes);
+  octree["leaves"] = Json::UInt64(report.result.octree.leaves);
+  octree["depth"] = report.result.octree.depth;
+  octree["memory_bytes"] = Json::UInt64(report.result.octree.memory_bytes);
+  json["octree"] = octree;
+
+  Json::Value timings(Json::objectValue);
+  timings["load_seconds"] = report.load_seconds;
+  timings["build_seconds"] = report.result.build_seconds;
+  timings["trace_seconds"] = report.result.trace_seconds;
+  timings["total_seconds"] = report.total_seconds;
+  json["timings"] = timings;
+  json["outputs"] = to_json(report.outputs);
+  json["warnings"] = to_json(report.warnings);
+  return json;
+}
+
+}  // namespace occlusion

@@ -1,0 +1,34 @@
+#pragma once
+// Pieces every job's run function shares (internal to app/).
+
+#include <json/value.h>
+
+#include <chrono>
+#include <string>
+#include <vector>
+
+#include "occlusion/app/viewpoint_choice.hpp"
+#include "occlusion/core/point_cloud.hpp"
+
+namespace occlusion::job {
+
+using Clock = std::chrono::steady_clock;
+
+inline double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// <out>/<stem of input><suffix>, e.g. ("out", "room.pcd", ".poc.json") -> out/room.poc.json.
+std::string output_path(const std::string& out, const std::string& input,
+                        const std::string& suffix);
+
+// Viewpoints for a cloud, from its bounding box.
+ViewpointChoice::Resolved resolve_for_cloud(const ViewpointChoice& choice, const PointCloud& cloud);
+
+// [{"name": ..., "position": [x, y, z], <figures>...}, ...] built by the caller.
+Json::Value viewpoint_json(const std::string& name, const Eigen::Vector3d& position);
+
+// Throws UsageError unless format is "ply" or "pcd"; returns the file extension.
+std::string cloud_extension(const std::string& format);
+
+}  // namespace occlusion::job

@@ -1,0 +1,102 @@
+#include "occlusion/app/reconstruct_job.hpp"
+
+#include <filesystem>
+#include <set>
+
+#include "job_support.hpp"
+#include "occlusion/app/errors.hpp"
+#include "occlusion/app/json_output.hpp"
+#include "occlusion/io/atomic_file.hpp"
+#include "occlusion/io/cloud_io.hpp"
+
+namespace occlusion {
+
+void validate(const ReconstructRequest& request) {
+  if (request.path.empty()) {
+    throw UsageError("no folder given (-recon ROOM_OR_AREA_FOLDER)");
+  }
+  job::cloud_extension(request.format);
+  if (request.out.empty()) throw UsageError("--out must not be empty");
+}
+
+void apply_config(const Config& config, ReconstructRequest& request) {
+  const ConfigSection section(config, "reconstruct");
+  section.read_path("path", request.path);
+  section.read("format", request.format);
+  section.read("skip_bad_lines", request.skip_bad_lines);
+  section.read_path("out", request.out);
+}
+
+ReconstructReport run_reconstruct(const ReconstructRequest& request, const Progress& progress) {
+  validate(request);
+  const auto start = job::Clock::now();
+  ReconstructReport report;
+  report.request = request;
+
+  progress("reading", 0.0);
+  CloudReadOptions read_options;
+  read_options.skip_bad_lines = request.skip_bad_lines;
+  CloudReadReport read_report;
+  const PointCloud cloud = read_cloud(request.path, read_options, &read_report);
+  if (!cloud.has_labels()) {
+    throw UsageError(request.path + " is not an S3DIS room or Area folder (no Annotations found)");
+  }
+  report.points = cloud.size();
+  report.rooms = read_report.rooms;
+  report.dropped_nan = read_report.dropped_nan;
+  report.skipped_lines = read_report.skipped_lines;
+  progress.check_cancel();
+
+  report.classes.resize(cloud.class_names.size());
+  std::vector<std::set<std::int32_t>> instances(cloud.class_names.size());
+  for (std::size_t c = 0; c < cloud.class_names.size(); ++c) {
+    report.classes[c].name = cloud.class_names[c];
+  }
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    const auto label = static_cast<std::size_t>(cloud.labels[i]);
+    ++report.classes[label].points;
+    if (cloud.has_instances()) instances[label].insert(cloud.instances[i]);
+  }
+  for (std::size_t c = 0; c < instances.size(); ++c) {
+    report.classes[c].instances = instances[c].size();
+  }
+
+  progress("writing", 0.5);
+  ensure_directory(request.out);
+  const std::string cloud_path =
+      job::output_path(request.out, request.path, "." + job::cloud_extension(request.format));
+  const std::string json_path = job::output_path(request.out, request.path, ".recon.json");
+  write_cloud(cloud_path, cloud);
+  report.outputs = {cloud_path, json_path};
+  report.total_seconds = job::seconds_since(start);
+  const Json::Value json = to_json(report);
+  write_file_atomically(json_path, [&](std::ostream& out) { out << format_json(json) << '\n'; });
+  progress("done", 1.0);
+  return report;
+}
+
+Json::Value to_json(const ReconstructReport& report) {
+  Json::Value json(Json::objectValue);
+  json["job"] = "reconstruct";
+  json["input"] = report.request.path;
+  json["points"] = Json::UInt64(report.points);
+  Json::Value classes(Json::arrayValue);
+  for (std::size_t c = 0; c < report.classes.size(); ++c) {
+    Json::Value entry(Json::objectValue);
+    entry["id"] = Json::UInt64(c);
+    entry["name"] = report.classes[c].name;
+    entry["points"] = Json::UInt64(report.classes[c].points);
+    entry["instances"] = Json::UInt64(report.classes[c].instances);
+    classes.append(entry);
+  }
+  json["classes"] = classes;
+  json["rooms"] = to_json(report.rooms);
+  json["dropped_nan_points"] = Json::UInt64(report.dropped_nan);
+  json["skipped_lines"] = Json::UInt64(report.skipped_lines);
+  json["format"] = report.request.format;
+  json["outputs"] = to_json(report.outputs);
+  json["timings"]["total_seconds"] = report.total_seconds;
+  return json;
+}
+
+}  // namespace occlusion

@@ -1,0 +1,182 @@
+#include "occlusion/app/scan_job.hpp"
+
+#include <cmath>
+
+#include "job_support.hpp"
+#include "occlusion/app/errors.hpp"
+#include "occlusion/app/json_output.hpp"
+#include "occlusion/io/atomic_file.hpp"
+#include "occlusion/io/cloud_io.hpp"
+
+namespace occlusion {
+
+namespace {
+
+std::vector<ClassVisibility> per_class(const PointCloud& cloud, const ScanResult& result) {
+  std::vector<ClassVisibility> classes;
+  if (!cloud.has_labels()) return classes;
+  std::int32_t max_label = -1;
+  for (const auto label : cloud.labels) max_label = std::max(max_label, label);
+  const std::size_t count =
+      std::max(cloud.class_names.size(), static_cast<std::size_t>(max_label + 1));
+  classes.resize(count);
+  for (std::size_t c = 0; c < count; ++c) {
+    classes[c].name = c < cloud.class_names.size() ? cloud.class_names[c] : std::to_string(c);
+  }
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    if (cloud.labels[i] < 0) continue;
+    ClassVisibility& c = classes[static_cast<std::size_t>(cloud.labels[i])];
+    ++c.points;
+    c.visible += result.visible_count[i] > 0 ? 1 : 0;
+  }
+  for (auto& c : classes) {
+    c.visible_fraction =
+        c.points > 0 ? static_cast<double>(c.visible) / static_cast<double>(c.points) : 0.0;
+  }
+  return classes;
+}
+
+}  // namespace
+
+void validate(const ScanRequest& request) {
+  if (request.path.empty()) {
+    throw UsageError("no cloud given (-fscan CLOUD or occlusion.point_cloud.path)");
+  }
+  request.viewpoints.validate();
+  if (!std::isfinite(request.point_radius) || request.point_radius <= 0.0) {
+    throw UsageError("--point-radius must be a number > 0");
+  }
+  if (!std::isfinite(request.self_tolerance)) {
+    throw UsageError("--self-tolerance must be a number (negative: 2 x point radius)");
+  }
+  if (!std::isfinite(request.octree_resolution) || request.octree_resolution < 0.0) {
+    throw UsageError("--octree-resolution must be a number >= 0");
+  }
+  job::cloud_extension(request.format);
+}
+
+void apply_config(const Config& config, ScanRequest& request) {
+  const ConfigSection section(config, "point_cloud");
+  section.read_path("path", request.path);
+  section.read_viewpoints(request.viewpoints);
+  section.read("point_radius", request.point_radius);
+  section.read("self_tolerance", request.self_tolerance);
+  section.read("octree_resolution", request.octree_resolution);
+  section.read("enable_acceleration", request.enable_acceleration);
+  section.read("format", request.format);
+  section.read("skip_bad_lines", request.skip_bad_lines);
+  section.read("threads", request.threads);
+  section.read_path("out", request.out);
+}
+
+ScanReport run_scan(const ScanRequest& request, const Progress& progress) {
+  validate(request);
+  const auto start = job::Clock::now();
+  ScanReport report;
+  report.request = request;
+
+  progress("loading", 0.0);
+  CloudReadOptions read_options;
+  read_options.skip_bad_lines = request.skip_bad_lines;
+  CloudReadReport read_report;
+  const PointCloud cloud = read_cloud(request.path, read_options, &read_report);
+  report.dropped_nan = read_report.dropped_nan;
+  report.skipped_lines = read_report.skipped_lines;
+  report.load_seconds = job::seconds_since(start);
+  progress.check_cancel();
+
+  const ViewpointChoice::Resolved viewpoints = job::resolve_for_cloud(request.viewpoints, cloud);
+  report.viewpoint_names = viewpoints.names;
+  report.viewpoint_positions = viewpoints.positions;
+
+  ScanOptions options;
+  options.point_radius = request.point_radius;
+  options.self_tolerance = request.self_tolerance;
+  options.octree.min_cell_size = static_cast<float>(request.octree_resolution);
+  options.octree.enable_acceleration = request.enable_acceleration;
+  options.threads = request.threads;
+  report.result = scan_cloud(cloud, viewpoints.positions, options, progress);
+  report.classes = per_class(cloud, report.result);
+
+  if (!request.out.empty()) {
+    ensure_directory(request.out);
+    const std::string extension = "." + job::cloud_extension(request.format);
+    const std::string scanned_path =
+        job::output_path(request.out, request.path, ".scan" + extension);
+    const std::string full_path =
+        job::output_path(request.out, request.path, ".scan_full" + extension);
+    const std::string json_path = job::output_path(request.out, request.path, ".fscan.json");
+
+    std::vector<bool> seen(cloud.size());
+    ScalarField visible_count{"visible_count", {}, true};
+    visible_count.values.reserve(cloud.size());
+    for (std::size_t i = 0; i < cloud.size(); ++i) {
+      seen[i] = report.result.visible_count[i] > 0;
+      visible_count.values.push_back(static_cast<float>(report.result.visible_count[i]));
+    }
+    write_cloud(scanned_path, cloud.subset(seen));
+    write_cloud(full_path, cloud, {visible_count});
+    report.outputs = {json_path, scanned_path, full_path};
+    report.total_seconds = job::seconds_since(start);
+    const Json::Value json = to_json(report);
+    write_file_atomically(json_path, [&](std::ostream& out) { out << format_json(json) << '\n'; });
+  }
+  report.total_seconds = job::seconds_since(start);
+  return report;
+}
+
+Json::Value to_json(const ScanReport& report) {
+  const ScanRequest& q = report.request;
+  const ScanResult& r = report.result;
+  Json::Value json(Json::objectValue);
+  json["job"] = "scan";
+  json["input"] = q.path;
+  json["visible_fraction"] = r.visible_fraction;
+  json["points"] = Json::UInt64(r.visible_count.size());
+  json["visible_points"] = Json::UInt64(r.visible_points);
+  json["dropped_nan_points"] = Json::UInt64(report.dropped_nan);
+  json["skipped_lines"] = Json::UInt64(report.skipped_lines);
+
+  Json::Value viewpoints(Json::arrayValue);
+  const double points = static_cast<double>(std::max<std::size_t>(r.visible_count.size(), 1));
+  for (std::size_t v = 0; v < report.viewpoint_positions.size(); ++v) {
+    Json::Value entry =
+        job::viewpoint_json(report.viewpoint_names.at(v), report.viewpoint_positions[v]);
+    entry["visible_points"] = Json::UInt64(r.seen_by_viewpoint.at(v));
+    entry["visible_fraction"] = static_cast<double>(r.seen_by_viewpoint[v]) / points;
+    viewpoints.append(entry);
+  }
+  json["viewpoints"] = viewpoints;
+
+  Json::Value classes(Json::arrayValue);
+  for (const auto& c : report.classes) {
+    Json::Value entry(Json::objectValue);
+    entry["name"] = c.name;
+    entry["points"] = Json::UInt64(c.points);
+    entry["visible_points"] = Json::UInt64(c.visible);
+    entry["visible_fraction"] = c.visible_fraction;
+    classes.append(entry);
+  }
+  json["classes"] = classes;
+
+  Json::Value parameters = q.viewpoints.to_json();
+  parameters["point_radius"] = q.point_radius;
+  parameters["self_tolerance"] = q.self_tolerance < 0.0 ? 2.0 * q.point_radius : q.self_tolerance;
+  parameters["octree_resolution"] = q.octree_resolution;
+  parameters["enable_acceleration"] = q.enable_acceleration;
+  parameters["format"] = q.format;
+  parameters["threads"] = q.threads;
+  json["parameters"] = parameters;
+
+  Json::Value timings(Json::objectValue);
+  timings["load_seconds"] = report.load_seconds;
+  timings["build_seconds"] = r.build_seconds;
+  timings["trace_seconds"] = r.trace_seconds;
+  timings["total_seconds"] = report.total_seconds;
+  json["timings"] = timings;
+  json["outputs"] = to_json(report.outputs);
+  json["warnings"] = to_json(report.warnings);
+  return json;
+}
+
+}  // namespace occlusion

@@ -1,0 +1,51 @@
+#pragma once
+// Options every job shares: output mode, config file, viewpoints, seed, threads.
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "occlusion/analysis/progress.hpp"
+#include "occlusion/app/viewpoint_choice.hpp"
+#include "option_table.hpp"
+
+namespace Json {
+class Value;
+}
+
+namespace occlusion::cli {
+
+struct OutputOptions {
+  bool json = false;
+  bool quiet = false;
+  bool help = false;
+};
+
+// --json, -q/--quiet, -h/--help, and --config FILE (skipped here: the config is
+// loaded first by config_path(), so that every other option overrides it).
+void add_output_options(OptionTable& table, OutputOptions& output);
+
+// The value of --config, if any.
+std::optional<std::string> config_path(const std::vector<std::string>& args);
+
+// --viewpoint X,Y,Z (repeatable), --pattern N and, with allow_grid, --num-vp N.
+// Giving two kinds is a usage error; giving none leaves the choice as it was.
+struct ViewpointOptions {
+  std::vector<Eigen::Vector3d> points;
+  std::optional<int> pattern;
+  std::optional<std::size_t> grid_count;
+  void apply_to(ViewpointChoice& choice) const;
+};
+void add_viewpoint_options(OptionTable& table, ViewpointOptions& viewpoints, bool allow_grid);
+
+void add_seed_option(OptionTable& table, std::uint64_t& seed);
+void add_threads_option(OptionTable& table, unsigned& threads);
+
+// Prints one JSON object on stdout.
+void print_json(const Json::Value& json);
+// Prints warnings on stderr.
+void print_warnings(const std::vector<std::string>& warnings);
+
+}  // namespace occlusion::cli

@@ -1,0 +1,143 @@
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <unordered_set>
+
+#include "cloud_formats.hpp"
+#include "occlusion/io/input_error.hpp"
+#include "text_tokens.hpp"
+
+namespace occlusion::detail {
+
+bool is_label_name(std::string_view name) {
+  return name == "label" || name == "class";
+}
+
+bool is_instance_name(std::string_view name) {
+  return name == "instance" || name == "instance_id" || name == "object" || name == "object_id";
+}
+
+std::optional<ClassComment> parse_class_comment(std::string_view text) {
+  Tokens tokens(text);
+  if (tokens.next() != "class") return std::nullopt;
+  ClassComment comment;
+  if (!parse_whole_number(tokens.next(), comment.id)) return std::nullopt;
+  comment.name = std::string(tokens.rest());  // may be empty; inner spaces kept
+  return comment;
+}
+
+void ClassNameList::add(const ClassComment& comment, const std::string& path, std::size_t line) {
+  constexpr std::int64_t kMaxClasses = 1 << 16;
+  if (comment.id < 0 || comment.id >= kMaxClasses) {
+    throw InputError(path, line,
+                     "class id " + std::to_string(comment.id) + " is outside 0.." +
+                         std::to_string(kMaxClasses - 1));
+  }
+  const auto id = static_cast<std::size_t>(comment.id);
+  if (id >= names_.size()) {
+    names_.resize(id + 1);
+    lines_.resize(id + 1, 0);
+  }
+  if (lines_[id] != 0) {
+    throw InputError(path, line,
+                     "class id " + std::to_string(id) + " is named twice (first on line " +
+                         std::to_string(lines_[id]) + ")");
+  }
+  names_[id] = comment.name;
+  lines_[id] = line;
+}
+
+std::vector<std::string> ClassNameList::finish(const std::string& path) const {
+  for (std::size_t id = 0; id < lines_.size(); ++id) {
+    if (lines_[id] == 0) {
+      throw InputError(path, 0,
+                       "class comments name ids up to " + std::to_string(lines_.size() - 1) +
+                           " but not " + std::to_string(id));
+    }
+  }
+  return names_;
+}
+
+std::string class_comment_lines(const std::vector<std::string>& names, std::string_view prefix) {
+  std::string lines;
+  for (std::size_t id = 0; id < names.size(); ++id) {
+    std::string name = names[id];
+    // A header comment ends at the end of the line, so a name must not contain one.
+    for (char& c : name) {
+      if (c == '\n' || c == '\r') c = ' ';
+    }
+    lines.append(prefix).append("class ").append(std::to_string(id)).append(" ");
+    lines.append(name).append("\n");
+  }
+  return lines;
+}
+
+std::string id_problem(std::int64_t id, bool is_label, std::size_t class_count) {
+  const char* what = is_label ? "label " : "instance ";
+  if (id < -1) {
+    return what + std::to_string(id) + " is negative (only -1, meaning none, is allowed)";
+  }
+  if (id > std::numeric_limits<std::int32_t>::max()) {
+    return what + std::to_string(id) + " does not fit in 32 bits";
+  }
+  if (is_label && class_count > 0 && id >= static_cast<std::int64_t>(class_count)) {
+    return what + std::to_string(id) + " has no class name (the header names " +
+           std::to_string(class_count) + " classes)";
+  }
+  return "";
+}
+
+namespace {
+
+bool is_identifier(const std::string& name) {
+  if (name.empty() || (name[0] >= '0' && name[0] <= '9')) return false;
+  for (const char c : name) {
+    const bool ok =
+        (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
+    if (!ok) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+bool is_reserved_name(std::string_view name) {
+  for (const char* reserved : {"x", "y", "z", "rgb", "rgba", "red", "green", "blue", "r", "g", "b",
+                               "diffuse_red", "diffuse_green", "diffuse_blue"}) {
+    if (name == reserved) return true;
+  }
+  return is_label_name(name) || is_instance_name(name);
+}
+
+void check_extra_fields(const PointCloud& cloud, const std::vector<ScalarField>& extra) {
+  std::unordered_set<std::string> used;
+  for (const ScalarField& field : extra) {
+    if (!is_identifier(field.name)) {
+      throw std::invalid_argument("write_cloud: field name '" + field.name +
+                                  "' must be letters, digits and '_', not starting with a digit");
+    }
+    if (is_reserved_name(field.name) || !used.insert(field.name).second) {
+      throw std::invalid_argument("write_cloud: field name '" + field.name + "' is already used");
+    }
+    if (field.values.size() != cloud.size()) {
+      throw std::invalid_argument("write_cloud: field '" + field.name + "' has " +
+                                  std::to_string(field.values.size()) + " values for " +
+                                  std::to_string(cloud.size()) + " points");
+    }
+    if (!field.integer) continue;
+    for (std::size_t i = 0; i < field.values.size(); ++i) {
+      const float value = field.values[i];
+      // 2^31 is exactly representable as a float; anything below it in
+      // magnitude that is whole fits in an int32.
+      const bool whole = std::isfinite(value) && value == std::floor(value) &&
+                         value >= -2147483648.0f && value < 2147483648.0f;
+      if (!whole) {
+        throw std::invalid_argument("write_cloud: integer field '" + field.name + "' has value " +
+                                    std::to_string(value) + " at point " + std::to_string(i) +
+                                    ", not a whole 32-bit number");
+      }
+    }
+  }
+}
+
+}  // namespace occlusion::detail

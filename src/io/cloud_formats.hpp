@@ -1,0 +1,79 @@
+#pragma once
+// The readers and writers behind read_cloud and write_cloud (cloud_io.cpp
+// chooses among them), and the vocabulary they share: which property names
+// hold labels and instances, class-name comments, extra-field checks.
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "occlusion/core/point_cloud.hpp"
+#include "occlusion/io/cloud_io.hpp"
+
+namespace occlusion::detail {
+
+PointCloud read_pcd(const std::string& path, CloudReadReport& report);
+PointCloud read_ply(const std::string& path, CloudReadReport& report);
+PointCloud read_text_cloud(const std::string& path, const CloudReadOptions& options,
+                           CloudReadReport& report);
+// A room folder or an Area folder of rooms.
+PointCloud read_s3dis(const std::string& directory, const CloudReadOptions& options,
+                      CloudReadReport& report);
+
+// Parses `x y z [r g b] [label]` text. With required_columns, every line must
+// have exactly that many (S3DIS: 6); otherwise the first data line decides.
+// `source` names the file in errors.
+PointCloud parse_text_cloud(std::string_view text, const std::string& source,
+                            std::optional<int> required_columns, const CloudReadOptions& options,
+                            CloudReadReport& report);
+
+// `extra` has been checked (check_extra_fields) and the cloud validated.
+void write_pcd(const std::string& path, const PointCloud& cloud,
+               const std::vector<ScalarField>& extra, CloudFormat format);
+void write_ply(const std::string& path, const PointCloud& cloud,
+               const std::vector<ScalarField>& extra, bool binary);
+
+// Property names that mean a semantic label or an instance id, in the files
+// other tools write; the writers use the first of each.
+bool is_label_name(std::string_view name);
+bool is_instance_name(std::string_view name);
+
+// The text after `comment ` (PLY) or `# ` (PCD) when it is `class <id> <name>`.
+struct ClassComment {
+  std::int64_t id = 0;
+  std::string name;
+};
+std::optional<ClassComment> parse_class_comment(std::string_view text);
+
+// Gathers class comments; the ids must be 0..n-1, each once.
+class ClassNameList {
+ public:
+  void add(const ClassComment& comment, const std::string& path, std::size_t line);
+  std::vector<std::string> finish(const std::string& path) const;
+
+ private:
+  std::vector<std::string> names_;
+  std::vector<std::size_t> lines_;  // 0 where no comment gave that id yet
+};
+
+// One `<prefix>class <id> <name>\n` line per class.
+std::string class_comment_lines(const std::vector<std::string>& names, std::string_view prefix);
+
+// Why a label or instance id read from a file is unusable, or "" if it is fine:
+// below -1 (the only negative id, meaning none), beyond int32, or a label with
+// no name when `class_count` names are known (0 = names unknown).
+std::string id_problem(std::int64_t id, bool is_label, std::size_t class_count);
+
+// Names a reader gives a meaning to (position, colour, label, instance). An
+// extra field may not use one even when the cloud has no such attribute, or
+// it would come back as that attribute.
+bool is_reserved_name(std::string_view name);
+
+// std::invalid_argument unless every extra field has one value per point, an
+// identifier name neither reserved nor repeated, and whole int32 values if integer.
+void check_extra_fields(const PointCloud& cloud, const std::vector<ScalarField>& extra);
+
+}  // namespace occlusion::detail

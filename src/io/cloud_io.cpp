@@ -1,0 +1,93 @@
+#include "occlusion/io/cloud_io.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <stdexcept>
+
+#include "cloud_formats.hpp"
+#include "occlusion/io/input_error.hpp"
+
+namespace occlusion {
+namespace {
+
+std::string lower_extension(const std::string& path) {
+  std::string extension = std::filesystem::path(path).extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return extension;
+}
+
+bool is_pcd(CloudFormat format) {
+  return format == CloudFormat::kPcdAscii || format == CloudFormat::kPcdBinary ||
+         format == CloudFormat::kPcdBinaryCompressed;
+}
+
+PointCloud read_by_kind(const std::string& path, const CloudReadOptions& options,
+                        CloudReadReport& report) {
+  std::error_code status;
+  const auto kind = std::filesystem::status(path, status);
+  if (!std::filesystem::exists(kind)) throw InputError(path, 0, "no such file or directory");
+  if (std::filesystem::is_directory(kind)) return detail::read_s3dis(path, options, report);
+  const std::string extension = lower_extension(path);
+  if (extension == ".pcd") return detail::read_pcd(path, report);
+  if (extension == ".ply") return detail::read_ply(path, report);
+  if (extension == ".txt" || extension == ".xyz" || extension == ".pts") {
+    return detail::read_text_cloud(path, options, report);
+  }
+  throw InputError(path, 0,
+                   "unknown point cloud extension '" + extension +
+                       "'; supported: .pcd, .ply, .txt, .xyz, .pts, or an S3DIS room or Area "
+                       "folder");
+}
+
+}  // namespace
+
+PointCloud read_cloud(const std::string& path, const CloudReadOptions& options,
+                      CloudReadReport* report) {
+  CloudReadReport local;
+  CloudReadReport& counts = report != nullptr ? *report : local;
+  const std::size_t dropped_before = counts.dropped_nan;
+  const std::size_t skipped_before = counts.skipped_lines;
+  PointCloud cloud = read_by_kind(path, options, counts);
+  if (cloud.size() == 0) {
+    std::string reason = "no points";
+    if (counts.dropped_nan > dropped_before) {
+      reason += " (all " + std::to_string(counts.dropped_nan - dropped_before) +
+                " had a NaN or infinite coordinate)";
+    } else if (counts.skipped_lines > skipped_before) {
+      reason +=
+          " (" + std::to_string(counts.skipped_lines - skipped_before) + " bad lines were skipped)";
+    }
+    throw InputError(path, 0, reason);
+  }
+  return cloud;
+}
+
+void write_cloud(const std::string& path, const PointCloud& cloud,
+                 const std::vector<ScalarField>& extra, std::optional<CloudFormat> format) {
+  const std::string extension = lower_extension(path);
+  if (!format) {
+    if (extension == ".pcd") {
+      format = CloudFormat::kPcdBinaryCompressed;
+    } else if (extension == ".ply") {
+      format = CloudFormat::kPlyBinary;
+    } else {
+      throw std::invalid_argument("write_cloud: cannot tell the format of '" + path +
+                                  "' (use .pcd or .ply, or pass a format)");
+    }
+  }
+  if ((extension == ".pcd" && !is_pcd(*format)) || (extension == ".ply" && is_pcd(*format))) {
+    throw std::invalid_argument(
+        "write_cloud: the format asked for does not match the extension of '" + path + "'");
+  }
+  cloud.validate();
+  detail::check_extra_fields(cloud, extra);
+  if (is_pcd(*format)) {
+    detail::write_pcd(path, cloud, extra, *format);
+  } else {
+    detail::write_ply(path, cloud, extra, *format == CloudFormat::kPlyBinary);
+  }
+}
+
+}  // namespace occlusion

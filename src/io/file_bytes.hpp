@@ -1,0 +1,12 @@
+#pragma once
+// Whole files in memory: the cloud readers parse from a buffer, so that
+// truncation is a length comparison and a byte offset is an index.
+
+#include <string>
+
+namespace occlusion::detail {
+
+// The file's bytes. InputError if it is a directory, missing or unreadable.
+std::string read_file_bytes(const std::string& path);
+
+}  // namespace occlusion::detail

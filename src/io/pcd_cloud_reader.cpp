@@ -1,0 +1,439 @@
+// PCL parses the header and decodes binary bodies (including the LZF of
+// binary_compressed); the sizes are checked here first, because PCL reports a
+// short file only as "smaller than expected" and a non-numeric ascii token not
+// at all. Ascii bodies are therefore parsed here, strictly, with line numbers.
+
+#include <pcl/PCLPointCloud2.h>
+#include <pcl/io/pcd_io.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "cloud_formats.hpp"
+#include "file_bytes.hpp"
+#include "occlusion/io/input_error.hpp"
+#include "pcd_values.hpp"
+#include "text_tokens.hpp"
+
+namespace occlusion::detail {
+namespace {
+
+using Field = pcl::PCLPointField;
+
+enum DataType { kAscii = 0, kBinary = 1, kBinaryCompressed = 2 };
+
+class PcdCloudReader {
+ public:
+  PcdCloudReader(const std::string& path, CloudReadReport& report)
+      : path_(path), report_(report), bytes_(read_file_bytes(path)) {}
+
+  PointCloud run() {
+    read_header();
+    const std::size_t expected = blob_.data.size();
+    if (data_type_ == kAscii) {
+      parse_ascii_body();
+    } else {
+      check_binary_size(expected);
+      const auto* data = reinterpret_cast<const unsigned char*>(bytes_.data());
+      if (reader_.readBodyBinary(data, blob_, version_, data_type_ == kBinaryCompressed,
+                                 data_index_) < 0) {
+        throw InputError(path_, 0,
+                         "PCL could not decode the binary data (its reason is printed above)");
+      }
+    }
+    if (blob_.data.size() != expected) {
+      throw InputError(path_, 0, "the data does not match the header's point count");
+    }
+    map_fields();
+    return convert();
+  }
+
+ private:
+  // PCL's readHeader allocates WIDTH x HEIGHT x point-size bytes before it
+  // looks at the data, so a corrupt count would exhaust memory: the header's
+  // own numbers are checked against the file size first. Headers this cannot
+  // make sense of are left to PCL, which reports them.
+  void check_declared_size() const {
+    std::vector<std::uint64_t> sizes;
+    std::vector<std::uint64_t> counts;
+    std::vector<std::uint64_t> width;
+    std::vector<std::uint64_t> height;
+    std::vector<std::uint64_t> points;
+    std::string_view data;
+    std::size_t data_end = 0;
+    Lines lines(bytes_);
+    std::string_view line;
+    while (lines.next(line)) {
+      data_end += line.size() + 1;
+      Tokens tokens(line);
+      const std::string_view keyword = tokens.next();
+      if (keyword == "DATA") {
+        data = tokens.next();
+        break;
+      }
+      std::vector<std::uint64_t>* list = keyword == "SIZE"     ? &sizes
+                                         : keyword == "COUNT"  ? &counts
+                                         : keyword == "WIDTH"  ? &width
+                                         : keyword == "HEIGHT" ? &height
+                                         : keyword == "POINTS" ? &points
+                                                               : nullptr;
+      if (list == nullptr) continue;
+      for (std::string_view token = tokens.next(); !token.empty(); token = tokens.next()) {
+        std::int64_t value = 0;
+        if (!parse_whole_number(token, value) || value < 0) return;
+        list->push_back(static_cast<std::uint64_t>(value));
+      }
+    }
+    if (data.empty()) throw InputError(path_, 0, "not a PCD file (the header has no DATA line)");
+    if (sizes.empty() || counts.size() > sizes.size() || width.size() != 1 || height.size() > 1 ||
+        points.size() > 1) {
+      return;
+    }
+    std::uint64_t point_size = 0;
+    for (std::size_t f = 0; f < sizes.size(); ++f) {
+      const std::uint64_t count = f < counts.size() ? counts[f] : 1;
+      if (count > (1u << 20) || sizes[f] > 8) return;
+      point_size += sizes[f] * count;
+    }
+    const std::uint64_t rows = height.empty() ? 1 : height[0];
+    const std::uint64_t available = bytes_.size() > data_end ? bytes_.size() - data_end : 0;
+    // At most: ascii, a "0\n" per point; binary, the bytes there are; LZF
+    // expands a block at most about 90-fold.
+    std::uint64_t most_points = available / 2 + 1;
+    if (data != "ascii" && point_size > 0) {
+      most_points = (data == "binary" ? available : 100 * available + 1024) / point_size;
+    }
+    const bool too_many =
+        (rows > 0 && width[0] > most_points / rows) || (!points.empty() && points[0] > most_points);
+    if (too_many) {
+      throw InputError(path_, 0,
+                       "truncated or corrupt: the header declares " +
+                           std::to_string(points.empty() ? width[0] * rows : points[0]) +
+                           " points, more than the " + std::to_string(available) + " bytes of " +
+                           std::string(data) + " data from byte " + std::to_string(data_end) +
+                           " can hold (the file ends at byte " + std::to_string(bytes_.size()) +
+                           ")");
+    }
+  }
+
+  void read_header() {
+    check_declared_size();
+    Eigen::Vector4f origin;
+    Eigen::Quaternionf orientation;
+    int data_type = 0;
+    unsigned int data_index = 0;
+    if (reader_.readHeader(path_, blob_, origin, orientation, version_, data_type, data_index) <
+        0) {
+      throw InputError(path_, 0, "not a valid PCD header (PCL's reason is printed above)");
+    }
+    data_type_ = data_type;
+    data_index_ = data_index;
+    if (data_index_ > bytes_.size()) throw InputError(path_, 0, "the header is cut off");
+    points_ = static_cast<std::size_t>(blob_.width) * blob_.height;
+    blob_.data.resize(points_ * blob_.point_step);
+
+    // Class names ride in comments, which PCL skips.
+    ClassNameList names;
+    Lines lines(std::string_view(bytes_).substr(0, data_index_));
+    std::string_view line;
+    while (lines.next(line)) {
+      if (line.empty() || line[0] != '#') continue;
+      if (const auto comment = parse_class_comment(line.substr(1))) {
+        names.add(*comment, path_, lines.number());
+      }
+    }
+    class_names_ = names.finish(path_);
+    data_line_ = 1 + static_cast<std::size_t>(
+                         std::count(bytes_.begin(), bytes_.begin() + data_index_, '\n'));
+  }
+
+  void check_binary_size(std::size_t expected) const {
+    const std::size_t available = bytes_.size() - data_index_;
+    if (data_type_ == kBinary) {
+      if (available < expected) {
+        throw InputError(path_, 0,
+                         "truncated: " + std::to_string(points_) + " points of " +
+                             std::to_string(blob_.point_step) + " bytes need bytes " +
+                             std::to_string(data_index_) + ".." +
+                             std::to_string(data_index_ + expected) +
+                             ", but the file ends at byte " + std::to_string(bytes_.size()));
+      }
+      if (available > expected) {
+        throw InputError(path_, 0,
+                         std::to_string(available - expected) + " bytes after the end of the " +
+                             std::to_string(points_) + " points at byte " +
+                             std::to_string(data_index_ + expected) +
+                             " (does the header's point count match the data?)");
+      }
+      return;
+    }
+    // binary_compressed: two uint32 sizes, then the LZF block.
+    if (available < 8) {
+      throw InputError(path_, 0,
+                       "truncated: the compressed block's sizes at byte " +
+                           std::to_string(data_index_) + " are cut off (the file ends at byte " +
+                           std::to_string(bytes_.size()) + ")");
+    }
+    std::uint32_t compressed = 0;
+    std::uint32_t uncompressed = 0;
+    std::memcpy(&compressed, bytes_.data() + data_index_, 4);
+    std::memcpy(&uncompressed, bytes_.data() + data_index_ + 4, 4);
+    if (compressed > available - 8) {
+      throw InputError(path_, 0,
+                       "truncated: the compressed block of " + std::to_string(compressed) +
+                           " bytes starts at byte " + std::to_string(data_index_ + 8) +
+                           ", but the file ends at byte " + std::to_string(bytes_.size()));
+    }
+    if (uncompressed != expected) {
+      throw InputError(path_, 0,
+                       "the compressed block holds " + std::to_string(uncompressed) +
+                           " bytes, but " + std::to_string(points_) + " points of " +
+                           std::to_string(blob_.point_step) + " bytes need " +
+                           std::to_string(expected));
+    }
+  }
+
+  void parse_ascii_body() {
+    std::size_t values_per_point = 0;
+    for (const Field& field : blob_.fields) values_per_point += field.count;
+    point_lines_.reserve(points_);
+    Lines lines(std::string_view(bytes_).substr(data_index_), data_line_);
+    std::string_view line;
+    std::size_t point = 0;
+    while (lines.next(line)) {
+      if (is_blank_line(line)) continue;
+      if (point == points_) {
+        throw InputError(
+            path_, lines.number(),
+            "more data lines than the " + std::to_string(points_) + " points the header declares");
+      }
+      Tokens tokens(line);
+      std::uint8_t* record = blob_.data.data() + point * blob_.point_step;
+      std::size_t read = 0;
+      for (const Field& field : blob_.fields) {
+        for (std::uint32_t k = 0; k < field.count; ++k, ++read) {
+          const std::string_view token = tokens.next();
+          if (token.empty()) {
+            throw InputError(path_, lines.number(),
+                             std::to_string(read) + " values; each point has " +
+                                 std::to_string(values_per_point));
+          }
+          store_ascii(record + field.offset + k * field_size(field.datatype), field, token,
+                      lines.number());
+        }
+      }
+      if (!tokens.next().empty()) {
+        throw InputError(
+            path_, lines.number(),
+            "more than the " + std::to_string(values_per_point) + " values each point has");
+      }
+      point_lines_.push_back(lines.number());
+      ++point;
+    }
+    if (point != points_) {
+      throw InputError(path_, lines.number(),
+                       "the file ends after " + std::to_string(point) + " of the " +
+                           std::to_string(points_) + " points the header declares");
+    }
+  }
+
+  void store_ascii(std::uint8_t* at, const Field& field, std::string_view token,
+                   std::size_t line) const {
+    // PCL writes packed colours in ascii as the integer of their bits, since
+    // many opaque colours are NaN as floats; older files wrote the float.
+    if (is_packed_colour(field) && field.datatype == Field::FLOAT32) {
+      std::int64_t bits = 0;
+      const bool integer =
+          token.find_first_of(".eEn") == std::string_view::npos && parse_whole_number(token, bits);
+      if (integer && bits >= 0 && bits <= std::numeric_limits<std::uint32_t>::max()) {
+        const auto narrow = static_cast<std::uint32_t>(bits);
+        std::memcpy(at, &narrow, sizeof narrow);
+        return;
+      }
+    }
+    if (is_integer_type(field.datatype)) {
+      std::int64_t value = 0;
+      if (!parse_whole_number(token, value) || !integer_fits(field.datatype, value)) {
+        throw InputError(
+            path_, line,
+            "field '" + field.name + "' value " + quoted(token) + " is not an integer of its type");
+      }
+      store_value(at, field.datatype, static_cast<double>(value));
+      return;
+    }
+    double value = 0;
+    if (!parse_double(token, value)) {
+      throw InputError(path_, line,
+                       "field '" + field.name + "' value " + quoted(token) + " is not a number");
+    }
+    store_value(at, field.datatype, value);
+  }
+
+  const Field* single(const Field& field, const char* role) const {
+    if (field.count != 1) {
+      throw InputError(path_, 0,
+                       std::string("field '") + field.name + "' (" + role + ") has COUNT " +
+                           std::to_string(field.count) + ", expected 1");
+    }
+    return &field;
+  }
+
+  void map_fields() {
+    for (const Field& field : blob_.fields) {
+      const std::string& name = field.name;
+      const Field** slot = nullptr;
+      if (name == "x" || name == "y" || name == "z") {
+        slot = &axes_[name[0] - 'x'];
+      } else if (name == "rgb" || name == "rgba") {
+        if (!is_packed_colour(field)) {
+          throw InputError(path_, 0, "field '" + name + "' is not a 4-byte packed colour");
+        }
+        slot = &packed_colour_;
+      } else if (name == "r" || name == "g" || name == "b") {
+        // A float channel may be 0..1 or 0..255; guessing would be a silent error.
+        if (!is_integer_type(field.datatype)) {
+          throw InputError(path_, 0,
+                           "colour field '" + name +
+                               "' is floating point; only integer colours 0..255 are read");
+        }
+        slot = &channels_[name == "r" ? 0 : name == "g" ? 1 : 2];
+      } else if (is_label_name(name)) {
+        slot = &label_;
+      } else if (is_instance_name(name)) {
+        slot = &instance_;
+      }
+      if (slot != nullptr) {
+        if (*slot != nullptr) {
+          throw InputError(
+              path_, 0,
+              "two fields hold the same thing ('" + (*slot)->name + "' and '" + name + "')");
+        }
+        *slot = single(field, name.c_str());
+      } else if (field.count == 1 && name != "_") {
+        extra_.push_back(&field);
+      }
+    }
+    for (int axis = 0; axis < 3; ++axis) {
+      if (axes_[axis] == nullptr) {
+        throw InputError(path_, 0, std::string("no '") + char('x' + axis) + "' field");
+      }
+    }
+    const int channels =
+        int{channels_[0] != nullptr} + int{channels_[1] != nullptr} + int{channels_[2] != nullptr};
+    if (channels != 0 && channels != 3) {
+      throw InputError(path_, 0, "some but not all of the fields r g b");
+    }
+    if (channels == 3 && packed_colour_ != nullptr) {
+      throw InputError(path_, 0, "both a packed colour and r g b fields");
+    }
+  }
+
+  // Where point i is, for messages: its line in ascii, its index otherwise
+  // (binary_compressed stores fields apart, so a byte offset would mislead).
+  [[noreturn]] void fail_at(std::size_t point, const std::string& problem) const {
+    if (!point_lines_.empty()) throw InputError(path_, point_lines_[point], problem);
+    throw InputError(path_, 0, "point " + std::to_string(point) + ": " + problem);
+  }
+
+  std::int32_t id_value(const Field& field, const std::uint8_t* record, bool is_label,
+                        std::size_t point) const {
+    double value = load_value(record + field.offset, field.datatype);
+    // PCL's own label type is uint32, where "none" is 0xFFFFFFFF.
+    if (field.datatype == Field::UINT32 && value == 4294967295.0) value = -1;
+    if (!std::isfinite(value) || value != std::floor(value) || std::fabs(value) > 9e15) {
+      fail_at(point, "field '" + field.name + "' value is not a whole number");
+    }
+    const auto id = static_cast<std::int64_t>(value);
+    const std::string problem = id_problem(id, is_label, class_names_.size());
+    if (!problem.empty()) fail_at(point, problem);
+    return static_cast<std::int32_t>(id);
+  }
+
+  PointCloud convert() {
+    PointCloud cloud;
+    cloud.class_names = class_names_;
+    const bool colours = packed_colour_ != nullptr || channels_[0] != nullptr;
+    cloud.positions.reserve(points_);
+    if (colours) cloud.colours.reserve(points_);
+    if (label_ != nullptr) cloud.labels.reserve(points_);
+    if (instance_ != nullptr) cloud.instances.reserve(points_);
+    std::vector<ScalarField> extra;
+    for (const Field* field : extra_) {
+      extra.push_back({field->name, {}, is_integer_type(field->datatype)});
+      extra.back().values.reserve(points_);
+    }
+
+    for (std::size_t i = 0; i < points_; ++i) {
+      const std::uint8_t* record = blob_.data.data() + i * blob_.point_step;
+      Eigen::Vector3f position;
+      for (int axis = 0; axis < 3; ++axis) {
+        position[axis] =
+            static_cast<float>(load_value(record + axes_[axis]->offset, axes_[axis]->datatype));
+      }
+      if (!position.allFinite()) {
+        ++report_.dropped_nan;
+        continue;
+      }
+      cloud.positions.push_back(position);
+      if (packed_colour_ != nullptr) {
+        std::uint32_t bits = 0;
+        std::memcpy(&bits, record + packed_colour_->offset, sizeof bits);
+        cloud.colours.push_back({static_cast<std::uint8_t>(bits >> 16),
+                                 static_cast<std::uint8_t>(bits >> 8),
+                                 static_cast<std::uint8_t>(bits)});
+      } else if (colours) {
+        std::array<std::uint8_t, 3> rgb{};
+        for (int c = 0; c < 3; ++c) {
+          const double value = load_value(record + channels_[c]->offset, channels_[c]->datatype);
+          if (!(value >= 0 && value <= 255)) {
+            fail_at(i, "colour field '" + channels_[c]->name + "' is outside 0..255");
+          }
+          rgb[c] = static_cast<std::uint8_t>(value);
+        }
+        cloud.colours.push_back(rgb);
+      }
+      if (label_ != nullptr) cloud.labels.push_back(id_value(*label_, record, true, i));
+      if (instance_ != nullptr) cloud.instances.push_back(id_value(*instance_, record, false, i));
+      for (std::size_t f = 0; f < extra_.size(); ++f) {
+        extra[f].values.push_back(
+            static_cast<float>(load_value(record + extra_[f]->offset, extra_[f]->datatype)));
+      }
+    }
+    for (ScalarField& field : extra) report_.extra_fields.push_back(std::move(field));
+    return cloud;
+  }
+
+  const std::string& path_;
+  CloudReadReport& report_;
+  std::string bytes_;
+  pcl::PCDReader reader_;
+  pcl::PCLPointCloud2 blob_;
+  int version_ = 0;
+  int data_type_ = 0;
+  unsigned int data_index_ = 0;
+  std::size_t data_line_ = 1;
+  std::size_t points_ = 0;
+  std::vector<std::string> class_names_;
+  std::vector<std::size_t> point_lines_;  // ascii only
+
+  const Field* axes_[3] = {nullptr, nullptr, nullptr};
+  const Field* packed_colour_ = nullptr;
+  const Field* channels_[3] = {nullptr, nullptr, nullptr};
+  const Field* label_ = nullptr;
+  const Field* instance_ = nullptr;
+  std::vector<const Field*> extra_;
+};
+
+}  // namespace
+
+PointCloud read_pcd(const std::string& path, CloudReadReport& report) {
+  return PcdCloudReader(path, report).run();
+}
+
+}  // namespace occlusion::detail

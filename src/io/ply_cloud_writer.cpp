@@ -1,0 +1,154 @@
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <ostream>
+#include <sstream>
+
+#include "cloud_formats.hpp"
+#include "occlusion/io/atomic_file.hpp"
+
+namespace occlusion::detail {
+namespace {
+
+// Points per buffered chunk: keeps memory flat for large clouds.
+constexpr std::size_t kChunkPoints = 1 << 16;
+
+std::string header(const PointCloud& cloud, const std::vector<ScalarField>& extra, bool binary) {
+  std::ostringstream out;
+  out << "ply\n"
+      << (binary ? "format binary_little_endian 1.0\n" : "format ascii 1.0\n")
+      << "comment written by occlusion\n"
+      << class_comment_lines(cloud.class_names, "comment ") << "element vertex " << cloud.size()
+      << '\n'
+      << "property float x\nproperty float y\nproperty float z\n";
+  if (cloud.has_colours()) out << "property uchar red\nproperty uchar green\nproperty uchar blue\n";
+  if (cloud.has_labels()) out << "property int label\n";
+  if (cloud.has_instances()) out << "property int instance\n";
+  for (const ScalarField& field : extra) {
+    out << "property " << (field.integer ? "int " : "float ") << field.name << '\n';
+  }
+  out << "end_header\n";
+  return out.str();
+}
+
+// Bytes least significant first by shifts: little-endian on any host.
+class LittleEndianBuffer {
+ public:
+  void u8(std::uint8_t value) { bytes_.push_back(static_cast<char>(value)); }
+  void u32(std::uint32_t value) {
+    for (int shift = 0; shift < 32; shift += 8) u8(static_cast<std::uint8_t>(value >> shift));
+  }
+  void i32(std::int32_t value) { u32(static_cast<std::uint32_t>(value)); }
+  void f32(float value) {
+    static_assert(sizeof(float) == 4 && std::numeric_limits<float>::is_iec559,
+                  "PLY float is IEEE 754 binary32");
+    std::uint32_t bits;
+    std::memcpy(&bits, &value, sizeof bits);
+    u32(bits);
+  }
+  void flush_to(std::ostream& out) {
+    out.write(bytes_.data(), static_cast<std::streamsize>(bytes_.size()));
+    bytes_.clear();
+  }
+
+ private:
+  std::string bytes_;
+};
+
+void write_binary_body(std::ostream& out, const PointCloud& cloud,
+                       const std::vector<ScalarField>& extra) {
+  LittleEndianBuffer buffer;
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    const Eigen::Vector3f& p = cloud.positions[i];
+    buffer.f32(p.x());
+    buffer.f32(p.y());
+    buffer.f32(p.z());
+    if (cloud.has_colours()) {
+      for (const std::uint8_t channel : cloud.colours[i]) buffer.u8(channel);
+    }
+    if (cloud.has_labels()) buffer.i32(cloud.labels[i]);
+    if (cloud.has_instances()) buffer.i32(cloud.instances[i]);
+    for (const ScalarField& field : extra) {
+      if (field.integer) {
+        buffer.i32(static_cast<std::int32_t>(field.values[i]));
+      } else {
+        buffer.f32(field.values[i]);
+      }
+    }
+    if ((i + 1) % kChunkPoints == 0) buffer.flush_to(out);
+  }
+  buffer.flush_to(out);
+}
+
+// The shortest text that reads back as exactly the same float.
+void append_float(std::string& text, float value) {
+  char digits[32];
+  const auto result = std::to_chars(digits, digits + sizeof digits, value);
+  text.append(digits, result.ptr);
+}
+
+void append_integer(std::string& text, long long value) {
+  char digits[24];
+  const auto result = std::to_chars(digits, digits + sizeof digits, value);
+  text.append(digits, result.ptr);
+}
+
+void write_ascii_body(std::ostream& out, const PointCloud& cloud,
+                      const std::vector<ScalarField>& extra) {
+  std::string text;
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    const Eigen::Vector3f& p = cloud.positions[i];
+    append_float(text, p.x());
+    text += ' ';
+    append_float(text, p.y());
+    text += ' ';
+    append_float(text, p.z());
+    if (cloud.has_colours()) {
+      for (const std::uint8_t channel : cloud.colours[i]) {
+        text += ' ';
+        append_integer(text, channel);
+      }
+    }
+    if (cloud.has_labels()) {
+      text += ' ';
+      append_integer(text, cloud.labels[i]);
+    }
+    if (cloud.has_instances()) {
+      text += ' ';
+      append_integer(text, cloud.instances[i]);
+    }
+    for (const ScalarField& field : extra) {
+      text += ' ';
+      if (field.integer) {
+        append_integer(text, static_cast<long long>(field.values[i]));
+      } else {
+        append_float(text, field.values[i]);
+      }
+    }
+    text += '\n';
+    if ((i + 1) % kChunkPoints == 0) {
+      out << text;
+      text.clear();
+    }
+  }
+  out << text;
+}
+
+}  // namespace
+
+void write_ply(const std::string& path, const PointCloud& cloud,
+               const std::vector<ScalarField>& extra, bool binary) {
+  const std::string head = header(cloud, extra, binary);
+  write_file_atomically(path, [&](std::ostream& out) {
+    out << head;
+    if (binary) {
+      write_binary_body(out, cloud, extra);
+    } else {
+      write_ascii_body(out, cloud, extra);
+    }
+  });
+}
+
+}  // namespace occlusion::detail

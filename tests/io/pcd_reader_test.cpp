@@ -1,0 +1,207 @@
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <string>
+
+#include "io/cloud_test_support.hpp"
+#include "io/scratch_directory.hpp"
+#include "occlusion/io/cloud_io.hpp"
+
+namespace occlusion {
+namespace {
+
+const std::string kRoomScan = std::string(OCCLUSION_SOURCE_DIR) + "/../shared/data/room_scan1.pcd";
+
+std::string pcd_header(const std::string& fields, const std::string& sizes,
+                       const std::string& types, std::size_t width, std::size_t height,
+                       const std::string& data) {
+  std::string header = "# .PCD v0.7 - Point Cloud Data file format\nVERSION 0.7\n";
+  header += "FIELDS " + fields + "\nSIZE " + sizes + "\nTYPE " + types + "\nCOUNT ";
+  std::size_t field_count = 1;
+  for (const char c : fields) field_count += c == ' ';
+  for (std::size_t f = 0; f < field_count; ++f) header += f == 0 ? "1" : " 1";
+  header += "\nWIDTH " + std::to_string(width) + "\nHEIGHT " + std::to_string(height) +
+            "\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS " + std::to_string(width * height) + "\nDATA " +
+            data + "\n";
+  return header;
+}
+
+std::string floats(std::initializer_list<float> values) {
+  std::string bytes(values.size() * 4, '\0');
+  std::size_t at = 0;
+  for (const float value : values) {
+    std::memcpy(&bytes[at], &value, 4);
+    at += 4;
+  }
+  return bytes;
+}
+
+TEST(PcdReader, RealBinaryCompressedScanLoads) {
+  CloudReadReport report;
+  const PointCloud cloud = read_cloud(kRoomScan, {}, &report);
+  EXPECT_EQ(cloud.size(), 112586u);
+  EXPECT_EQ(report.dropped_nan, 0u);
+  EXPECT_FALSE(cloud.has_colours());
+  EXPECT_FALSE(cloud.has_labels());
+  Eigen::Vector3f lo;
+  Eigen::Vector3f hi;
+  cloud.bounds(lo, hi);
+  ASSERT_TRUE(lo.allFinite() && hi.allFinite());
+  const Eigen::Vector3f extent = hi - lo;
+  EXPECT_NEAR(extent.x(), 29.2, 0.5);
+  EXPECT_NEAR(extent.y(), 14.5, 0.5);
+  EXPECT_NEAR(extent.z(), 3.06, 0.2);
+}
+
+TEST(PcdReader, TruncatedCompressedScanIsReportedWithByteOffsets) {
+  testing::ScratchDirectory dir;
+  const std::string path = dir.file("cut.pcd");
+  const std::string bytes = testing::read_bytes(kRoomScan);
+  ASSERT_GT(bytes.size(), 300000u);
+  testing::write_text(path, bytes.substr(0, 300000));
+  testing::expect_input_error([&] { read_cloud(path); }, "cut.pcd", 0, "file ends at byte 300000");
+}
+
+TEST(PcdReader, AsciiNanPointsAreDroppedAndCounted) {
+  testing::ScratchDirectory dir;
+  const std::string path = dir.file("kinect.pcd");
+  // An organised 2 x 2 frame, as a Kinect writes it: missing depth is NaN.
+  testing::write_text(path, pcd_header("x y z", "4 4 4", "F F F", 2, 2, "ascii") +
+                                "1 2 3\nnan nan nan\n4 5 6\nnan nan nan\n");
+  CloudReadReport report;
+  const PointCloud cloud = read_cloud(path, {}, &report);
+  ASSERT_EQ(cloud.size(), 2u);
+  EXPECT_EQ(cloud.positions[1], Eigen::Vector3f(4, 5, 6));
+  EXPECT_EQ(report.dropped_nan, 2u);
+}
+
+TEST(PcdReader, AllNanIsNoPointsNotAnEmptyCloud) {
+  testing::ScratchDirectory dir;
+  const std::string path = dir.file("blind.pcd");
+  testing::write_text(path, pcd_header("x y z", "4 4 4", "F F F", 1, 1, "ascii") + "nan nan nan\n");
+  testing::expect_input_error([&] { read_cloud(path); }, "blind.pcd", 0, "no points");
+}
+
+TEST(PcdReader, BinaryWithNanAndSeparateColourChannels) {
+  testing::ScratchDirectory dir;
+  const std::string path = dir.file("rgb.pcd");
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  std::string body = floats({1, 2, 3});
+  body += std::string("\x0a\x14\x1e\x00", 4);  // r g b and a padding byte "_"
+  body += floats({nan, 0, 0});
+  body += std::string("\x01\x02\x03\x00", 4);
+  body += floats({-1, -2, -3});
+  body += std::string("\xff\x80\x00\x00", 4);
+  testing::write_text(
+      path, pcd_header("x y z r g b _", "4 4 4 1 1 1 1", "F F F U U U U", 3, 1, "binary") + body);
+  CloudReadReport report;
+  const PointCloud cloud = read_cloud(path, {}, &report);
+  ASSERT_EQ(cloud.size(), 2u);
+  EXPECT_EQ(report.dropped_nan, 1u);
+  EXPECT_EQ(cloud.positions[1], Eigen::Vector3f(-1, -2, -3));
+  EXPECT_EQ(cloud.colours[0], (std::array<std::uint8_t, 3>{10, 20, 30}));
+  EXPECT_EQ(cloud.colours[1], (std::array<std::uint8_t, 3>{255, 128, 0}));
+  EXPECT_TRUE(report.extra_fields.empty()) << "padding is not a field";
+}
+
+TEST(PcdReader, PclLabelTypeAndObjectFieldMapToLabelsAndInstances) {
+  testing::ScratchDirectory dir;
+  const std::string path = dir.file("xyzl.pcd");
+  testing::write_text(path, pcd_header("x y z label object curvature", "4 4 4 4 4 4", "F F F U I F",
+                                       2, 1, "ascii") +
+                                "0 0 0 7 3 0.5\n1 1 1 4294967295 -1 0.25\n");
+  CloudReadReport report;
+  const PointCloud cloud = read_cloud(path, {}, &report);
+  EXPECT_EQ(cloud.labels, (std::vector<std::int32_t>{7, -1}));
+  EXPECT_EQ(cloud.instances, (std::vector<std::int32_t>{3, -1}));
+  ASSERT_EQ(report.extra_fields.size(), 1u);
+  EXPECT_EQ(report.extra_fields[0].name, "curvature");
+  EXPECT_EQ(report.extra_fields[0].values, (std::vector<float>{0.5f, 0.25f}));
+}
+
+TEST(PcdReader, FloatColourChannelsAreAnError) {
+  testing::ScratchDirectory dir;
+  const std::string path = dir.file("float_rgb.pcd");
+  testing::write_text(path, pcd_header("x y z r g b", "4 4 4 4 4 4", "F F F F F F", 1, 1, "ascii") +
+                                "0 0 0 0.5 0.5 0.5\n");
+  testing::expect_input_error([&] { read_cloud(path); }, "float_rgb.pcd", 0, "floating point");
+}
+
+TEST(PcdReader, TruncatedBinaryGivesByteOffsets) {
+  testing::ScratchDirectory dir;
+  const std::string path = dir.file("short.pcd");
+  const std::string header = pcd_header("x y z", "4 4 4", "F F F", 3, 1, "binary");
+  testing::write_text(path, header + floats({1, 2, 3, 4, 5}));
+  testing::expect_input_error([&] { read_cloud(path); }, "short.pcd", 0,
+                              "the file ends at byte " + std::to_string(header.size() + 20));
+}
+
+TEST(PcdReader, BinaryLongerThanTheHeaderSaysIsAnError) {
+  testing::ScratchDirectory dir;
+  const std::string path = dir.file("long.pcd");
+  testing::write_text(
+      path, pcd_header("x y z", "4 4 4", "F F F", 1, 1, "binary") + floats({1, 2, 3, 4, 5, 6}));
+  testing::expect_input_error([&] { read_cloud(path); }, "long.pcd", 0, "12 bytes after");
+}
+
+TEST(PcdReader, AsciiErrorsNameTheLine) {
+  testing::ScratchDirectory dir;
+  const std::string path = dir.file("bad.pcd");
+  const std::string header = pcd_header("x y z", "4 4 4", "F F F", 3, 1, "ascii");  // 11 lines
+  testing::write_text(path, header + "1 2 3\n4 x 6\n7 8 9\n");
+  testing::expect_input_error([&] { read_cloud(path); }, "bad.pcd", 13, "'x' is not a number");
+  testing::write_text(path, header + "1 2 3\n4 5\n7 8 9\n");
+  testing::expect_input_error([&] { read_cloud(path); }, "bad.pcd", 13, "2 values");
+  testing::write_text(path, header + "1 2 3\n4 5 6 7\n7 8 9\n");
+  testing::expect_input_error([&] { read_cloud(path); }, "bad.pcd", 13, "more than the 3");
+  testing::write_text(path, header + "1 2 3\n4 5 6\n");
+  testing::expect_input_error([&] { read_cloud(path); }, "bad.pcd", 13,
+                              "ends after 2 of the 3 points");
+  testing::write_text(path, header + "1 2 3\n4 5 6\n7 8 9\n1 1 1\n");
+  testing::expect_input_error([&] { read_cloud(path); }, "bad.pcd", 15, "more data lines");
+}
+
+TEST(PcdReader, CorruptPointCountFailsBeforeAllocating) {
+  testing::ScratchDirectory dir;
+  const std::string path = dir.file("huge.pcd");
+  // 4e9 points of 12 bytes: PCL alone would try to allocate 48 GB.
+  testing::write_text(
+      path, pcd_header("x y z", "4 4 4", "F F F", 4000000000, 1, "binary") + floats({1, 2, 3}));
+  testing::expect_input_error([&] { read_cloud(path); }, "huge.pcd", 0,
+                              "declares 4000000000 points");
+}
+
+TEST(PcdReader, NotAPcdFile) {
+  testing::ScratchDirectory dir;
+  const std::string path = dir.file("text.pcd");
+  testing::write_text(path, "hello\nworld\n");
+  testing::expect_input_error([&] { read_cloud(path); }, "text.pcd", 0, "no DATA line");
+}
+
+TEST(PcdReader, WrongHeaderCountIsAnError) {
+  testing::ScratchDirectory dir;
+  const std::string path = dir.file("fields.pcd");
+  testing::write_text(path, pcd_header("x y z", "4 4", "F F F", 1, 1, "ascii") + "1 2 3\n");
+  testing::expect_input_error([&] { read_cloud(path); }, "fields.pcd", 0, "PCD header");
+}
+
+TEST(PcdReader, MissingCoordinateFieldIsAnError) {
+  testing::ScratchDirectory dir;
+  const std::string path = dir.file("xy.pcd");
+  testing::write_text(path, pcd_header("x y", "4 4", "F F", 1, 1, "ascii") + "1 2\n");
+  testing::expect_input_error([&] { read_cloud(path); }, "xy.pcd", 0, "no 'z' field");
+}
+
+TEST(PcdReader, LabelWithoutAClassNameIsAnError) {
+  testing::ScratchDirectory dir;
+  const std::string path = dir.file("named.pcd");
+  std::string text = pcd_header("x y z label", "4 4 4 4", "F F F I", 2, 1, "ascii");
+  text.insert(text.find('\n') + 1, "# class 0 floor\n# class 1 wall\n");
+  testing::write_text(path, text + "0 0 0 1\n1 1 1 2\n");
+  testing::expect_input_error([&] { read_cloud(path); }, "named.pcd", 15, "label 2 has no class");
+}
+
+}  // namespace
+}  // namespace occlusion
