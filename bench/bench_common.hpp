@@ -1,6 +1,6 @@
 #pragma once
-// Timing, formatting and CLI-running helpers of the bench tools (bench_moc
-// keeps its own copies of the first ones).
+// Timing, formatting and CLI-running helpers of the bench tools (bench_moc,
+// bench_poc), so that both report figures measured the same way.
 
 #include <algorithm>
 #include <chrono>

@@ -10,15 +10,14 @@
 #include <cstdio>
 #include <exception>
 #include <filesystem>
-#include <limits>
 #include <optional>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include <json/json.h>
 
 #include "bench_args.hpp"
+#include "bench_common.hpp"
 #include "child_process.hpp"
 #include "embree_scene.hpp"
 #include "moc_replay.hpp"
@@ -35,7 +34,6 @@ using namespace occlusion;
 using namespace occlusion::bench;
 namespace fs = std::filesystem;
 
-constexpr int kRepetitions = 3;
 constexpr int kPattern = 7;
 constexpr const char* kUsage =
     "usage: bench_moc [--triangles N] [--samples N] [--threads T] [--seed S] [--cli PATH]\n";
@@ -73,59 +71,6 @@ Options parse(int argc, char** argv) {
   return o;
 }
 
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-template <class F>
-double best_of(F&& run) {
-  double best = std::numeric_limits<double>::infinity();
-  for (int k = 0; k < kRepetitions; ++k) best = std::min(best, run());
-  return best;
-}
-
-std::string grouped(std::size_t n) {
-  std::string digits = std::to_string(n);
-  for (int at = static_cast<int>(digits.size()) - 3; at > 0; at -= 3) digits.insert(at, ",");
-  return digits;
-}
-
-std::string exact(double value) {
-  std::ostringstream text;
-  text.precision(17);
-  text << value;
-  return text.str();
-}
-
-double mib(std::size_t bytes) {
-  return static_cast<double>(bytes) / (1024.0 * 1024.0);
-}
-
-struct CliRun {
-  ChildResult best;
-  Json::Value json;
-};
-
-// Best wall time of kRepetitions runs; a failed run ends the series.
-CliRun run_cli(const std::vector<std::string>& argv, const std::string& capture_prefix) {
-  CliRun run;
-  run.best.wall_seconds = std::numeric_limits<double>::infinity();
-  for (int k = 0; k < kRepetitions; ++k) {
-    ChildResult r = run_measured(argv, capture_prefix);
-    if (r.exit_code != 0) {
-      run.best = std::move(r);
-      return run;
-    }
-    if (r.wall_seconds < run.best.wall_seconds) run.best = std::move(r);
-  }
-  std::istringstream in(run.best.out);
-  std::string errors;
-  if (!Json::parseFromStream(Json::CharReaderBuilder(), in, &run.json, &errors)) {
-    run.json = Json::Value();
-  }
-  return run;
-}
-
 int run(const Options& o) {
   const fs::path bench_dir = fs::read_symlink("/proc/self/exe").parent_path();
   const std::string cli = o.cli.empty() ? (bench_dir.parent_path() / "occlusion").string() : o.cli;
@@ -155,8 +100,7 @@ int run(const Options& o) {
   moc.samples_per_unit_area = density;
   moc.seed = o.seed;
   moc.threads = o.threads;
-  const ShadowRays shadow =
-      make_shadow_rays(samples, viewpoints, moc.epsilon_scale * (hi - lo).norm());
+  const ShadowRays shadow = make_shadow_rays(samples, viewpoints, mesh_shadow_epsilon(mesh, moc));
   const std::size_t n = shadow.rays.size();
 
   std::fprintf(stderr, "bench_moc: our octree ...\n");

@@ -1,7 +1,5 @@
 #include "cloud_replay.hpp"
 
-#include <limits>
-
 #include "moc_replay.hpp"
 #include "occlusion/analysis/mesh_sampling.hpp"
 #include "occlusion/analysis/sphere_directions.hpp"
@@ -23,13 +21,7 @@ std::vector<Ray> make_poc_rays(const std::vector<Eigen::Vector3d>& viewpoints,
   for (std::size_t v = 0; v < viewpoints.size(); ++v) {
     const SphereDirections directions(options.sampling, per_view, options.seed, v);
     for (std::size_t k = 0; k < per_view; ++k) {
-      // Formed in double and rounded once, as the analysis does.
-      const Eigen::Vector3d d = directions(k);
-      Ray& ray = rays[v * per_view + k];
-      ray.origin = (viewpoints[v] + options.light_radius * d).cast<float>();
-      ray.direction = d.cast<float>();
-      ray.t_min = 0.0f;
-      ray.t_max = std::numeric_limits<float>::infinity();
+      rays[v * per_view + k] = light_source_ray(viewpoints[v], directions(k), options.light_radius);
     }
   }
   return rays;
@@ -43,9 +35,6 @@ double poc_level_from_hits(const std::uint8_t* hit, std::size_t count) {
 
 ScanRays make_scan_rays(const PointCloud& cloud, const std::vector<Eigen::Vector3d>& viewpoints,
                         const ScanOptions& options) {
-  const double radius = options.point_radius;
-  const double tolerance = options.self_tolerance < 0.0 ? 2.0 * radius : options.self_tolerance;
-  const double near_viewpoint = 2.0 * radius;
   ScanRays out;
   out.points = cloud.size();
   out.viewpoints = viewpoints.size();
@@ -53,19 +42,8 @@ ScanRays make_scan_rays(const PointCloud& cloud, const std::vector<Eigen::Vector
   out.ignore.resize(out.rays.size());
   for (std::size_t v = 0; v < out.viewpoints; ++v) {
     for (std::size_t i = 0; i < out.points; ++i) {
-      const Eigen::Vector3d direction = cloud.positions[i].cast<double>() - viewpoints[v];
-      const double length = direction.norm();
-      Ray& ray = out.rays[v * out.points + i];
-      ray.origin = viewpoints[v].cast<float>();
-      ray.direction = direction.cast<float>();
+      out.rays[v * out.points + i] = scan_shadow_ray(viewpoints[v], cloud.positions[i], options);
       out.ignore[v * out.points + i] = static_cast<PrimitiveId>(i);
-      if (length > near_viewpoint + tolerance) {
-        ray.t_min = static_cast<float>(near_viewpoint / length);
-        ray.t_max = static_cast<float>(1.0 - tolerance / length);
-      } else {
-        ray.t_min = 1.0f;
-        ray.t_max = 0.0f;
-      }
     }
   }
   return out;

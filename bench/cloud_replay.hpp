@@ -23,8 +23,8 @@ namespace occlusion::bench {
 PointCloud sample_point_cloud(const TriangleMesh& mesh, std::size_t points, std::uint64_t seed);
 
 // The rays of compute_cloud_occlusion, viewpoint-major: ray k of viewpoint v is
-// rays[v * num_rays_per_vp + k], from viewpoint + light_radius * d_k along the
-// unit direction d_k, over [0, infinity), closest hit, ignoring nothing.
+// rays[v * num_rays_per_vp + k], the analysis' own light_source_ray along
+// SphereDirections' d_k; traced for the closest hit, ignoring nothing.
 std::vector<Ray> make_poc_rays(const std::vector<Eigen::Vector3d>& viewpoints,
                                const CloudOcclusionOptions& options);
 
@@ -41,8 +41,7 @@ struct ScanRays {
   std::size_t viewpoints = 0;
 };
 
-// The shadow rays of scan_cloud: [2 r / |d|, 1 - tolerance / |d|], or the empty
-// interval [1, 0] for a point within 2 r + tolerance of the viewpoint.
+// The shadow rays of scan_cloud, each the analysis' own scan_shadow_ray.
 ScanRays make_scan_rays(const PointCloud& cloud, const std::vector<Eigen::Vector3d>& viewpoints,
                         const ScanOptions& options);
 

@@ -6,28 +6,23 @@
 // or the exit point when the entry lies before tnear. Its ray interval
 // [tnear, tfar] plays the part of [t_min, t_max]; it cannot skip a point by id.
 
-#include <embree3/rtcore.h>
-
 #include <cstddef>
-#include <cstdint>
 #include <optional>
-#include <string>
 #include <vector>
 
+#include "embree_common.hpp"
 #include "occlusion/core/hit.hpp"
 #include "occlusion/core/ray.hpp"
 #include "occlusion/core/sphere.hpp"
 
 namespace occlusion::bench {
 
-class EmbreePoints {
+// occluded() (any point on the ray) and version() come from EmbreeTracer.
+class EmbreePoints : public EmbreeTracer {
  public:
   // A device whose builds use `threads` threads. Throws std::runtime_error on
   // an Embree error, or if this Embree was built without point geometry.
   explicit EmbreePoints(unsigned threads);
-  ~EmbreePoints();
-  EmbreePoints(const EmbreePoints&) = delete;
-  EmbreePoints& operator=(const EmbreePoints&) = delete;
 
   // (Re)builds the scene from the spheres (vertex format FLOAT4: x, y, z,
   // radius); primitive id i is spheres[i]. Returns the seconds from empty scene
@@ -37,16 +32,6 @@ class EmbreePoints {
   // hits[i] = rtcIntersect1's closest hit on rays[i] (t and primID), or none.
   void intersect(const Ray* rays, std::size_t count, std::optional<Hit>* hits,
                  unsigned threads) const;
-  // occluded[i] = 1 iff rtcOccluded1 finds any point on rays[i].
-  void occluded(const Ray* rays, std::size_t count, std::uint8_t* occluded, unsigned threads) const;
-
-  static std::string version() { return RTC_VERSION_STRING; }
-
- private:
-  void check(const char* what) const;
-
-  RTCDevice device_ = nullptr;
-  RTCScene scene_ = nullptr;
 };
 
 }  // namespace occlusion::bench

@@ -4,6 +4,8 @@
 #include <cstddef>
 #include <stdexcept>
 
+#include "occlusion/analysis/mesh_occlusion.hpp"
+
 namespace occlusion::bench {
 
 ShadowRays make_shadow_rays(const MeshSamples& samples,
@@ -16,15 +18,8 @@ ShadowRays make_shadow_rays(const MeshSamples& samples,
   out.slot.reserve(out.rays.capacity());
   for (std::size_t s = 0; s < out.samples; ++s) {
     for (std::size_t v = 0; v < out.viewpoints; ++v) {
-      // The offset is formed in double and rounded once, as the analysis does.
-      const Eigen::Vector3d d = viewpoints[v] - samples.points[s];
-      const double length = d.norm();
-      if (length <= 2.0 * epsilon) continue;
       Ray ray;
-      ray.origin = samples.points[s].cast<float>();
-      ray.direction = d.cast<float>();
-      ray.t_min = static_cast<float>(epsilon / length);
-      ray.t_max = static_cast<float>(1.0 - epsilon / length);
+      if (!mesh_shadow_ray(samples.points[s], viewpoints[v], epsilon, ray)) continue;
       out.rays.push_back(ray);
       out.ignore.push_back(samples.face[s]);
       out.slot.push_back(s * out.viewpoints + v);

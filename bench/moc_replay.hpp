@@ -27,8 +27,7 @@ struct ShadowRays {
   std::size_t viewpoints = 0;
 };
 
-// direction = viewpoint - sample (t = 1 at the viewpoint), and the interval
-// [eps / |d|, 1 - eps / |d|] keeps `epsilon` metres clear at both ends.
+// Each ray is the analysis' own (mesh_shadow_ray); pass mesh_shadow_epsilon.
 ShadowRays make_shadow_rays(const MeshSamples& samples,
                             const std::vector<Eigen::Vector3d>& viewpoints, double epsilon);
 

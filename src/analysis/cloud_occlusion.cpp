@@ -7,6 +7,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "analysis_support.hpp"
 #include "occlusion/core/parallel.hpp"
 #include "occlusion/core/sphere_octree.hpp"
 
@@ -14,11 +15,8 @@ namespace occlusion {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
+using analysis_support::Clock;
+using analysis_support::seconds_since;
 
 // Per-ray state lives only for one block, so memory does not grow with the
 // number of rays; a block is still large enough to keep every core busy.
@@ -31,13 +29,8 @@ void check_inputs(const PointCloud& cloud, const std::vector<Eigen::Vector3d>& v
                   const CloudOcclusionOptions& options) {
   cloud.validate();
   if (cloud.size() == 0) throw std::invalid_argument("cloud occlusion: the cloud has no points");
-  if (viewpoints.empty()) throw std::invalid_argument("cloud occlusion: no viewpoints given");
-  for (const auto& vp : viewpoints) {
-    if (!vp.allFinite()) throw std::invalid_argument("cloud occlusion: a viewpoint is not finite");
-  }
-  if (!std::isfinite(options.point_radius) || options.point_radius <= 0.0) {
-    throw std::invalid_argument("cloud occlusion: point_radius must be a finite number > 0");
-  }
+  analysis_support::check_viewpoints(viewpoints, "cloud occlusion");
+  analysis_support::check_positive(options.point_radius, "point_radius", "cloud occlusion");
   if (options.num_rays_per_vp == 0) {
     throw std::invalid_argument("cloud occlusion: num_rays_per_vp must be > 0");
   }
@@ -76,6 +69,16 @@ RayClass classify(const Ray& ray, const std::optional<Hit>& hit,
 }
 
 }  // namespace
+
+Ray light_source_ray(const Eigen::Vector3d& viewpoint, const Eigen::Vector3d& direction,
+                     double light_radius) {
+  Ray ray;
+  ray.origin = (viewpoint + light_radius * direction).cast<float>();
+  ray.direction = direction.cast<float>();
+  ray.t_min = 0.0f;
+  ray.t_max = std::numeric_limits<float>::infinity();
+  return ray;
+}
 
 CloudOcclusionResult compute_cloud_occlusion(const PointCloud& cloud,
                                              const std::vector<Eigen::Vector3d>& viewpoints,
@@ -119,11 +122,8 @@ CloudOcclusionResult compute_cloud_occlusion(const PointCloud& cloud,
       for (std::size_t i = b; i < e; ++i) {
         const std::size_t r = block + i;
         const std::size_t v = r / per_view;
-        const Eigen::Vector3d d = directions[v](r % per_view);
-        rays[i].origin = (viewpoints[v] + options.light_radius * d).cast<float>();
-        rays[i].direction = d.cast<float>();
-        rays[i].t_min = 0.0f;
-        rays[i].t_max = std::numeric_limits<float>::infinity();
+        rays[i] =
+            light_source_ray(viewpoints[v], directions[v](r % per_view), options.light_radius);
       }
     });
     tree.intersect_batch(rays.data(), block_size, nullptr, hits.data(), options.threads);

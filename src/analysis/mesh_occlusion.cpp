@@ -5,17 +5,15 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "analysis_support.hpp"
 #include "occlusion/analysis/mesh_sampling.hpp"
 
 namespace occlusion {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
+using analysis_support::Clock;
+using analysis_support::seconds_since;
 
 // Rays are traced in blocks so that progress and cancellation are checked
 // between blocks while each block still keeps every core busy.
@@ -25,18 +23,19 @@ void check_inputs(const TriangleMesh& mesh, const std::vector<Eigen::Vector3d>& 
                   const MeshOcclusionOptions& options) {
   mesh.validate();
   if (mesh.faces.empty()) throw std::invalid_argument("mesh occlusion: the mesh has no faces");
-  if (viewpoints.empty()) throw std::invalid_argument("mesh occlusion: no viewpoints given");
-  for (const auto& vp : viewpoints) {
-    if (!vp.allFinite()) throw std::invalid_argument("mesh occlusion: a viewpoint is not finite");
-  }
-  if (!std::isfinite(options.epsilon_scale) || options.epsilon_scale <= 0.0) {
-    throw std::invalid_argument("mesh occlusion: epsilon_scale must be a finite number > 0");
-  }
+  analysis_support::check_viewpoints(viewpoints, "mesh occlusion");
+  analysis_support::check_positive(options.epsilon_scale, "epsilon_scale", "mesh occlusion");
 }
 
-// The shadow ray from a sample to a viewpoint, or false when the two are closer
-// than the tolerance (the sample is then trivially visible).
-bool make_shadow_ray(const Eigen::Vector3d& sample, const Eigen::Vector3d& viewpoint,
+}  // namespace
+
+double mesh_shadow_epsilon(const TriangleMesh& mesh, const MeshOcclusionOptions& options) {
+  Eigen::Vector3d lo, hi;
+  mesh.bounds(lo, hi);
+  return options.epsilon_scale * std::max((hi - lo).norm(), 1e-30);
+}
+
+bool mesh_shadow_ray(const Eigen::Vector3d& sample, const Eigen::Vector3d& viewpoint,
                      double epsilon, Ray& ray) {
   const Eigen::Vector3d direction = viewpoint - sample;
   const double length = direction.norm();
@@ -47,8 +46,6 @@ bool make_shadow_ray(const Eigen::Vector3d& sample, const Eigen::Vector3d& viewp
   ray.t_max = static_cast<float>(1.0 - epsilon / length);
   return true;
 }
-
-}  // namespace
 
 MeshOcclusionResult compute_mesh_occlusion(const TriangleMesh& mesh,
                                            const std::vector<Eigen::Vector3d>& viewpoints,
@@ -70,9 +67,7 @@ MeshOcclusionResult compute_mesh_occlusion(const TriangleMesh& mesh,
   result.octree = tree.stats();
   progress.check_cancel();
 
-  Eigen::Vector3d lo, hi;
-  mesh.bounds(lo, hi);
-  const double epsilon = options.epsilon_scale * std::max((hi - lo).norm(), 1e-30);
+  const double epsilon = mesh_shadow_epsilon(mesh, options);
 
   start = Clock::now();
   const std::size_t view_count = viewpoints.size();
@@ -92,7 +87,7 @@ MeshOcclusionResult compute_mesh_occlusion(const TriangleMesh& mesh,
     for (std::size_t r = block; r < block_end; ++r) {
       const std::size_t s = r / view_count;
       Ray ray;
-      if (!make_shadow_ray(samples.points[s], viewpoints[r % view_count], epsilon, ray)) {
+      if (!mesh_shadow_ray(samples.points[s], viewpoints[r % view_count], epsilon, ray)) {
         seen[r] = 1;
         continue;
       }

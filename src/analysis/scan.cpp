@@ -6,6 +6,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "analysis_support.hpp"
 #include "occlusion/core/parallel.hpp"
 #include "occlusion/core/sphere_octree.hpp"
 
@@ -13,11 +14,8 @@ namespace occlusion {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
+using analysis_support::Clock;
+using analysis_support::seconds_since;
 
 // Blocks bound the per-ray memory and set how often progress and cancel are checked.
 constexpr std::size_t kRaysPerBlock = std::size_t{1} << 16;
@@ -27,17 +25,12 @@ void check_inputs(const PointCloud& cloud, const std::vector<Eigen::Vector3d>& v
                   const ScanOptions& options) {
   cloud.validate();
   if (cloud.size() == 0) throw std::invalid_argument("scan: the cloud has no points");
-  if (viewpoints.empty()) throw std::invalid_argument("scan: no viewpoints given");
   if (viewpoints.size() > std::numeric_limits<std::uint16_t>::max()) {
     throw std::invalid_argument("scan: at most 65535 viewpoints, got " +
                                 std::to_string(viewpoints.size()));
   }
-  for (const auto& vp : viewpoints) {
-    if (!vp.allFinite()) throw std::invalid_argument("scan: a viewpoint is not finite");
-  }
-  if (!std::isfinite(options.point_radius) || options.point_radius <= 0.0) {
-    throw std::invalid_argument("scan: point_radius must be a finite number > 0");
-  }
+  analysis_support::check_viewpoints(viewpoints, "scan");
+  analysis_support::check_positive(options.point_radius, "point_radius", "scan");
   if (std::isnan(options.self_tolerance) || std::isinf(options.self_tolerance)) {
     throw std::invalid_argument("scan: self_tolerance must be a finite number");
   }
@@ -45,19 +38,37 @@ void check_inputs(const PointCloud& cloud, const std::vector<Eigen::Vector3d>& v
 
 }  // namespace
 
-ScanResult scan_cloud(const PointCloud& cloud, const std::vector<Eigen::Vector3d>& viewpoints,
-                      const ScanOptions& options, const Progress& progress) {
-  check_inputs(cloud, viewpoints, options);
-  ScanResult result;
+Ray scan_shadow_ray(const Eigen::Vector3d& viewpoint, const Eigen::Vector3f& point,
+                    const ScanOptions& options) {
   const double radius = options.point_radius;
   const double tolerance = options.self_tolerance < 0.0 ? 2.0 * radius : options.self_tolerance;
   // Any sphere holding the viewpoint ends within 2 r of it, so ignoring that
   // much of each ray lets a viewpoint placed inside (or on) a point see out.
   const double near_viewpoint = 2.0 * radius;
+  const Eigen::Vector3d direction = point.cast<double>() - viewpoint;
+  const double length = direction.norm();
+  Ray ray;
+  ray.origin = viewpoint.cast<float>();
+  ray.direction = direction.cast<float>();
+  if (length > near_viewpoint + tolerance) {
+    ray.t_min = static_cast<float>(near_viewpoint / length);
+    ray.t_max = static_cast<float>(1.0 - tolerance / length);
+  } else {
+    // Too close to the viewpoint to be hidden: an empty interval.
+    ray.t_min = 1.0f;
+    ray.t_max = 0.0f;
+  }
+  return ray;
+}
+
+ScanResult scan_cloud(const PointCloud& cloud, const std::vector<Eigen::Vector3d>& viewpoints,
+                      const ScanOptions& options, const Progress& progress) {
+  check_inputs(cloud, viewpoints, options);
+  ScanResult result;
 
   auto start = Clock::now();
   progress("building octree", 0.0);
-  const SphereOctree tree(make_spheres(cloud.positions, static_cast<float>(radius)),
+  const SphereOctree tree(make_spheres(cloud.positions, static_cast<float>(options.point_radius)),
                           options.octree);
   result.build_seconds = seconds_since(start);
   result.octree = tree.stats();
@@ -83,22 +94,8 @@ ScanResult scan_cloud(const PointCloud& cloud, const std::vector<Eigen::Vector3d
       for (std::size_t i = b; i < e; ++i) {
         const std::size_t r = block + i;
         const std::size_t point = r % points;
-        const Eigen::Vector3d& viewpoint = viewpoints[r / points];
-        const Eigen::Vector3d direction = cloud.positions[point].cast<double>() - viewpoint;
-        const double length = direction.norm();
-        Ray& ray = rays[i];
-        ray.origin = viewpoint.cast<float>();
-        ray.direction = direction.cast<float>();
+        rays[i] = scan_shadow_ray(viewpoints[r / points], cloud.positions[point], options);
         ignore[i] = static_cast<PrimitiveId>(point);
-        if (length > near_viewpoint + tolerance) {
-          ray.t_min = static_cast<float>(near_viewpoint / length);
-          ray.t_max = static_cast<float>(1.0 - tolerance / length);
-        } else {
-          // Too close to the viewpoint to be hidden: an empty interval, which
-          // the octree answers with "not occluded" at once.
-          ray.t_min = 1.0f;
-          ray.t_max = 0.0f;
-        }
       }
     });
     tree.occluded_batch(rays.data(), block_size, ignore.data(), blocked.data(), options.threads);

@@ -92,15 +92,9 @@ void validate(const CloudOcclusionRequest& request) {
   if (request.num_rays_per_vp == 0 || request.num_rays_per_vp > 100'000'000) {
     throw UsageError("--num-rays-per-vp must be 1..100000000");
   }
-  if (!std::isfinite(request.point_radius) || request.point_radius <= 0.0) {
-    throw UsageError("--point-radius must be a number > 0");
-  }
-  if (!std::isfinite(request.octree_resolution) || request.octree_resolution < 0.0) {
-    throw UsageError("--octree-resolution must be a number >= 0");
-  }
-  if (!std::isfinite(request.light_radius) || request.light_radius < 0.0) {
-    throw UsageError("--light-radius must be a number >= 0");
-  }
+  job::require_positive(request.point_radius, "--point-radius");
+  job::require_non_negative(request.octree_resolution, "--octree-resolution");
+  job::require_non_negative(request.light_radius, "--light-radius");
   parse_sampling(request.sampling);
   if (request.exterior && request.exterior_classes.empty()) {
     throw UsageError("--exterior-classes must name at least one class");
@@ -118,6 +112,7 @@ void apply_config(const Config& config, CloudOcclusionRequest& request) {
   section.read("enable_acceleration", request.enable_acceleration);
   section.read("sampling", request.sampling);
   section.read("light_radius", request.light_radius);
+  section.read("escape_directions", request.escape_directions);
   section.read("exterior", request.exterior);
   section.read("exterior_classes", request.exterior_classes);
   section.read("skip_bad_lines", request.skip_bad_lines);
@@ -134,12 +129,10 @@ CloudOcclusionReport run_cloud_occlusion(const CloudOcclusionRequest& request,
   report.request = request;
 
   progress("loading", 0.0);
-  CloudReadOptions read_options;
-  read_options.skip_bad_lines = request.skip_bad_lines;
-  CloudReadReport read_report;
-  const PointCloud cloud = read_cloud(request.path, read_options, &read_report);
-  report.dropped_nan = read_report.dropped_nan;
-  report.skipped_lines = read_report.skipped_lines;
+  const job::LoadedCloud loaded = job::load_cloud(request.path, request.skip_bad_lines);
+  const PointCloud& cloud = loaded.cloud;
+  report.dropped_nan = loaded.dropped_nan;
+  report.skipped_lines = loaded.skipped_lines;
   std::vector<PlanarPolygon> openings;
   if (!request.polygon_path.empty()) {
     for (const auto& boundary : read_polygons(request.polygon_path)) {
@@ -167,7 +160,7 @@ CloudOcclusionReport run_cloud_occlusion(const CloudOcclusionRequest& request,
   options.octree.enable_acceleration = request.enable_acceleration;
   options.seed = request.seed;
   options.threads = request.threads;
-  options.keep_escape_directions = !request.out.empty();
+  options.keep_escape_directions = request.escape_directions || !request.out.empty();
   report.result = compute_cloud_occlusion(cloud, viewpoints.positions, openings, options, progress);
 
   if (request.exterior) {
@@ -191,8 +184,7 @@ CloudOcclusionReport run_cloud_occlusion(const CloudOcclusionRequest& request,
     write_escapes(escapes_path, report.result);
     report.outputs = {json_path, escapes_path};
     report.total_seconds = job::seconds_since(start);
-    const Json::Value json = to_json(report);
-    write_file_atomically(json_path, [&](std::ostream& out) { out << format_json(json) << '\n'; });
+    job::write_json_report(json_path, to_json(report));
   }
   report.total_seconds = job::seconds_since(start);
   return report;

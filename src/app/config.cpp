@@ -46,6 +46,7 @@ const std::map<std::string, Schema>& sections() {
         {"enable_acceleration", KeyType::kBool},
         {"sampling", KeyType::kString},
         {"light_radius", KeyType::kNumber},
+        {"escape_directions", KeyType::kBool},
         {"exterior", KeyType::kBool},
         {"exterior_classes", KeyType::kStringList},
         {"self_tolerance", KeyType::kNumber},
@@ -58,6 +59,36 @@ const std::map<std::string, Schema>& sections() {
        {{"path", KeyType::kString},
         {"format", KeyType::kString},
         {"skip_bad_lines", KeyType::kBool},
+        {"out", KeyType::kString}}},
+      {"region_growing",
+       {{"path", KeyType::kString},
+        {"pattern", KeyType::kUnsigned},
+        {"viewpoints", KeyType::kPointList},
+        {"num_vp", KeyType::kUnsigned},
+        {"normal_k", KeyType::kUnsigned},
+        {"min_cluster_size", KeyType::kUnsigned},
+        {"max_cluster_size", KeyType::kUnsigned},
+        {"neighbours", KeyType::kUnsigned},
+        {"smoothness_degrees", KeyType::kNumber},
+        {"curvature_threshold", KeyType::kNumber},
+        {"ransac_distance", KeyType::kNumber},
+        {"ransac_iterations", KeyType::kUnsigned},
+        {"recover_edges", KeyType::kBool},
+        {"samples_per_unit_area", KeyType::kNumber},
+        {"octree_resolution", KeyType::kNumber},
+        {"enable_acceleration", KeyType::kBool},
+        {"seed", KeyType::kUnsigned},
+        {"threads", KeyType::kUnsigned},
+        {"skip_bad_lines", KeyType::kBool},
+        {"out", KeyType::kString}}},
+      {"evaluate",
+       {{"ground_truth", KeyType::kStringList},
+        {"predictions", KeyType::kStringList},
+        {"mapping_path", KeyType::kString},
+        {"ignored_classes", KeyType::kStringList},
+        {"max_distance", KeyType::kNumber},
+        {"skip_bad_lines", KeyType::kBool},
+        {"threads", KeyType::kUnsigned},
         {"out", KeyType::kString}}},
   };
   return kSections;
@@ -175,6 +206,16 @@ Config load_config(const std::string& path) {
   return config;
 }
 
+Config config_from_json(const Json::Value& root, const std::string& directory,
+                        const std::string& name) {
+  Config config;
+  config.root = root;
+  config.directory = directory;
+  config.path = name;
+  check(config);
+  return config;
+}
+
 ConfigSection::ConfigSection(const Config& config, const std::string& name)
     : config_(config), name_(name), body_(config.root["occlusion"][name]) {}
 
@@ -187,7 +228,9 @@ void ConfigSection::read(const std::string& key, std::string& out) const {
 }
 
 void ConfigSection::read_path(const std::string& key, std::string& out) const {
-  if (has(key)) out = resolve(config_, body_[key].asString());
+  if (!has(key)) return;
+  const std::string path = body_[key].asString();
+  out = path.empty() ? path : resolve(config_, path);
 }
 
 void ConfigSection::read(const std::string& key, double& out) const {

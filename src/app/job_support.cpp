@@ -1,9 +1,12 @@
 #include "job_support.hpp"
 
+#include <cmath>
 #include <filesystem>
 
 #include "occlusion/app/errors.hpp"
 #include "occlusion/app/json_output.hpp"
+#include "occlusion/io/atomic_file.hpp"
+#include "occlusion/io/cloud_io.hpp"
 
 namespace occlusion::job {
 
@@ -32,6 +35,30 @@ Json::Value viewpoint_json(const std::string& name, const Eigen::Vector3d& posit
 std::string cloud_extension(const std::string& format) {
   if (format == "ply" || format == "pcd") return format;
   throw UsageError("--format must be ply or pcd, got '" + format + "'");
+}
+
+void require_positive(double value, const std::string& option) {
+  if (!std::isfinite(value) || value <= 0.0) throw UsageError(option + " must be a number > 0");
+}
+
+void require_non_negative(double value, const std::string& option) {
+  if (!std::isfinite(value) || value < 0.0) throw UsageError(option + " must be a number >= 0");
+}
+
+void write_json_report(const std::string& path, const Json::Value& json) {
+  write_file_atomically(path, [&](std::ostream& out) { out << format_json(json) << '\n'; });
+}
+
+LoadedCloud load_cloud(const std::string& path, bool skip_bad_lines) {
+  CloudReadOptions options;
+  options.skip_bad_lines = skip_bad_lines;
+  CloudReadReport report;
+  LoadedCloud loaded;
+  loaded.cloud = read_cloud(path, options, &report);
+  loaded.dropped_nan = report.dropped_nan;
+  loaded.skipped_lines = report.skipped_lines;
+  loaded.rooms = report.rooms;
+  return loaded;
 }
 
 }  // namespace occlusion::job

@@ -31,4 +31,20 @@ Json::Value viewpoint_json(const std::string& name, const Eigen::Vector3d& posit
 // Throws UsageError unless format is "ply" or "pcd"; returns the file extension.
 std::string cloud_extension(const std::string& format);
 
+// Option checks shared by the jobs; each throws UsageError naming the option.
+void require_positive(double value, const std::string& option);
+void require_non_negative(double value, const std::string& option);
+
+// Writes a job's JSON report atomically.
+void write_json_report(const std::string& path, const Json::Value& json);
+
+// A cloud as the point-cloud jobs load it, with what reading dropped or skipped.
+struct LoadedCloud {
+  PointCloud cloud;
+  std::size_t dropped_nan = 0;
+  std::size_t skipped_lines = 0;
+  std::vector<std::string> rooms;
+};
+LoadedCloud load_cloud(const std::string& path, bool skip_bad_lines);
+
 }  // namespace occlusion::job

@@ -35,12 +35,8 @@ void write_face_csv(const std::string& path, const TriangleMesh& mesh,
 void validate(const MeshOcclusionRequest& request) {
   if (request.path.empty()) throw UsageError("no mesh given (-moc MESH or occlusion.mesh.path)");
   request.viewpoints.validate();
-  if (!std::isfinite(request.samples_per_unit_area) || request.samples_per_unit_area <= 0.0) {
-    throw UsageError("--samples-per-unit-area must be a number > 0");
-  }
-  if (!std::isfinite(request.octree_resolution) || request.octree_resolution < 0.0) {
-    throw UsageError("--octree-resolution must be a number >= 0");
-  }
+  job::require_positive(request.samples_per_unit_area, "--samples-per-unit-area");
+  job::require_non_negative(request.octree_resolution, "--octree-resolution");
 }
 
 void apply_config(const Config& config, MeshOcclusionRequest& request) {
@@ -97,8 +93,7 @@ MeshOcclusionReport run_mesh_occlusion(const MeshOcclusionRequest& request,
     write_face_csv(csv_path, mesh, report);
     report.outputs = {json_path, ply_path, csv_path};
     report.total_seconds = job::seconds_since(start);
-    const Json::Value json = to_json(report);
-    write_file_atomically(json_path, [&](std::ostream& out) { out << format_json(json) << '\n'; });
+    job::write_json_report(json_path, to_json(report));
   }
   report.total_seconds = job::seconds_since(start);
   return report;

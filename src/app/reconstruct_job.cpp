@@ -34,17 +34,15 @@ ReconstructReport run_reconstruct(const ReconstructRequest& request, const Progr
   report.request = request;
 
   progress("reading", 0.0);
-  CloudReadOptions read_options;
-  read_options.skip_bad_lines = request.skip_bad_lines;
-  CloudReadReport read_report;
-  const PointCloud cloud = read_cloud(request.path, read_options, &read_report);
+  const job::LoadedCloud loaded = job::load_cloud(request.path, request.skip_bad_lines);
+  const PointCloud& cloud = loaded.cloud;
   if (!cloud.has_labels()) {
     throw UsageError(request.path + " is not an S3DIS room or Area folder (no Annotations found)");
   }
   report.points = cloud.size();
-  report.rooms = read_report.rooms;
-  report.dropped_nan = read_report.dropped_nan;
-  report.skipped_lines = read_report.skipped_lines;
+  report.rooms = loaded.rooms;
+  report.dropped_nan = loaded.dropped_nan;
+  report.skipped_lines = loaded.skipped_lines;
   progress.check_cancel();
 
   report.classes.resize(cloud.class_names.size());
@@ -69,8 +67,7 @@ ReconstructReport run_reconstruct(const ReconstructRequest& request, const Progr
   write_cloud(cloud_path, cloud);
   report.outputs = {cloud_path, json_path};
   report.total_seconds = job::seconds_since(start);
-  const Json::Value json = to_json(report);
-  write_file_atomically(json_path, [&](std::ostream& out) { out << format_json(json) << '\n'; });
+  job::write_json_report(json_path, to_json(report));
   progress("done", 1.0);
   return report;
 }
@@ -95,6 +92,7 @@ Json::Value to_json(const ReconstructReport& report) {
   json["skipped_lines"] = Json::UInt64(report.skipped_lines);
   json["format"] = report.request.format;
   json["outputs"] = to_json(report.outputs);
+  json["warnings"] = to_json(report.warnings);
   json["timings"]["total_seconds"] = report.total_seconds;
   return json;
 }

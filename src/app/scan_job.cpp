@@ -43,15 +43,11 @@ void validate(const ScanRequest& request) {
     throw UsageError("no cloud given (-fscan CLOUD or occlusion.point_cloud.path)");
   }
   request.viewpoints.validate();
-  if (!std::isfinite(request.point_radius) || request.point_radius <= 0.0) {
-    throw UsageError("--point-radius must be a number > 0");
-  }
+  job::require_positive(request.point_radius, "--point-radius");
   if (!std::isfinite(request.self_tolerance)) {
     throw UsageError("--self-tolerance must be a number (negative: 2 x point radius)");
   }
-  if (!std::isfinite(request.octree_resolution) || request.octree_resolution < 0.0) {
-    throw UsageError("--octree-resolution must be a number >= 0");
-  }
+  job::require_non_negative(request.octree_resolution, "--octree-resolution");
   job::cloud_extension(request.format);
 }
 
@@ -76,12 +72,10 @@ ScanReport run_scan(const ScanRequest& request, const Progress& progress) {
   report.request = request;
 
   progress("loading", 0.0);
-  CloudReadOptions read_options;
-  read_options.skip_bad_lines = request.skip_bad_lines;
-  CloudReadReport read_report;
-  const PointCloud cloud = read_cloud(request.path, read_options, &read_report);
-  report.dropped_nan = read_report.dropped_nan;
-  report.skipped_lines = read_report.skipped_lines;
+  const job::LoadedCloud loaded = job::load_cloud(request.path, request.skip_bad_lines);
+  const PointCloud& cloud = loaded.cloud;
+  report.dropped_nan = loaded.dropped_nan;
+  report.skipped_lines = loaded.skipped_lines;
   report.load_seconds = job::seconds_since(start);
   progress.check_cancel();
 
@@ -118,8 +112,7 @@ ScanReport run_scan(const ScanRequest& request, const Progress& progress) {
     write_cloud(full_path, cloud, {visible_count});
     report.outputs = {json_path, scanned_path, full_path};
     report.total_seconds = job::seconds_since(start);
-    const Json::Value json = to_json(report);
-    write_file_atomically(json_path, [&](std::ostream& out) { out << format_json(json) << '\n'; });
+    job::write_json_report(json_path, to_json(report));
   }
   report.total_seconds = job::seconds_since(start);
   return report;

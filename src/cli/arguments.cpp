@@ -33,6 +33,18 @@ bool parse_bool(const std::string& option, const std::string& text) {
   throw UsageError(option + " expects true or false, got '" + text + "'");
 }
 
+std::vector<std::string> split_list(const std::string& text) {
+  std::vector<std::string> items;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    std::size_t comma = text.find(',', start);
+    if (comma == std::string::npos) comma = text.size();
+    if (comma > start) items.push_back(text.substr(start, comma - start));
+    start = comma + 1;
+  }
+  return items;
+}
+
 Eigen::Vector3d parse_point(const std::string& option, const std::string& text) {
   Eigen::Vector3d point;
   std::size_t start = 0;

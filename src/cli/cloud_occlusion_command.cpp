@@ -6,7 +6,7 @@
 #include "occlusion/app/cloud_occlusion_job.hpp"
 #include "occlusion/app/errors.hpp"
 #include "option_table.hpp"
-#include "progress_printer.hpp"
+#include "run_command.hpp"
 
 namespace occlusion::cli {
 
@@ -17,26 +17,12 @@ struct CloudOcclusionCommand {
   OutputOptions output;
 };
 
-std::vector<std::string> split_list(const std::string& text) {
-  std::vector<std::string> items;
-  std::size_t start = 0;
-  while (start <= text.size()) {
-    const std::size_t comma = text.find(',', start);
-    const std::string item = text.substr(start, comma == std::string::npos ? comma : comma - start);
-    if (!item.empty()) items.push_back(item);
-    if (comma == std::string::npos) break;
-    start = comma + 1;
-  }
-  return items;
-}
-
 CloudOcclusionCommand parse(const std::vector<std::string>& args) {
   CloudOcclusionCommand command;
   CloudOcclusionRequest& request = command.request;
   if (const auto config = config_path(args)) apply_config(load_config(*config), request);
 
   ViewpointOptions viewpoints;
-  bool path_given = false;
   OptionTable table("-poc");
   add_output_options(table, command.output);
   add_viewpoint_options(table, viewpoints, /*allow_grid=*/true);
@@ -68,13 +54,7 @@ CloudOcclusionCommand parse(const std::vector<std::string>& args) {
   });
   table.flag({"--skip-bad-lines"}, [&] { request.skip_bad_lines = true; });
   table.value({"--out"}, [&](const std::string&, const std::string& v) { request.out = v; });
-  table.parse(args, [&](const std::string& positional) {
-    if (path_given) {
-      throw UsageError("unexpected argument '" + positional + "': -poc takes one cloud");
-    }
-    request.path = positional;
-    path_given = true;
-  });
+  table.parse(args, single_input(request.path, "-poc"));
   viewpoints.apply_to(request.viewpoints);
   return command;
 }
@@ -149,19 +129,10 @@ void print_human(const CloudOcclusionReport& report) {
 
 int run_cloud_occlusion_command(const std::vector<std::string>& args) {
   const CloudOcclusionCommand command = parse(args);
-  if (command.output.help) {
-    print_help();
-    return 0;
-  }
-  const CloudOcclusionReport report =
-      run_cloud_occlusion(command.request, make_progress_printer("poc", command.output.quiet));
-  print_warnings(report.warnings);
-  if (command.output.json) {
-    print_json(to_json(report));
-  } else {
-    print_human(report);
-  }
-  return 0;
+  return run_command<CloudOcclusionReport>(
+      command.output, "poc", print_help,
+      [&](const Progress& progress) { return run_cloud_occlusion(command.request, progress); },
+      print_human);
 }
 
 }  // namespace occlusion::cli

@@ -61,6 +61,17 @@ void add_seed_option(OptionTable& table, std::uint64_t& seed) {
   });
 }
 
+std::function<void(const std::string&)> single_input(std::string& path,
+                                                     const std::string& command) {
+  return [&path, command, given = false](const std::string& positional) mutable {
+    if (given) {
+      throw UsageError("unexpected argument '" + positional + "': " + command + " takes one input");
+    }
+    path = positional;
+    given = true;
+  };
+}
+
 void add_threads_option(OptionTable& table, unsigned& threads) {
   table.value({"--threads"}, [&threads](const std::string& option, const std::string& v) {
     const auto count = parse_unsigned(option, v);

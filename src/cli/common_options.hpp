@@ -3,6 +3,7 @@
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -41,6 +42,10 @@ struct ViewpointOptions {
 void add_viewpoint_options(OptionTable& table, ViewpointOptions& viewpoints, bool allow_grid);
 
 void add_seed_option(OptionTable& table, std::uint64_t& seed);
+
+// The handler for a command's one positional argument (its input): sets `path`
+// (overriding the config's) and rejects a second one.
+std::function<void(const std::string&)> single_input(std::string& path, const std::string& command);
 void add_threads_option(OptionTable& table, unsigned& threads);
 
 // Prints one JSON object on stdout.

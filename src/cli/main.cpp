@@ -29,8 +29,13 @@ void print_help() {
       "commands:\n"
       "  -moc, mesh-occlusion MESH.obj    visible-area occlusion level of a triangle mesh\n"
       "  -poc, cloud-occlusion CLOUD      occlusion ray ratio of a point cloud, with openings\n"
+      "  -rgoc, region-growing-occlusion CLOUD\n"
+      "                                   occlusion of a mesh estimated from CLOUD by region "
+      "growing\n"
       "  -fscan, scan CLOUD               the points that fixed viewpoints really see\n"
       "  -recon, reconstruct FOLDER       S3DIS room or Area folder -> one labelled cloud\n"
+      "  -eval, evaluate GT               segmentation quality (mIoU) of --prediction vs GT\n"
+      "  serve                            the browser viewer and its WebSocket server\n"
       "\n"
       "Run 'occlusion COMMAND --help' for a command's options.\n"
       "Exit codes: 0 success, 1 failure, 2 usage or configuration error, 3 input file error.\n");
@@ -52,12 +57,19 @@ int dispatch(const std::vector<std::string>& args) {
   if (args[0] == "-poc" || args[0] == "cloud-occlusion") {
     return occlusion::cli::run_cloud_occlusion_command(rest);
   }
+  if (args[0] == "-rgoc" || args[0] == "region-growing-occlusion") {
+    return occlusion::cli::run_region_growing_command(rest);
+  }
   if (args[0] == "-fscan" || args[0] == "scan") {
     return occlusion::cli::run_scan_command(rest);
   }
   if (args[0] == "-recon" || args[0] == "reconstruct") {
     return occlusion::cli::run_reconstruct_command(rest);
   }
+  if (args[0] == "-eval" || args[0] == "evaluate") {
+    return occlusion::cli::run_evaluate_command(rest);
+  }
+  if (args[0] == "serve") return occlusion::cli::run_serve_command(rest);
   throw occlusion::UsageError("unknown command '" + args[0] + "' (see occlusion --help)");
 }
 

@@ -7,7 +7,7 @@
 #include "occlusion/app/errors.hpp"
 #include "occlusion/app/mesh_occlusion_job.hpp"
 #include "option_table.hpp"
-#include "progress_printer.hpp"
+#include "run_command.hpp"
 
 namespace occlusion::cli {
 
@@ -24,7 +24,6 @@ MeshOcclusionCommand parse(const std::vector<std::string>& args) {
   if (const auto config = config_path(args)) apply_config(load_config(*config), request);
 
   ViewpointOptions viewpoints;
-  bool path_given = false;
   OptionTable table("-moc");
   add_output_options(table, command.output);
   add_viewpoint_options(table, viewpoints, /*allow_grid=*/true);
@@ -40,13 +39,7 @@ MeshOcclusionCommand parse(const std::vector<std::string>& args) {
     request.enable_acceleration = parse_bool(option, v);
   });
   table.value({"--out"}, [&](const std::string&, const std::string& v) { request.out = v; });
-  table.parse(args, [&](const std::string& positional) {
-    if (path_given) {
-      throw UsageError("unexpected argument '" + positional + "': -moc takes one mesh");
-    }
-    request.path = positional;  // overrides the config's path
-    path_given = true;
-  });
+  table.parse(args, single_input(request.path, "-moc"));
   viewpoints.apply_to(request.viewpoints);
   return command;
 }
@@ -112,19 +105,10 @@ static void print_mesh_occlusion_help() {
 
 int run_mesh_occlusion_command(const std::vector<std::string>& args) {
   const MeshOcclusionCommand command = parse(args);
-  if (command.output.help) {
-    print_mesh_occlusion_help();
-    return 0;
-  }
-  const MeshOcclusionReport report =
-      run_mesh_occlusion(command.request, make_progress_printer("moc", command.output.quiet));
-  print_warnings(report.warnings);
-  if (command.output.json) {
-    print_json(to_json(report));
-  } else {
-    print_human(report);
-  }
-  return 0;
+  return run_command<MeshOcclusionReport>(
+      command.output, "moc", print_mesh_occlusion_help,
+      [&](const Progress& progress) { return run_mesh_occlusion(command.request, progress); },
+      print_human);
 }
 
 }  // namespace occlusion::cli

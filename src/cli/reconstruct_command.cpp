@@ -5,7 +5,7 @@
 #include "occlusion/app/errors.hpp"
 #include "occlusion/app/reconstruct_job.hpp"
 #include "option_table.hpp"
-#include "progress_printer.hpp"
+#include "run_command.hpp"
 
 namespace occlusion::cli {
 
@@ -21,19 +21,12 @@ ReconstructCommand parse(const std::vector<std::string>& args) {
   ReconstructRequest& request = command.request;
   if (const auto config = config_path(args)) apply_config(load_config(*config), request);
 
-  bool path_given = false;
   OptionTable table("-recon");
   add_output_options(table, command.output);
   table.value({"--format"}, [&](const std::string&, const std::string& v) { request.format = v; });
   table.flag({"--skip-bad-lines"}, [&] { request.skip_bad_lines = true; });
   table.value({"--out"}, [&](const std::string&, const std::string& v) { request.out = v; });
-  table.parse(args, [&](const std::string& positional) {
-    if (path_given) {
-      throw UsageError("unexpected argument '" + positional + "': -recon takes one folder");
-    }
-    request.path = positional;
-    path_given = true;
-  });
+  table.parse(args, single_input(request.path, "-recon"));
   return command;
 }
 
@@ -56,20 +49,7 @@ void print_help() {
       "  -q, --quiet          no progress on stderr\n");
 }
 
-}  // namespace
-
-int run_reconstruct_command(const std::vector<std::string>& args) {
-  const ReconstructCommand command = parse(args);
-  if (command.output.help) {
-    print_help();
-    return 0;
-  }
-  const ReconstructReport report =
-      run_reconstruct(command.request, make_progress_printer("recon", command.output.quiet));
-  if (command.output.json) {
-    print_json(to_json(report));
-    return 0;
-  }
+void print_human(const ReconstructReport& report) {
   std::printf("reconstructed %s: %zu points in %zu room(s)\n", report.request.path.c_str(),
               report.points, report.rooms.size());
   for (const auto& c : report.classes) {
@@ -78,7 +58,16 @@ int run_reconstruct_command(const std::vector<std::string>& args) {
   }
   if (report.skipped_lines > 0) std::printf("  skipped %zu bad lines\n", report.skipped_lines);
   for (const auto& path : report.outputs) std::printf("  wrote %s\n", path.c_str());
-  return 0;
+}
+
+}  // namespace
+
+int run_reconstruct_command(const std::vector<std::string>& args) {
+  const ReconstructCommand command = parse(args);
+  return run_command<ReconstructReport>(
+      command.output, "recon", print_help,
+      [&](const Progress& progress) { return run_reconstruct(command.request, progress); },
+      print_human);
 }
 
 }  // namespace occlusion::cli

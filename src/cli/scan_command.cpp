@@ -6,7 +6,7 @@
 #include "occlusion/app/errors.hpp"
 #include "occlusion/app/scan_job.hpp"
 #include "option_table.hpp"
-#include "progress_printer.hpp"
+#include "run_command.hpp"
 
 namespace occlusion::cli {
 
@@ -23,7 +23,6 @@ ScanCommand parse(const std::vector<std::string>& args) {
   if (const auto config = config_path(args)) apply_config(load_config(*config), request);
 
   ViewpointOptions viewpoints;
-  bool path_given = false;
   OptionTable table("-fscan");
   add_output_options(table, command.output);
   add_viewpoint_options(table, viewpoints, /*allow_grid=*/true);
@@ -43,13 +42,7 @@ ScanCommand parse(const std::vector<std::string>& args) {
   table.value({"--format"}, [&](const std::string&, const std::string& v) { request.format = v; });
   table.flag({"--skip-bad-lines"}, [&] { request.skip_bad_lines = true; });
   table.value({"--out"}, [&](const std::string&, const std::string& v) { request.out = v; });
-  table.parse(args, [&](const std::string& positional) {
-    if (path_given) {
-      throw UsageError("unexpected argument '" + positional + "': -fscan takes one cloud");
-    }
-    request.path = positional;
-    path_given = true;
-  });
+  table.parse(args, single_input(request.path, "-fscan"));
   viewpoints.apply_to(request.viewpoints);
   return command;
 }
@@ -108,19 +101,9 @@ void print_human(const ScanReport& report) {
 
 int run_scan_command(const std::vector<std::string>& args) {
   const ScanCommand command = parse(args);
-  if (command.output.help) {
-    print_help();
-    return 0;
-  }
-  const ScanReport report =
-      run_scan(command.request, make_progress_printer("fscan", command.output.quiet));
-  print_warnings(report.warnings);
-  if (command.output.json) {
-    print_json(to_json(report));
-  } else {
-    print_human(report);
-  }
-  return 0;
+  return run_command<ScanReport>(
+      command.output, "fscan", print_help,
+      [&](const Progress& progress) { return run_scan(command.request, progress); }, print_human);
 }
 
 }  // namespace occlusion::cli

@@ -1,6 +1,6 @@
 #pragma once
-// Whole files in memory: the cloud readers parse from a buffer, so that
-// truncation is a length comparison and a byte offset is an index.
+// Whole files in memory: the readers parse from a buffer, so that truncation
+// is a length comparison, a byte offset is an index and a line is a view.
 
 #include <string>
 

@@ -1,19 +1,19 @@
 #include "occlusion/io/obj_reader.hpp"
 
-#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
-#include <cstdlib>
-#include <cstring>
-#include <filesystem>
-#include <fstream>
 #include <limits>
+#include <string>
+#include <string_view>
+#include <system_error>
 #include <unordered_map>
 #include <utility>
 #include <vector>
 
+#include "file_bytes.hpp"
 #include "occlusion/io/input_error.hpp"
+#include "text_tokens.hpp"
 
 namespace occlusion {
 namespace {
@@ -22,57 +22,13 @@ namespace {
 constexpr double kDegenerateAreaScale = 1e-12;
 constexpr std::uint32_t kUnresolvedGroup = std::numeric_limits<std::uint32_t>::max();
 
-bool is_blank(char c) {
-  return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f';
-}
+using detail::is_blank;
+using detail::Tokens;
 
-// Splits one logical line into whitespace-separated tokens without allocating.
-class Tokens {
- public:
-  explicit Tokens(std::string_view line) : rest_(line) {}
-
-  // The next token, or an empty view at the end of the line.
-  std::string_view next() {
-    std::size_t begin = 0;
-    while (begin < rest_.size() && is_blank(rest_[begin])) ++begin;
-    std::size_t end = begin;
-    while (end < rest_.size() && !is_blank(rest_[end])) ++end;
-    const std::string_view token = rest_.substr(begin, end - begin);
-    rest_.remove_prefix(end);
-    return token;
-  }
-
- private:
-  std::string_view rest_;
-};
-
-// from_chars does not accept a leading '+', which some exporters write.
-std::string_view without_plus(std::string_view token) {
-  if (token.size() > 1 && token[0] == '+' && token[1] != '-' && token[1] != '+') {
-    token.remove_prefix(1);
-  }
-  return token;
-}
-
-enum class NumberStatus { kOk, kInvalid };
-
-NumberStatus parse_double(std::string_view token, double& value) {
-  token = without_plus(token);
-  const char* end = token.data() + token.size();
-  const auto [stop, error] = std::from_chars(token.data(), end, value);
-  if (stop != end) return NumberStatus::kInvalid;
-  if (error == std::errc::result_out_of_range) {
-    // from_chars leaves the value unset on overflow AND underflow; strtod tells
-    // them apart (HUGE_VAL, later rejected as non-finite, versus a tiny number).
-    const std::string copy(token);
-    value = std::strtod(copy.c_str(), nullptr);
-    return NumberStatus::kOk;
-  }
-  return error == std::errc() ? NumberStatus::kOk : NumberStatus::kInvalid;
-}
-
+// Corner indices are plain integers: unlike detail::parse_whole_number, `3.0`
+// is not a vertex reference.
 bool parse_integer(std::string_view token, long long& value) {
-  token = without_plus(token);
+  token = detail::without_plus(token);
   const char* end = token.data() + token.size();
   const auto [stop, error] = std::from_chars(token.data(), end, value);
   return error == std::errc() && stop == end && !token.empty();
@@ -114,15 +70,10 @@ class ObjParser {
   void for_each_logical_line() {
     std::string joined;  // only used for continued lines, which are rare
     std::size_t joined_start = 0;
-    std::size_t position = 0;
-    std::size_t line_number = 0;
-    while (position < text_.size()) {
-      std::size_t end = text_.find('\n', position);
-      if (end == std::string_view::npos) end = text_.size();
-      std::string_view line = text_.substr(position, end - position);
-      position = end + 1;
-      ++line_number;
-
+    detail::Lines lines(text_);
+    std::string_view line;
+    while (lines.next(line)) {
+      const std::size_t line_number = lines.number();
       std::size_t content_end = line.size();
       while (content_end > 0 && is_blank(line[content_end - 1])) --content_end;
       if (content_end > 0 && line[content_end - 1] == '\\') {
@@ -163,7 +114,7 @@ class ObjParser {
       if (token.empty()) {
         fail(line_number, "vertex has " + std::to_string(axis) + " coordinates, expected 3");
       }
-      if (parse_double(token, xyz[axis]) != NumberStatus::kOk) {
+      if (!detail::parse_double(token, xyz[axis])) {
         fail(line_number, "vertex coordinate '" + std::string(token) + "' is not a number");
       }
       if (!std::isfinite(xyz[axis])) {
@@ -292,25 +243,6 @@ class ObjParser {
   std::unordered_map<std::string, std::uint32_t> group_ids_;
 };
 
-std::string read_whole_file(const std::string& path) {
-  std::error_code status;
-  if (std::filesystem::is_directory(path, status)) {
-    throw InputError(path, 0, "is a directory, not a file");
-  }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, 0, std::string("cannot open: ") + std::strerror(errno));
-  std::string text;
-  const auto size = std::filesystem::file_size(path, status);
-  if (!status) text.reserve(static_cast<std::size_t>(size));
-  // Chunked rather than one read of file_size bytes, so pipes work too.
-  char chunk[1 << 16];
-  while (in.read(chunk, sizeof chunk) || in.gcount() > 0) {
-    text.append(chunk, static_cast<std::size_t>(in.gcount()));
-  }
-  if (in.bad()) throw InputError(path, 0, std::string("read failed: ") + std::strerror(errno));
-  return text;
-}
-
 }  // namespace
 
 TriangleMesh parse_obj(std::string_view text, const std::string& source_name) {
@@ -318,7 +250,7 @@ TriangleMesh parse_obj(std::string_view text, const std::string& source_name) {
 }
 
 TriangleMesh read_obj(const std::string& path) {
-  return parse_obj(read_whole_file(path), path);
+  return parse_obj(detail::read_file_bytes(path), path);
 }
 
 }  // namespace occlusion

@@ -1,11 +1,11 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
-#include <limits>
 #include <ostream>
 #include <sstream>
+#include <string>
 
+#include "binary_writer.hpp"
 #include "cloud_formats.hpp"
 #include "occlusion/io/atomic_file.hpp"
 
@@ -33,33 +33,14 @@ std::string header(const PointCloud& cloud, const std::vector<ScalarField>& extr
   return out.str();
 }
 
-// Bytes least significant first by shifts: little-endian on any host.
-class LittleEndianBuffer {
- public:
-  void u8(std::uint8_t value) { bytes_.push_back(static_cast<char>(value)); }
-  void u32(std::uint32_t value) {
-    for (int shift = 0; shift < 32; shift += 8) u8(static_cast<std::uint8_t>(value >> shift));
-  }
-  void i32(std::int32_t value) { u32(static_cast<std::uint32_t>(value)); }
-  void f32(float value) {
-    static_assert(sizeof(float) == 4 && std::numeric_limits<float>::is_iec559,
-                  "PLY float is IEEE 754 binary32");
-    std::uint32_t bits;
-    std::memcpy(&bits, &value, sizeof bits);
-    u32(bits);
-  }
-  void flush_to(std::ostream& out) {
-    out.write(bytes_.data(), static_cast<std::streamsize>(bytes_.size()));
-    bytes_.clear();
-  }
-
- private:
-  std::string bytes_;
-};
-
 void write_binary_body(std::ostream& out, const PointCloud& cloud,
                        const std::vector<ScalarField>& extra) {
-  LittleEndianBuffer buffer;
+  std::string chunk;
+  LittleEndianWriter buffer([&chunk](char byte) { chunk.push_back(byte); });
+  const auto flush = [&] {
+    out.write(chunk.data(), static_cast<std::streamsize>(chunk.size()));
+    chunk.clear();
+  };
   for (std::size_t i = 0; i < cloud.size(); ++i) {
     const Eigen::Vector3f& p = cloud.positions[i];
     buffer.f32(p.x());
@@ -77,9 +58,9 @@ void write_binary_body(std::ostream& out, const PointCloud& cloud,
         buffer.f32(field.values[i]);
       }
     }
-    if ((i + 1) % kChunkPoints == 0) buffer.flush_to(out);
+    if ((i + 1) % kChunkPoints == 0) flush();
   }
-  buffer.flush_to(out);
+  flush();
 }
 
 // The shortest text that reads back as exactly the same float.

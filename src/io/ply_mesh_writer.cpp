@@ -1,12 +1,12 @@
 #include "occlusion/io/ply_mesh_writer.hpp"
 
 #include <cstdint>
-#include <cstring>
 #include <limits>
 #include <ostream>
 #include <sstream>
 #include <stdexcept>
 
+#include "binary_writer.hpp"
 #include "occlusion/io/atomic_file.hpp"
 #include "occlusion/io/colour_ramp.hpp"
 
@@ -15,29 +15,6 @@ namespace {
 
 constexpr std::size_t kVertexBytes = 3 * 4 + 3 + 4;
 constexpr std::size_t kFaceBytes = 1 + 3 * 4 + 4 + 4;
-
-// Assembles bytes least significant first with shifts, which yields little-endian
-// on any host: no byte swapping needed and no host-endianness test to get wrong.
-class LittleEndianWriter {
- public:
-  explicit LittleEndianWriter(char* cursor) : cursor_(cursor) {}
-
-  void u8(std::uint8_t value) { *cursor_++ = static_cast<char>(value); }
-  void u32(std::uint32_t value) {
-    for (int shift = 0; shift < 32; shift += 8) u8(static_cast<std::uint8_t>(value >> shift));
-  }
-  void i32(std::int32_t value) { u32(static_cast<std::uint32_t>(value)); }
-  void f32(float value) {
-    static_assert(sizeof(float) == 4 && std::numeric_limits<float>::is_iec559,
-                  "PLY float is IEEE 754 binary32");
-    std::uint32_t bits;
-    std::memcpy(&bits, &value, sizeof bits);
-    u32(bits);
-  }
-
- private:
-  char* cursor_;
-};
 
 bool is_identifier(const std::string& name) {
   if (name.empty()) return false;
@@ -101,29 +78,30 @@ std::string header(const TriangleMesh& mesh, const std::string& value_name) {
 std::string body(const TriangleMesh& mesh, const std::vector<float>& face_values) {
   const std::size_t faces = mesh.face_count();
   std::string bytes(faces * (3 * kVertexBytes + kFaceBytes), '\0');
-  LittleEndianWriter vertex_out(bytes.data());
+  // All vertices, then all faces, each section exactly its size: one cursor fills both.
+  char* cursor = bytes.data();
+  detail::LittleEndianWriter out([&cursor](char byte) { *cursor++ = byte; });
   for (std::size_t f = 0; f < faces; ++f) {
     const auto rgb = colour_ramp(face_values[f]);
     for (const std::uint32_t index : mesh.faces[f]) {
       const Eigen::Vector3d& p = mesh.vertices[index];
-      vertex_out.f32(static_cast<float>(p.x()));
-      vertex_out.f32(static_cast<float>(p.y()));
-      vertex_out.f32(static_cast<float>(p.z()));
-      vertex_out.u8(rgb[0]);
-      vertex_out.u8(rgb[1]);
-      vertex_out.u8(rgb[2]);
-      vertex_out.f32(face_values[f]);
+      out.f32(static_cast<float>(p.x()));
+      out.f32(static_cast<float>(p.y()));
+      out.f32(static_cast<float>(p.z()));
+      out.u8(rgb[0]);
+      out.u8(rgb[1]);
+      out.u8(rgb[2]);
+      out.f32(face_values[f]);
     }
   }
-  LittleEndianWriter face_out(bytes.data() + faces * 3 * kVertexBytes);
   for (std::size_t f = 0; f < faces; ++f) {
     const auto first = static_cast<std::int32_t>(3 * f);
-    face_out.u8(3);
-    face_out.i32(first);
-    face_out.i32(first + 1);
-    face_out.i32(first + 2);
-    face_out.f32(face_values[f]);
-    face_out.i32(static_cast<std::int32_t>(mesh.face_group[f]));
+    out.u8(3);
+    out.i32(first);
+    out.i32(first + 1);
+    out.i32(first + 2);
+    out.f32(face_values[f]);
+    out.i32(static_cast<std::int32_t>(mesh.face_group[f]));
   }
   return bytes;
 }

@@ -1,6 +1,6 @@
 #pragma once
 // Whitespace tokens and strict numbers for the text readers (plain text, PLY
-// ascii, PCD ascii, polygon files). Strict: a token is a number only if all of
+// ascii, PCD ascii, polygon files, OBJ). Strict: a token is a number only if all of
 // it is, so `1.5x` or a stray control byte is an error rather than a 1.5.
 
 #include <charconv>

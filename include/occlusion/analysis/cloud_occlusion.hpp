@@ -24,6 +24,8 @@
 #include "occlusion/core/octree.hpp"
 #include "occlusion/core/point_cloud.hpp"
 #include "occlusion/core/polygon.hpp"
+#include "occlusion/core/ray.hpp"
+#include "occlusion/core/sphere_octree.hpp"
 
 namespace occlusion {
 
@@ -33,7 +35,7 @@ struct CloudOcclusionOptions {
   DirectionSampling sampling = DirectionSampling::kUniform;
   // Radius of the spherical light source: rays start at viewpoint + r * direction.
   double light_radius = 0.0;
-  OctreeOptions octree;
+  OctreeOptions octree = sphere_octree_options();
   std::uint64_t seed = 0;
   unsigned threads = 0;
   // Empty: every point blocks. Otherwise blocking[i] says whether point i does.
@@ -69,6 +71,14 @@ CloudOcclusionResult compute_cloud_occlusion(const PointCloud& cloud,
                                              const std::vector<PlanarPolygon>& openings,
                                              const CloudOcclusionOptions& options,
                                              const Progress& progress = {});
+
+// Ray k of viewpoint v as compute_cloud_occlusion casts it, public so that the
+// benchmark traces exactly the analysis' rays: for the unit direction
+// d = SphereDirections(sampling, num_rays_per_vp, seed, v)(k), from
+// viewpoint + light_radius * d (formed in double and rounded to float once)
+// along d, over [0, infinity).
+Ray light_source_ray(const Eigen::Vector3d& viewpoint, const Eigen::Vector3d& direction,
+                     double light_radius);
 
 // Interior/exterior point ratio (thesis 3.3.5): points not in `exterior` over
 // points in it; +infinity when no point is exterior.

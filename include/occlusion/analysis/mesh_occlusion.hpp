@@ -16,6 +16,7 @@
 #include "occlusion/analysis/progress.hpp"
 #include "occlusion/core/mesh.hpp"
 #include "occlusion/core/octree.hpp"
+#include "occlusion/core/ray.hpp"
 
 namespace occlusion {
 
@@ -69,5 +70,20 @@ MeshOcclusionResult compute_mesh_occlusion(const TriangleMesh& mesh,
                                            const std::vector<Eigen::Vector3d>& viewpoints,
                                            const MeshOcclusionOptions& options,
                                            const Progress& progress = {});
+
+// The two functions below are the rule compute_mesh_occlusion casts its shadow
+// rays by, public so that the benchmark traces exactly the analysis' rays.
+
+// The self-intersection tolerance in scene units: epsilon_scale times the
+// diagonal of the mesh's bounding box.
+double mesh_shadow_epsilon(const TriangleMesh& mesh, const MeshOcclusionOptions& options);
+
+// The shadow ray from a sample to a viewpoint: direction = viewpoint - sample
+// (t = 1 at the viewpoint), formed in double and rounded to float once, over
+// [epsilon / |d|, 1 - epsilon / |d|] so that `epsilon` stays clear at both ends.
+// False, and `ray` untouched, when the two are within 2 * epsilon of each other:
+// the sample is then visible from that viewpoint without a ray.
+bool mesh_shadow_ray(const Eigen::Vector3d& sample, const Eigen::Vector3d& viewpoint,
+                     double epsilon, Ray& ray);
 
 }  // namespace occlusion

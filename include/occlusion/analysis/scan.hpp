@@ -20,6 +20,8 @@
 #include "occlusion/analysis/progress.hpp"
 #include "occlusion/core/octree.hpp"
 #include "occlusion/core/point_cloud.hpp"
+#include "occlusion/core/ray.hpp"
+#include "occlusion/core/sphere_octree.hpp"
 
 namespace occlusion {
 
@@ -27,7 +29,7 @@ struct ScanOptions {
   double point_radius = 0.01;
   // Negative: 2 * point_radius (the default of the interface).
   double self_tolerance = -1.0;
-  OctreeOptions octree;
+  OctreeOptions octree = sphere_octree_options();
   unsigned threads = 0;
 };
 
@@ -44,5 +46,15 @@ struct ScanResult {
 // point_radius <= 0, or more than 65535 viewpoints; Cancelled on cancel.
 ScanResult scan_cloud(const PointCloud& cloud, const std::vector<Eigen::Vector3d>& viewpoints,
                       const ScanOptions& options, const Progress& progress = {});
+
+// The shadow ray scan_cloud casts from a viewpoint to a point, public so that
+// the benchmark traces exactly the analysis' rays: direction = point - viewpoint
+// (t = 1 at the point), formed in double and rounded to float once, over
+// [2 r / |d|, 1 - tolerance / |d|] with r = point_radius and tolerance =
+// self_tolerance (or its default). A point within 2 r + tolerance of the
+// viewpoint gets the empty interval [1, 0], which the octree answers with
+// "not occluded" at once.
+Ray scan_shadow_ray(const Eigen::Vector3d& viewpoint, const Eigen::Vector3f& point,
+                    const ScanOptions& options);
 
 }  // namespace occlusion

@@ -26,6 +26,8 @@ struct CloudOcclusionRequest {
   bool enable_acceleration = true;
   std::string sampling = "uniform";  // or "fibonacci"
   double light_radius = 0.0;
+  // Keep each occlusion ray's direction (for the viewer); always kept with --out.
+  bool escape_directions = false;
   bool exterior = false;  // also compute the exterior-structure variant
   std::vector<std::string> exterior_classes = {"wall", "floor", "ceiling"};
   bool skip_bad_lines = false;

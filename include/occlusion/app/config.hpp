@@ -25,6 +25,12 @@ struct Config {
 // Reads and checks the whole file (all sections). Throws UsageError.
 Config load_config(const std::string& path);
 
+// Checks a config given as JSON (e.g. a server request's parameters), as
+// load_config does a file. `name` prefixes error messages; relative paths
+// resolve against `directory`. Throws UsageError.
+Config config_from_json(const Json::Value& root, const std::string& directory,
+                        const std::string& name);
+
 // One section, e.g. "mesh". Each read leaves `out` unchanged when the key is
 // absent; types were checked by load_config.
 class ConfigSection {
@@ -33,7 +39,8 @@ class ConfigSection {
 
   bool has(const std::string& key) const;
   void read(const std::string& key, std::string& out) const;
-  void read_path(const std::string& key, std::string& out) const;  // resolved
+  // Resolved against the config's folder; "" stays "" (none).
+  void read_path(const std::string& key, std::string& out) const;
   void read(const std::string& key, double& out) const;
   void read(const std::string& key, bool& out) const;
   void read(const std::string& key, std::uint64_t& out) const;

@@ -33,6 +33,7 @@ struct ReconstructReport {
   std::size_t dropped_nan = 0;
   std::size_t skipped_lines = 0;
   std::vector<std::string> outputs;
+  std::vector<std::string> warnings;
   double total_seconds = 0.0;
 };
 

@@ -16,6 +16,15 @@ inline std::optional<float> intersect_shape(const Ray& ray, float direction_leng
   return intersect_sphere(ray, direction_length, sphere);
 }
 
+// Leaves of up to 16 points: a dense cloud puts many spheres along any ray,
+// and fewer, fuller leaves cost less traversal than they add in sphere tests
+// (bench_poc: -poc tracing 1.5x faster than with the triangle default of 4).
+inline OctreeOptions sphere_octree_options() {
+  OctreeOptions options;
+  options.max_leaf_size = 16;
+  return options;
+}
+
 using SphereOctree = Octree<Sphere>;
 extern template class Octree<Sphere>;
 

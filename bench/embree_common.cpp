@@ -1,0 +1,52 @@
+#include "embree_common.hpp"
+
+#include <stdexcept>
+
+namespace occlusion::bench {
+
+EmbreeTracer::EmbreeTracer(unsigned threads) {
+  const std::string config = "threads=" + std::to_string(std::max(1u, threads));
+  device_ = rtcNewDevice(config.c_str());
+  if (!device_) throw std::runtime_error("embree: rtcNewDevice failed");
+}
+
+EmbreeTracer::~EmbreeTracer() {
+  release_scene();
+  rtcReleaseDevice(device_);
+}
+
+void EmbreeTracer::check(const char* what) const {
+  const RTCError error = rtcGetDeviceError(device_);
+  if (error != RTC_ERROR_NONE) {
+    throw std::runtime_error(std::string("embree: ") + what + " failed with error " +
+                             std::to_string(static_cast<int>(error)));
+  }
+}
+
+void EmbreeTracer::release_scene() {
+  if (scene_) {
+    rtcReleaseScene(scene_);
+    scene_ = nullptr;
+  }
+}
+
+void EmbreeTracer::commit(RTCGeometry geometry) {
+  rtcCommitGeometry(geometry);
+  rtcAttachGeometry(scene_, geometry);
+  rtcReleaseGeometry(geometry);
+  rtcCommitScene(scene_);
+  check("rtcCommitScene");
+}
+
+void EmbreeTracer::occluded(const Ray* rays, std::size_t count, std::uint8_t* occluded,
+                            unsigned threads) const {
+  if (!scene_) throw std::logic_error("embree: occluded before build");
+  for_each_ray(count, threads, [&](RTCIntersectContext& context, std::size_t i) {
+    RTCRay ray = to_embree(rays[i]);
+    rtcOccluded1(scene_, &context, &ray);
+    // Embree marks an occluded ray by setting tfar to -infinity.
+    occluded[i] = ray.tfar < 0.0f ? 1 : 0;
+  });
+}
+
+}  // namespace occlusion::bench

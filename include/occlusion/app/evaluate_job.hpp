@@ -1,0 +1,113 @@
+#pragma once
+// The `evaluate` job (-eval): how good is a semantic segmentation, scene by
+// scene and over all scenes, against labelled ground truth. Ground-truth
+// classes are mapped by name to evaluation ids (class_mapping_file.hpp);
+// predictions are evaluation ids, given per ground-truth point (a label file,
+// or a cloud with the same points) or on other points (a voxelised network
+// output), whose labels are then carried over by nearest neighbour within
+// max_distance. The scenes' confusion matrices are summed. docs/metrics.md
+// has every convention and formula.
+
+#include <json/value.h>
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "occlusion/analysis/class_mapping.hpp"
+#include "occlusion/analysis/confusion_matrix.hpp"
+#include "occlusion/analysis/progress.hpp"
+#include "occlusion/app/config.hpp"
+#include "occlusion/core/point_cloud.hpp"
+
+namespace occlusion {
+
+struct EvaluateRequest {
+  std::vector<std::string> ground_truth;     // labelled clouds with class names, one per scene
+  std::vector<std::string> predictions;      // same count and order: clouds or label files
+  std::string mapping_path;                  // empty: the seed's table 3.1
+  std::vector<std::string> ignored_classes;  // skipped on top of the mapping's
+  double max_distance = 0.05;  // for label transfer; 0: points must be the ground truth's
+  bool skip_bad_lines = false;
+  unsigned threads = 0;
+  std::string out;
+};
+
+// A scene's predictions, in evaluation ids (-1: no label).
+struct Prediction {
+  std::vector<std::int32_t> labels;
+  // The points the labels belong to; empty when labels[i] is ground-truth
+  // point i's (a label file).
+  std::vector<Eigen::Vector3f> positions;
+  // Class names of a prediction cloud that has them: its labels index these,
+  // and are mapped by name like the ground truth's.
+  std::vector<std::string> class_names;
+};
+
+// One scene, in memory: what the job loads from files, or what another job
+// (the occlusion study) already holds. The names label messages and reports.
+struct SceneInput {
+  std::string ground_truth_name;
+  PointCloud ground_truth;
+  std::string prediction_name;
+  Prediction prediction;
+};
+
+struct SceneEvaluation {
+  std::string name;  // the ground truth's file stem
+  std::string ground_truth;
+  std::string prediction;
+  std::string transfer;               // "direct" or "nearest_neighbour"
+  std::size_t points = 0;             // ground-truth points
+  std::size_t prediction_points = 0;  // predicted labels given
+  std::size_t unlabelled = 0;         // ground-truth points left without a prediction
+  std::size_t beyond_distance = 0;    // of those, for want of a point within max_distance
+  double max_matched_distance = 0.0;
+  double transfer_seconds = 0.0;
+  std::vector<std::int32_t> foreign_predictions;  // predicted ids that are no evaluation class
+  ConfusionMatrix confusion;
+  SegmentationMetrics metrics;
+  std::size_t dropped_nan = 0;
+  std::size_t skipped_lines = 0;
+};
+
+struct EvaluateReport {
+  EvaluateRequest request;
+  ClassMapping mapping = ClassMapping::seed_table();
+  std::vector<SceneEvaluation> scenes;
+  ConfusionMatrix confusion;  // the scenes' matrices summed
+  SegmentationMetrics metrics;
+  std::vector<std::string> outputs;
+  std::vector<std::string> warnings;
+  double load_seconds = 0.0;
+  double transfer_seconds = 0.0;
+  double total_seconds = 0.0;
+};
+
+void validate(const EvaluateRequest& request);
+// Copies the config's `occlusion.evaluate` section into the request.
+void apply_config(const Config& config, EvaluateRequest& request);
+// The request's mapping file (or table 3.1) with its ignored classes added.
+// UsageError for a bad file.
+ClassMapping resolve_mapping(const EvaluateRequest& request);
+
+// Evaluates one scene. Predictions on the ground truth's own points (same
+// count and positions, or a label file) are compared directly; others are
+// transferred by nearest neighbour within max_distance. InputError naming
+// the file for a ground truth without labels or class names and for a label
+// count that differs from the point count; UsageError for classes the
+// mapping does not know, or other points with max_distance 0.
+SceneEvaluation evaluate_scene(const SceneInput& scene, const ClassMapping& mapping,
+                               double max_distance, unsigned threads,
+                               const Progress& progress = {});
+
+EvaluateReport run_evaluate(const EvaluateRequest& request, const Progress& progress = {});
+
+// Headline: miou (null when no class has ground truth).
+Json::Value to_json(const EvaluateReport& report);
+// Pieces of the report, for other jobs that evaluate.
+Json::Value to_json(const SegmentationMetrics& metrics);
+Json::Value to_json(const ConfusionMatrix& matrix);
+
+}  // namespace occlusion

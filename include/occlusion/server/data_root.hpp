@@ -1,0 +1,41 @@
+#pragma once
+// The data directory (`serve --data`): every path a client names is relative
+// to it, and none may lead out of it, neither by `..`, nor by being absolute,
+// nor through a symbolic link. Replies name files relative to it too, so the
+// server's own file-system layout never reaches the browser.
+
+#include <json/value.h>
+
+#include <filesystem>
+#include <string>
+
+namespace occlusion::server {
+
+class DataRoot {
+ public:
+  // Throws std::invalid_argument unless `directory` is an existing directory.
+  explicit DataRoot(const std::string& directory);
+
+  // The canonical data directory.
+  const std::filesystem::path& path() const { return root_; }
+
+  // The canonical file for a client's path ("" is the data directory itself).
+  // Throws ProtocolError "path_outside_data" for an absolute path or one whose
+  // canonical form (symbolic links resolved) is not inside the data directory,
+  // and "not_found" when `must_exist` and nothing is there.
+  std::filesystem::path resolve(const std::string& relative, bool must_exist) const;
+
+  // `path` relative to the data directory with '/' separators, "" for the
+  // directory itself; paths outside are returned unchanged.
+  std::string relative(const std::string& path) const;
+
+  // Rewrites, in place, every string of `json` that names a file inside the
+  // data directory into its relative form.
+  void relativise(Json::Value& json) const;
+
+ private:
+  std::filesystem::path root_;
+  std::string prefix_;  // root_ + '/'
+};
+
+}  // namespace occlusion::server

@@ -1,0 +1,54 @@
+#pragma once
+// `occlusion serve`: one process that serves the viewer over HTTP and the
+// JSON/binary protocol of docs/protocol.md over a WebSocket, on one port.
+// WebSocket++ and Boost.Asio stay inside src/server/*.cpp.
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+
+namespace occlusion::server {
+
+struct ServerOptions {
+  std::string host = "127.0.0.1";  // a non-loopback host is logged as such
+  std::uint16_t port = 8080;       // 0: any free port (see Server::port)
+  std::string data_dir = ".";      // every client path is relative to it
+  std::string web_dir;             // the built viewer; empty or without index.html: a help page
+  unsigned workers = 2;            // threads running loads and jobs
+  std::size_t cache_bytes = std::size_t{1} << 30;
+  std::size_t max_upload_bytes = std::size_t{256} << 20;
+  std::size_t max_text_bytes = std::size_t{1} << 20;
+  std::size_t max_queued_jobs = 64;
+  double progress_interval_seconds = 0.1;
+  bool stop_on_signals = false;  // SIGINT and SIGTERM stop run() (the CLI sets it)
+  // One line per notable event; default: stderr.
+  std::function<void(const std::string&)> log;
+};
+
+class Server {
+ public:
+  // Binds and listens. Throws std::invalid_argument for bad options (a missing
+  // data directory) and std::runtime_error when the address cannot be bound.
+  explicit Server(ServerOptions options);
+  ~Server();
+  Server(const Server&) = delete;
+  Server& operator=(const Server&) = delete;
+
+  // The bound port (the chosen one when options.port was 0).
+  std::uint16_t port() const;
+  // Serves until stop(), on the calling thread.
+  void run();
+  // Closes every connection and makes run() return. Any thread; idempotent.
+  void stop();
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// True for 127.0.0.0/8, ::1 and "localhost".
+bool is_loopback_host(const std::string& host);
+
+}  // namespace occlusion::server

@@ -1,0 +1,73 @@
+// Edge recovery (RegionGrowingOptions::recover_edges): the strip along an edge
+// that region growing leaves out goes back to the planes it borders.
+
+#include <algorithm>
+#include <cmath>
+
+#include "mesh_estimation_stages.hpp"
+#include "occlusion/core/parallel.hpp"
+
+namespace occlusion::mesh_estimation {
+
+namespace {
+
+// A point on an edge borders two planes, on a corner three.
+constexpr std::size_t kMaxPlanesPerPoint = 3;
+
+double distance_to(const ClusterPlane& plane, const Eigen::Vector3d& point) {
+  return plane.normal.dot(point) + plane.offset;
+}
+
+}  // namespace
+
+EdgePoints recover_edge_points(const Cloud::ConstPtr& cloud, const Tree& tree,
+                               const std::vector<std::int32_t>& label,
+                               std::vector<PlaneOutcome>& planes,
+                               const RegionGrowingOptions& options) {
+  EdgePoints edges;
+  for (std::size_t i = 0; i < label.size(); ++i) {
+    if (label[i] < 0) edges.points.push_back(static_cast<pcl::index_t>(i));
+  }
+  edges.planes.assign(edges.points.size(), {-1, -1, -1});
+  const int k = static_cast<int>(options.neighbours);
+  parallel_for(edges.points.size(), 1024, options.threads, [&](std::size_t begin, std::size_t end) {
+    pcl::Indices neighbours;
+    std::vector<float> distances;
+    for (std::size_t e = begin; e < end; ++e) {
+      const pcl::PointXYZ& point = (*cloud)[static_cast<std::size_t>(edges.points[e])];
+      const Eigen::Vector3d position = point.getVector3fMap().cast<double>();
+      tree.nearestKSearch(point, k, neighbours, distances);
+      std::array<std::int32_t, 3>& joined = edges.planes[e];
+      std::size_t count = 0;
+      for (const pcl::index_t n : neighbours) {
+        const std::int32_t cluster = label[static_cast<std::size_t>(n)];
+        if (cluster < 0 || count == kMaxPlanesPerPoint) continue;
+        if (std::find(joined.begin(), joined.begin() + count, cluster) != joined.begin() + count) {
+          continue;
+        }
+        const auto& plane = planes[static_cast<std::size_t>(cluster)].plane;
+        if (!plane || std::abs(distance_to(*plane, position)) > options.ransac_distance) continue;
+        joined[count++] = cluster;
+      }
+    }
+  });
+
+  // In point order, so that the polygons do not depend on the thread count.
+  for (std::size_t e = 0; e < edges.points.size(); ++e) {
+    const Eigen::Vector3d position =
+        (*cloud)[static_cast<std::size_t>(edges.points[e])].getVector3fMap().cast<double>();
+    for (const std::int32_t cluster : edges.planes[e]) {
+      if (cluster < 0) break;
+      PlaneOutcome& outcome = planes[static_cast<std::size_t>(cluster)];
+      ClusterPlane& plane = *outcome.plane;
+      const Eigen::Vector3d offset =
+          position - distance_to(plane, position) * plane.normal - plane.origin;
+      plane.inliers_2d.emplace_back(static_cast<float>(offset.dot(plane.axis_u)),
+                                    static_cast<float>(offset.dot(plane.axis_v)));
+      ++outcome.edge_points;
+    }
+  }
+  return edges;
+}
+
+}  // namespace occlusion::mesh_estimation

@@ -1,0 +1,289 @@
+#include "occlusion/app/evaluate_job.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+
+#include "evaluation_support.hpp"
+#include "job_support.hpp"
+#include "occlusion/app/class_mapping_file.hpp"
+#include "occlusion/app/errors.hpp"
+#include "occlusion/app/json_output.hpp"
+#include "occlusion/io/atomic_file.hpp"
+
+namespace occlusion {
+
+namespace {
+
+// ConfigSection resolves single paths; these keys hold lists of them.
+std::vector<std::string> resolved_paths(const Config& config, std::vector<std::string> paths) {
+  for (auto& path : paths) {
+    const std::filesystem::path p(path);
+    if (!p.is_absolute() && !config.directory.empty()) {
+      path = (std::filesystem::path(config.directory) / p).lexically_normal().string();
+    }
+  }
+  return paths;
+}
+
+Json::Value optional_json(const std::optional<double>& value) {
+  return value ? Json::Value(*value) : Json::Value();
+}
+
+std::string format(const char* pattern, double value) {
+  char text[64];
+  std::snprintf(text, sizeof text, pattern, value);
+  return text;
+}
+
+std::string percent(std::size_t part, std::size_t whole) {
+  return format("%.1f%%", 100.0 * static_cast<double>(part) /
+                              static_cast<double>(std::max<std::size_t>(whole, 1)));
+}
+
+void add_scene_warnings(const SceneEvaluation& scene, double max_distance,
+                        std::vector<std::string>& warnings) {
+  if (scene.beyond_distance > 0) {
+    warnings.push_back(scene.name + ": " + std::to_string(scene.beyond_distance) + " of " +
+                       std::to_string(scene.points) + " ground-truth points (" +
+                       percent(scene.beyond_distance, scene.points) +
+                       ") have no predicted point within " + format("%g", max_distance) +
+                       "; they count as misses");
+  }
+  if (!scene.foreign_predictions.empty()) {
+    std::string ids;
+    for (std::size_t i = 0; i < scene.foreign_predictions.size() && i < 10; ++i) {
+      ids += (ids.empty() ? "" : ", ") + std::to_string(scene.foreign_predictions[i]);
+    }
+    if (scene.foreign_predictions.size() > 10) ids += ", ...";
+    warnings.push_back(scene.name + ": predicted ids " + ids +
+                       " are no evaluation class and count as misses (are the predictions in "
+                       "the mapping's evaluation ids?)");
+  }
+  if (scene.metrics.points == 0) {
+    warnings.push_back(scene.name + ": no ground-truth point is in an evaluation class");
+  }
+}
+
+Json::Value mapping_json(const ClassMapping& mapping, const std::string& path) {
+  Json::Value json(Json::objectValue);
+  json["source"] = path.empty() ? "seed table 3.1" : path;
+  json["ignore"] = mapping.ignore_id();
+  json["ignored_classes"] =
+      to_json(std::vector<std::string>(mapping.ignored().begin(), mapping.ignored().end()));
+  Json::Value classes(Json::arrayValue);
+  for (const auto& c : mapping.evaluation_classes()) {
+    Json::Value entry(Json::objectValue);
+    entry["id"] = c.id;
+    entry["name"] = c.name;
+    std::vector<std::string> members;
+    for (const auto& [name, id] : mapping.ids()) {
+      if (id == c.id && mapping.ignored().count(name) == 0) members.push_back(name);
+    }
+    entry["ground_truth_classes"] = to_json(members);
+    classes.append(entry);
+  }
+  json["evaluation_classes"] = classes;
+  return json;
+}
+
+Json::Value scene_json(const SceneEvaluation& scene) {
+  Json::Value json = to_json(scene.metrics);
+  json["name"] = scene.name;
+  json["ground_truth"] = scene.ground_truth;
+  json["prediction"] = scene.prediction;
+  json["transfer"] = scene.transfer;
+  json["ground_truth_points"] = Json::UInt64(scene.points);
+  json["prediction_points"] = Json::UInt64(scene.prediction_points);
+  json["unlabelled_points"] = Json::UInt64(scene.unlabelled);
+  json["beyond_distance_points"] = Json::UInt64(scene.beyond_distance);
+  json["max_matched_distance"] = scene.max_matched_distance;
+  Json::Value foreign(Json::arrayValue);
+  for (const auto id : scene.foreign_predictions) foreign.append(id);
+  json["foreign_prediction_ids"] = foreign;
+  json["dropped_nan_points"] = Json::UInt64(scene.dropped_nan);
+  json["skipped_lines"] = Json::UInt64(scene.skipped_lines);
+  json["confusion"] = to_json(scene.confusion);
+  return json;
+}
+
+}  // namespace
+
+void validate(const EvaluateRequest& request) {
+  if (request.ground_truth.empty()) {
+    throw UsageError(
+        "no ground truth given (-eval GT --prediction PRED, or occlusion.evaluate.ground_truth)");
+  }
+  if (request.predictions.size() != request.ground_truth.size()) {
+    throw UsageError(std::to_string(request.ground_truth.size()) + " ground truth(s) but " +
+                     std::to_string(request.predictions.size()) +
+                     " prediction(s): give --prediction once per ground truth, in the same order");
+  }
+  job::require_non_negative(request.max_distance, "--max-distance");
+}
+
+void apply_config(const Config& config, EvaluateRequest& request) {
+  const ConfigSection section(config, "evaluate");
+  if (section.has("ground_truth")) {
+    section.read("ground_truth", request.ground_truth);
+    request.ground_truth = resolved_paths(config, request.ground_truth);
+  }
+  if (section.has("predictions")) {
+    section.read("predictions", request.predictions);
+    request.predictions = resolved_paths(config, request.predictions);
+  }
+  section.read_path("mapping_path", request.mapping_path);
+  section.read("ignored_classes", request.ignored_classes);
+  section.read("max_distance", request.max_distance);
+  section.read("skip_bad_lines", request.skip_bad_lines);
+  section.read("threads", request.threads);
+  section.read_path("out", request.out);
+}
+
+ClassMapping resolve_mapping(const EvaluateRequest& request) {
+  const ClassMapping mapping = request.mapping_path.empty()
+                                   ? ClassMapping::seed_table()
+                                   : load_class_mapping(request.mapping_path);
+  if (request.ignored_classes.empty()) return mapping;
+  try {
+    return mapping.with_ignored(request.ignored_classes);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--ignored-classes: ") + e.what());
+  }
+}
+
+EvaluateReport run_evaluate(const EvaluateRequest& request, const Progress& progress) {
+  validate(request);
+  const auto start = job::Clock::now();
+  EvaluateReport report;
+  report.request = request;
+  report.mapping = resolve_mapping(request);
+  report.confusion = ConfusionMatrix(report.mapping.evaluation_classes());
+
+  const std::size_t count = request.ground_truth.size();
+  for (std::size_t k = 0; k < count; ++k) {
+    progress("loading", static_cast<double>(k) / static_cast<double>(count));
+    const auto load_start = job::Clock::now();
+    const job::LoadedScene loaded =
+        job::load_scene(request.ground_truth[k], request.predictions[k], request.skip_bad_lines);
+    report.load_seconds += job::seconds_since(load_start);
+    progress.check_cancel();
+
+    SceneEvaluation scene = evaluate_scene(loaded.input, report.mapping, request.max_distance,
+                                           request.threads, progress);
+    scene.dropped_nan = loaded.dropped_nan;
+    scene.skipped_lines = loaded.skipped_lines;
+    report.transfer_seconds += scene.transfer_seconds;
+    add_scene_warnings(scene, request.max_distance, report.warnings);
+    report.confusion += scene.confusion;
+    report.scenes.push_back(std::move(scene));
+  }
+  report.metrics = compute_metrics(report.confusion);
+  progress("done", 1.0);
+
+  if (!request.out.empty()) {
+    ensure_directory(request.out);
+    // One scene: named after it, like the other jobs' outputs; several: one summary.
+    const auto path = [&](const std::string& extension) {
+      return count == 1
+                 ? job::output_path(request.out, request.ground_truth[0], ".eval" + extension)
+                 : job::output_path(request.out, "eval", extension);
+    };
+    const std::string json_path = path(".json");
+    const std::string csv_path = path(".csv");
+    const std::string markdown_path = path(".md");
+    job::write_evaluation_csv(csv_path, report);
+    job::write_evaluation_markdown(markdown_path, report);
+    report.outputs = {json_path, csv_path, markdown_path};
+    report.total_seconds = job::seconds_since(start);
+    job::write_json_report(json_path, to_json(report));
+  }
+  report.total_seconds = job::seconds_since(start);
+  return report;
+}
+
+Json::Value to_json(const SegmentationMetrics& metrics) {
+  Json::Value json(Json::objectValue);
+  json["miou"] = optional_json(metrics.miou);
+  json["overall_accuracy"] = optional_json(metrics.overall_accuracy);
+  json["mean_class_accuracy"] = optional_json(metrics.mean_class_accuracy);
+  json["classes_with_support"] = Json::UInt64(metrics.classes_with_support);
+  json["points"] = Json::UInt64(metrics.points);
+  json["correct_points"] = Json::UInt64(metrics.correct);
+  json["other_predictions"] = Json::UInt64(metrics.other);
+  json["skipped_points"] = Json::UInt64(metrics.skipped);
+  Json::Value classes(Json::arrayValue);
+  for (const auto& c : metrics.classes) {
+    Json::Value entry(Json::objectValue);
+    entry["id"] = c.id;
+    entry["name"] = c.name;
+    entry["support"] = Json::UInt64(c.support);
+    entry["tp"] = Json::UInt64(c.tp);
+    entry["fp"] = Json::UInt64(c.fp);
+    entry["fn"] = Json::UInt64(c.fn);
+    entry["iou"] = optional_json(c.iou);
+    entry["precision"] = optional_json(c.precision);
+    entry["recall"] = optional_json(c.recall);
+    entry["f1"] = optional_json(c.f1);
+    classes.append(entry);
+  }
+  json["classes"] = classes;
+  return json;
+}
+
+Json::Value to_json(const ConfusionMatrix& matrix) {
+  Json::Value json(Json::objectValue);
+  Json::Value ids(Json::arrayValue);
+  Json::Value names(Json::arrayValue);
+  for (const auto& c : matrix.classes()) {
+    ids.append(c.id);
+    names.append(c.name);
+  }
+  json["ids"] = ids;
+  json["names"] = names;
+  Json::Value rows(Json::arrayValue);
+  for (std::size_t r = 0; r < matrix.size(); ++r) {
+    Json::Value row(Json::arrayValue);
+    for (std::size_t c = 0; c <= matrix.size(); ++c) row.append(Json::UInt64(matrix.count(r, c)));
+    rows.append(row);
+  }
+  json["rows"] = rows;
+  json["skipped"] = Json::UInt64(matrix.skipped());
+  return json;
+}
+
+Json::Value to_json(const EvaluateReport& report) {
+  const EvaluateRequest& q = report.request;
+  Json::Value json = to_json(report.metrics);
+  json["job"] = "evaluate";
+  std::size_t unlabelled = 0;
+  std::size_t beyond = 0;
+  Json::Value scenes(Json::arrayValue);
+  for (const auto& scene : report.scenes) {
+    unlabelled += scene.unlabelled;
+    beyond += scene.beyond_distance;
+    scenes.append(scene_json(scene));
+  }
+  json["unlabelled_points"] = Json::UInt64(unlabelled);
+  json["beyond_distance_points"] = Json::UInt64(beyond);
+  json["confusion"] = to_json(report.confusion);
+  json["scenes"] = scenes;
+  json["mapping"] = mapping_json(report.mapping, q.mapping_path);
+
+  Json::Value parameters(Json::objectValue);
+  parameters["max_distance"] = q.max_distance;
+  parameters["skip_bad_lines"] = q.skip_bad_lines;
+  parameters["threads"] = q.threads;
+  json["parameters"] = parameters;
+
+  Json::Value timings(Json::objectValue);
+  timings["load_seconds"] = report.load_seconds;
+  timings["transfer_seconds"] = report.transfer_seconds;
+  timings["total_seconds"] = report.total_seconds;
+  json["timings"] = timings;
+  json["outputs"] = to_json(report.outputs);
+  json["warnings"] = to_json(report.warnings);
+  return json;
+}
+
+}  // namespace occlusion

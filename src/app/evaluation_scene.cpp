@@ -1,0 +1,170 @@
+// evaluate_scene and load_scene: from a ground truth and a prediction to one
+// scene's confusion matrix.
+
+#include <algorithm>
+#include <filesystem>
+#include <set>
+
+#include "evaluation_support.hpp"
+#include "job_support.hpp"
+#include "occlusion/analysis/label_transfer.hpp"
+#include "occlusion/app/errors.hpp"
+#include "occlusion/app/evaluate_job.hpp"
+#include "occlusion/io/cloud_io.hpp"
+#include "occlusion/io/input_error.hpp"
+#include "occlusion/io/label_file.hpp"
+
+namespace occlusion {
+
+namespace {
+
+std::string scene_name(const std::string& path) {
+  std::filesystem::path p(path);
+  if (p.filename().empty()) p = p.parent_path();
+  return p.stem().string();
+}
+
+std::string joined(const std::vector<std::string>& items) {
+  std::string text;
+  for (const auto& item : items) text += (text.empty() ? "" : ", ") + item;
+  return text;
+}
+
+// The ground truth's labels as evaluation ids.
+std::vector<std::int32_t> ground_truth_ids(const SceneInput& scene, const ClassMapping& mapping) {
+  const PointCloud& cloud = scene.ground_truth;
+  if (!cloud.has_labels()) {
+    throw InputError(scene.ground_truth_name, 0,
+                     "has no labels; the ground truth must be a labelled cloud (PLY or PCD with "
+                     "a label field, an S3DIS room or Area)");
+  }
+  if (cloud.class_names.empty()) {
+    throw InputError(scene.ground_truth_name, 0,
+                     "its labels have no class names, so the class mapping cannot apply (PLY and "
+                     "PCD files written by occlusion keep them as header comments)");
+  }
+  const auto unmapped = mapping.unmapped_classes(cloud.labels, cloud.class_names);
+  if (!unmapped.empty()) {
+    throw UsageError(scene.ground_truth_name + ": classes not in the class mapping: " +
+                     joined(unmapped) + " (map them, or list them in ignored_classes)");
+  }
+  return mapping.map_labels(cloud.labels, cloud.class_names);
+}
+
+// The prediction's labels as evaluation ids, still on its own points.
+std::vector<std::int32_t> prediction_ids(const SceneInput& scene, const ClassMapping& mapping) {
+  const Prediction& prediction = scene.prediction;
+  if (prediction.class_names.empty()) return prediction.labels;
+  const auto unmapped = mapping.unmapped_classes(prediction.labels, prediction.class_names);
+  if (!unmapped.empty()) {
+    throw UsageError(scene.prediction_name + ": classes not in the class mapping: " +
+                     joined(unmapped) + " (a prediction that names its classes is mapped by name)");
+  }
+  std::vector<std::int32_t> ids = mapping.map_labels(prediction.labels, prediction.class_names);
+  // map_labels turns "no label" into the ignore id; keep -1 so it counts as unlabelled.
+  for (std::size_t i = 0; i < ids.size(); ++i) {
+    if (prediction.labels[i] < 0) ids[i] = -1;
+  }
+  return ids;
+}
+
+bool same_points(const PointCloud& ground_truth, const Prediction& prediction) {
+  return prediction.positions.size() == ground_truth.size() &&
+         std::equal(prediction.positions.begin(), prediction.positions.end(),
+                    ground_truth.positions.begin());
+}
+
+}  // namespace
+
+SceneEvaluation evaluate_scene(const SceneInput& scene, const ClassMapping& mapping,
+                               double max_distance, unsigned threads, const Progress& progress) {
+  SceneEvaluation result;
+  result.name = scene_name(scene.ground_truth_name);
+  result.ground_truth = scene.ground_truth_name;
+  result.prediction = scene.prediction_name;
+  result.points = scene.ground_truth.size();
+  result.prediction_points = scene.prediction.labels.size();
+  const std::vector<std::int32_t> truth = ground_truth_ids(scene, mapping);
+  std::vector<std::int32_t> predicted = prediction_ids(scene, mapping);
+
+  const Prediction& prediction = scene.prediction;
+  if (prediction.positions.empty()) {
+    if (prediction.labels.size() != truth.size()) {
+      throw InputError(scene.prediction_name, 0,
+                       "holds " + std::to_string(prediction.labels.size()) + " labels for the " +
+                           std::to_string(truth.size()) + " points of " + scene.ground_truth_name +
+                           " (a label file has one label per ground-truth point, in order)");
+    }
+    result.transfer = "direct";
+  } else if (same_points(scene.ground_truth, prediction)) {
+    result.transfer = "direct";
+  } else {
+    if (max_distance <= 0.0) {
+      throw UsageError(scene.prediction_name + ": its points are not those of " +
+                       scene.ground_truth_name +
+                       "; --max-distance 0 needs the same points in the same order (give a "
+                       "distance > 0 to transfer labels by nearest neighbour)");
+    }
+    LabelTransferOptions options;
+    options.max_distance = max_distance;
+    options.threads = threads;
+    const LabelTransfer transfer = transfer_labels(prediction.positions, predicted,
+                                                   scene.ground_truth.positions, options, progress);
+    predicted = transfer.labels;
+    result.transfer = "nearest_neighbour";
+    result.beyond_distance = transfer.beyond_distance;
+    result.max_matched_distance = transfer.max_matched_distance;
+    result.transfer_seconds = transfer.seconds;
+  }
+
+  result.confusion = ConfusionMatrix(mapping.evaluation_classes());
+  result.confusion.add(truth, predicted);
+  result.metrics = compute_metrics(result.confusion);
+  std::set<std::int32_t> foreign;
+  for (const auto id : predicted) {
+    if (id < 0) {
+      ++result.unlabelled;
+    } else if (id != mapping.ignore_id() && !result.confusion.index_of(id)) {
+      foreign.insert(id);
+    }
+  }
+  result.foreign_predictions.assign(foreign.begin(), foreign.end());
+  return result;
+}
+
+namespace job {
+
+LoadedScene load_scene(const std::string& ground_truth, const std::string& prediction,
+                       bool skip_bad_lines) {
+  LoadedScene scene;
+  LoadedCloud truth = load_cloud(ground_truth, skip_bad_lines);
+  scene.input.ground_truth_name = ground_truth;
+  scene.input.ground_truth = std::move(truth.cloud);
+  scene.input.prediction_name = prediction;
+  scene.dropped_nan = truth.dropped_nan;
+  scene.skipped_lines = truth.skipped_lines;
+
+  if (is_label_file(prediction)) {
+    if (truth.dropped_nan + truth.skipped_lines > 0) {
+      throw InputError(prediction, 0,
+                       "labels are given by point order, but reading " + ground_truth +
+                           " dropped " + std::to_string(truth.dropped_nan + truth.skipped_lines) +
+                           " points (NaN or skipped lines), so they no longer line up");
+    }
+    scene.input.prediction.labels = read_label_file(prediction);
+    return scene;
+  }
+  LoadedCloud predicted = load_cloud(prediction, skip_bad_lines);
+  if (!predicted.cloud.has_labels()) {
+    throw InputError(prediction, 0,
+                     "has no labels; a prediction is a labelled cloud or a label file");
+  }
+  scene.input.prediction.labels = std::move(predicted.cloud.labels);
+  scene.input.prediction.positions = std::move(predicted.cloud.positions);
+  scene.input.prediction.class_names = std::move(predicted.cloud.class_names);
+  return scene;
+}
+
+}  // namespace job
+
+}  // namespace occlusion

@@ -1,0 +1,30 @@
+#pragma once
+// Pieces of the evaluate job kept out of its main file (internal to app/):
+// reading a scene's two files, and the CSV and Markdown reports.
+
+#include <string>
+
+#include "occlusion/app/evaluate_job.hpp"
+
+namespace occlusion::job {
+
+struct LoadedScene {
+  SceneInput input;
+  std::size_t dropped_nan = 0;
+  std::size_t skipped_lines = 0;
+};
+
+// The ground truth with read_cloud; the prediction as a label file
+// (io/label_file.hpp decides) or a cloud. InputError for unreadable files,
+// and for a label file when reading the ground truth dropped points (NaN or
+// skipped lines): its labels, given by point order, would no longer line up.
+LoadedScene load_scene(const std::string& ground_truth, const std::string& prediction,
+                       bool skip_bad_lines);
+
+// One row per class: the sum first (scene "total"), then each scene when
+// there are several. Undefined figures are empty fields.
+void write_evaluation_csv(const std::string& path, const EvaluateReport& report);
+// The per-class table of the sum, and a per-scene summary when there are several.
+void write_evaluation_markdown(const std::string& path, const EvaluateReport& report);
+
+}  // namespace occlusion::job

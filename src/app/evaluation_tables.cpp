@@ -1,0 +1,91 @@
+// The evaluate job's CSV and Markdown reports.
+
+#include <cstdio>
+#include <ostream>
+
+#include "evaluation_support.hpp"
+#include "occlusion/app/json_output.hpp"
+#include "occlusion/io/atomic_file.hpp"
+
+namespace occlusion::job {
+
+namespace {
+
+// Undefined figures are left empty (CSV) or shown as a dash (Markdown) rather
+// than as 0 or NaN, which a reader would average in.
+std::string figure(const std::optional<double>& value, const char* missing) {
+  if (!value) return missing;
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", *value);
+  return text;
+}
+
+std::string fixed(const std::optional<double>& value) {
+  if (!value) return "–";
+  char text[32];
+  std::snprintf(text, sizeof text, "%.4f", *value);
+  return text;
+}
+
+// A pipe would end the table cell.
+std::string markdown_cell(const std::string& text) {
+  std::string escaped;
+  for (const char c : text) {
+    if (c == '|') escaped += '\\';
+    escaped += c;
+  }
+  return escaped;
+}
+
+void csv_rows(std::ostream& out, const std::string& scene, const SegmentationMetrics& metrics) {
+  for (const auto& c : metrics.classes) {
+    out << csv_field(scene) << ',' << c.id << ',' << csv_field(c.name) << ',' << c.support << ','
+        << c.tp << ',' << c.fp << ',' << c.fn << ',' << figure(c.iou, "") << ','
+        << figure(c.precision, "") << ',' << figure(c.recall, "") << ',' << figure(c.f1, "")
+        << '\n';
+  }
+}
+
+}  // namespace
+
+void write_evaluation_csv(const std::string& path, const EvaluateReport& report) {
+  write_file_atomically(path, [&](std::ostream& out) {
+    out << "scene,id,class,support,tp,fp,fn,iou,precision,recall,f1\n";
+    csv_rows(out, "total", report.metrics);
+    if (report.scenes.size() > 1) {
+      for (const auto& scene : report.scenes) csv_rows(out, scene.name, scene.metrics);
+    }
+  });
+}
+
+void write_evaluation_markdown(const std::string& path, const EvaluateReport& report) {
+  const SegmentationMetrics& m = report.metrics;
+  write_file_atomically(path, [&](std::ostream& out) {
+    out << "# Segmentation evaluation\n\n"
+        << "| mIoU | overall accuracy | mean class accuracy | points | scenes |\n"
+        << "|---:|---:|---:|---:|---:|\n"
+        << "| " << fixed(m.miou) << " | " << fixed(m.overall_accuracy) << " | "
+        << fixed(m.mean_class_accuracy) << " | " << m.points << " | " << report.scenes.size()
+        << " |\n\n"
+        << "| id | class | support | IoU | precision | recall | F1 |\n"
+        << "|---:|---|---:|---:|---:|---:|---:|\n";
+    for (const auto& c : m.classes) {
+      out << "| " << c.id << " | " << markdown_cell(c.name) << " | " << c.support << " | "
+          << fixed(c.iou) << " | " << fixed(c.precision) << " | " << fixed(c.recall) << " | "
+          << fixed(c.f1) << " |\n";
+    }
+    out << "\nmIoU and mean class accuracy average the classes with support (ground-truth "
+           "points); – marks a figure that is undefined (docs/metrics.md).\n";
+    if (report.scenes.size() < 2) return;
+    out << "\n## Scenes\n\n"
+        << "| scene | points | mIoU | overall accuracy | mean class accuracy | unlabelled |\n"
+        << "|---|---:|---:|---:|---:|---:|\n";
+    for (const auto& scene : report.scenes) {
+      out << "| " << markdown_cell(scene.name) << " | " << scene.metrics.points << " | "
+          << fixed(scene.metrics.miou) << " | " << fixed(scene.metrics.overall_accuracy) << " | "
+          << fixed(scene.metrics.mean_class_accuracy) << " | " << scene.unlabelled << " |\n";
+    }
+  });
+}
+
+}  // namespace occlusion::job

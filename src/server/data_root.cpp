@@ -1,0 +1,72 @@
+#include "occlusion/server/data_root.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <system_error>
+
+#include "occlusion/server/protocol_error.hpp"
+
+namespace occlusion::server {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+bool inside(const fs::path& root, const fs::path& path) {
+  const auto [root_end, path_end] =
+      std::mismatch(root.begin(), root.end(), path.begin(), path.end());
+  (void)path_end;
+  return root_end == root.end();
+}
+
+}  // namespace
+
+DataRoot::DataRoot(const std::string& directory) {
+  std::error_code error;
+  root_ = fs::canonical(directory.empty() ? "." : directory, error);
+  if (error || !fs::is_directory(root_)) {
+    throw std::invalid_argument("data directory '" + directory + "' is not a directory");
+  }
+  prefix_ = root_.string();
+  if (prefix_.back() != '/') prefix_ += '/';
+}
+
+fs::path DataRoot::resolve(const std::string& relative, bool must_exist) const {
+  if (relative.find('\0') != std::string::npos) {
+    throw ProtocolError("path_outside_data", "a path must not contain NUL characters");
+  }
+  const fs::path given(relative);
+  if (given.is_absolute() || given.has_root_name()) {
+    throw ProtocolError("path_outside_data",
+                        "'" + relative + "' is absolute; paths are relative to the data directory");
+  }
+  // weakly_canonical resolves the symbolic links of the part that exists and
+  // folds `..` in the rest, so the prefix test below sees where the path leads.
+  std::error_code error;
+  const fs::path resolved = fs::weakly_canonical(root_ / given, error);
+  if (error || !inside(root_, resolved)) {
+    throw ProtocolError("path_outside_data", "'" + relative + "' is outside the data directory");
+  }
+  if (must_exist && !fs::exists(resolved, error)) {
+    throw ProtocolError("not_found", "'" + relative + "' does not exist in the data directory");
+  }
+  return resolved;
+}
+
+std::string DataRoot::relative(const std::string& path) const {
+  if (path == root_.string()) return "";
+  if (path.compare(0, prefix_.size(), prefix_) == 0) return path.substr(prefix_.size());
+  return path;
+}
+
+void DataRoot::relativise(Json::Value& json) const {
+  if (json.isString()) {
+    const std::string text = json.asString();
+    const std::string shorter = relative(text);
+    if (shorter != text) json = shorter;
+  } else if (json.isArray() || json.isObject()) {
+    for (auto& member : json) relativise(member);
+  }
+}
+
+}  // namespace occlusion::server

@@ -1,0 +1,183 @@
+// Commands on the data directory itself: ping, list_files, save_polygon. They
+// are quick, so they run on the network thread.
+
+#include <sys/stat.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+
+#include "command_params.hpp"
+#include "command_table.hpp"
+#include "occlusion/io/atomic_file.hpp"
+#include "occlusion/io/polygon_file.hpp"
+#include "occlusion/server/protocol_error.hpp"
+
+namespace occlusion::server {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// Enough for any real folder; a bigger listing is cut, and says so.
+constexpr std::size_t kMaxEntries = 10000;
+
+std::string lower_extension(const fs::path& path) {
+  std::string extension = path.extension().string();
+  for (auto& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return extension;
+}
+
+std::string file_kind(const fs::path& path) {
+  const std::string extension = lower_extension(path);
+  if (extension == ".obj") return "mesh";
+  if (extension == ".ply" || extension == ".pcd" || extension == ".xyz" || extension == ".pts") {
+    return "cloud";
+  }
+  if (extension == ".txt") return "text";
+  if (extension == ".json") return "json";
+  return "other";
+}
+
+bool is_s3dis_room(const fs::path& dir) {
+  std::error_code error;
+  return fs::is_directory(dir / "Annotations", error);
+}
+
+std::string directory_kind(const fs::path& dir) {
+  if (is_s3dis_room(dir)) return "s3dis_room";
+  std::error_code error;
+  for (fs::directory_iterator it(dir, error), end; !error && it != end; it.increment(error)) {
+    if (is_s3dis_room(it->path())) return "s3dis_area";
+  }
+  return "directory";
+}
+
+Json::Value entry_json(const fs::path& path, const std::string& relative) {
+  Json::Value entry(Json::objectValue);
+  entry["name"] = path.filename().string();
+  entry["path"] = relative;
+  struct stat info {};
+  // stat follows symbolic links: an entry is what it leads to.
+  if (::stat(path.c_str(), &info) != 0) {
+    entry["type"] = "other";
+    entry["kind"] = "other";
+  } else if (S_ISDIR(info.st_mode)) {
+    entry["type"] = "directory";
+    entry["kind"] = directory_kind(path);
+  } else {
+    entry["type"] = S_ISREG(info.st_mode) ? "file" : "other";
+    entry["kind"] = file_kind(path);
+    entry["size"] = Json::UInt64(info.st_size);
+    entry["mtime"] = Json::Int64(info.st_mtime);
+  }
+  return entry;
+}
+
+Json::Value list_files(CommandContext& context) {
+  allow_keys(context.params, {"dir"});
+  const std::string dir = string_param(context.params, "dir", "");
+  const fs::path resolved = context.server.root.resolve(dir, true);
+  if (!fs::is_directory(resolved)) {
+    throw ProtocolError("invalid_request", "'" + dir + "' is not a directory");
+  }
+  std::vector<fs::path> children;
+  std::error_code error;
+  for (fs::directory_iterator it(resolved, error), end; !error && it != end; it.increment(error)) {
+    const std::string name = it->path().filename().string();
+    if (!name.empty() && name[0] != '.') children.push_back(it->path());
+  }
+  if (error) {
+    throw ProtocolError("input_error", "'" + dir + "' cannot be listed: " + error.message());
+  }
+  std::sort(children.begin(), children.end());
+
+  const std::string base = context.server.root.relative(resolved.string());
+  Json::Value directories(Json::arrayValue), files(Json::arrayValue);
+  for (std::size_t i = 0; i < children.size() && i < kMaxEntries; ++i) {
+    const std::string name = children[i].filename().string();
+    const std::string relative = base.empty() ? name : base + "/" + name;
+    // A symbolic link that leads out is not shown: it could not be opened anyway.
+    try {
+      context.server.root.resolve(relative, false);
+    } catch (const ProtocolError&) {
+      continue;
+    }
+    Json::Value entry = entry_json(children[i], relative);
+    (entry["type"] == "directory" ? directories : files).append(entry);
+  }
+  Json::Value result(Json::objectValue);
+  result["dir"] = base;
+  result["entries"] = Json::Value(Json::arrayValue);
+  for (const auto& group : {directories, files}) {
+    for (const auto& entry : group) result["entries"].append(entry);
+  }
+  result["truncated"] = children.size() > kMaxEntries;
+  return result;
+}
+
+std::vector<std::vector<Eigen::Vector3d>> read_polygon_param(const Json::Value& params) {
+  if (!params.isMember("polygons")) {
+    throw ProtocolError("invalid_request", "missing parameter 'polygons'");
+  }
+  const Json::Value& list = params["polygons"];
+  const auto fail = [](const std::string& why) {
+    throw ProtocolError("invalid_request", "'polygons' " + why);
+  };
+  if (!list.isArray() || list.empty()) fail("must be a non-empty list of polygons");
+  std::vector<std::vector<Eigen::Vector3d>> polygons;
+  for (Json::ArrayIndex p = 0; p < list.size(); ++p) {
+    const std::string where = "polygon " + std::to_string(p + 1);
+    if (!list[p].isArray() || list[p].size() < 3) fail(where + " needs at least 3 points");
+    std::vector<Eigen::Vector3d> polygon;
+    for (const auto& point : list[p]) {
+      if (!point.isArray() || point.size() != 3) fail(where + ": a point is [x, y, z]");
+      Eigen::Vector3d position;
+      for (Json::ArrayIndex k = 0; k < 3; ++k) {
+        if (!point[k].isNumeric() || point[k].isBool() || !std::isfinite(point[k].asDouble())) {
+          fail(where + ": coordinates must be finite numbers");
+        }
+        position[static_cast<int>(k)] = point[k].asDouble();
+      }
+      polygon.push_back(position);
+    }
+    polygons.push_back(std::move(polygon));
+  }
+  return polygons;
+}
+
+Json::Value save_polygon(CommandContext& context) {
+  allow_keys(context.params, {"path", "polygons", "append"});
+  const std::string path = required_string(context.params, "path");
+  const bool append = bool_param(context.params, "append", false);
+  auto polygons = read_polygon_param(context.params);
+  const fs::path resolved = context.server.root.resolve(path, false);
+  if (resolved == context.server.root.path() || fs::is_directory(resolved)) {
+    throw ProtocolError("invalid_request", "'" + path + "' is a directory");
+  }
+  if (append && fs::exists(resolved)) {
+    auto existing = read_polygons(resolved.string());
+    existing.insert(existing.end(), polygons.begin(), polygons.end());
+    polygons = std::move(existing);
+  }
+  ensure_directory(resolved.parent_path().string());
+  write_polygons(resolved.string(), polygons);
+  Json::Value result(Json::objectValue);
+  result["path"] = context.server.root.relative(resolved.string());
+  result["polygons"] = Json::UInt64(polygons.size());
+  return result;
+}
+
+}  // namespace
+
+std::vector<Command> file_commands() {
+  return {
+      Command{"ping", Where::kNetwork,
+              [](CommandContext&) { return Json::Value(Json::objectValue); }},
+      Command{"list_files", Where::kNetwork, &list_files},
+      Command{"save_polygon", Where::kNetwork, &save_polygon},
+  };
+}
+
+}  // namespace occlusion::server

@@ -1,0 +1,110 @@
+// The jobs of the app layer as commands: params are the job's config section,
+// the result is the job's JSON report, per-element data follows as frames.
+
+#include <json/value.h>
+
+#include <type_traits>
+#include <utility>
+
+#include "command_table.hpp"
+#include "job_params.hpp"
+#include "loaded_scene.hpp"
+#include "occlusion/app/cloud_occlusion_job.hpp"
+#include "occlusion/app/evaluate_job.hpp"
+#include "occlusion/app/mesh_occlusion_job.hpp"
+#include "occlusion/app/reconstruct_job.hpp"
+#include "occlusion/app/region_growing_job.hpp"
+#include "occlusion/app/scan_job.hpp"
+#include "occlusion/io/cloud_io.hpp"
+
+namespace occlusion::server {
+
+namespace {
+
+template <class T, class = void>
+struct HasOut : std::false_type {};
+template <class T>
+struct HasOut<T, std::void_t<decltype(std::declval<T&>().out)>> : std::true_type {};
+
+template <class Request, class Report>
+Command job_command(const std::string& name, const JobParams& spec,
+                    Report (*run)(const Request&, const Progress&),
+                    void (*send_frames)(CommandContext&, const Report&)) {
+  return Command{name, Where::kWorker, [=](CommandContext& context) {
+                   const JobConfig job = job_config(context.params, spec, context.server.root);
+                   Request request;
+                   apply_config(job.config, request);
+                   if constexpr (HasOut<Request>::value) {
+                     if (job.no_out) request.out.clear();
+                   }
+                   const Report report = run(request, context.progress());
+                   context.progress().check_cancel();
+                   if (send_frames != nullptr) send_frames(context, report);
+                   Json::Value json = to_json(report);
+                   context.server.root.relativise(json);
+                   return json;
+                 }};
+}
+
+// A job of the protocol whose app-layer job has not landed yet.
+Command not_yet(const std::string& name) {
+  return Command{name, Where::kWorker, {}};
+}
+
+void mesh_frames(CommandContext& context, const MeshOcclusionReport& report) {
+  const auto& fraction = report.result.face_visible_fraction;
+  context.send(make_frame(FrameKind::kFaceVisibleFraction, fraction.data(), fraction.size(), 1));
+}
+
+void escape_frames(CommandContext& context, const CloudOcclusionReport& report) {
+  const auto& viewpoints = report.result.viewpoints;
+  for (std::size_t v = 0; v < viewpoints.size(); ++v) {
+    const auto& directions = viewpoints[v].escape_directions;
+    context.send(make_frame(FrameKind::kEscapeDirections,
+                            reinterpret_cast<const float*>(directions.data()), directions.size(), 3,
+                            static_cast<std::uint32_t>(v)));
+  }
+}
+
+void scan_frames(CommandContext& context, const ScanReport& report) {
+  const auto& count = report.result.visible_count;
+  context.send(make_frame(FrameKind::kVisibleCount, count.data(), count.size(), 1));
+}
+
+// The estimated mesh (as `load` sends a mesh), how much of each face is
+// visible, and which cluster each input point fell in.
+void region_growing_frames(CommandContext& context, const RegionGrowingReport& report) {
+  context.send(mesh_scene(report.estimate.mesh)->frames);
+  const auto& fraction = report.occlusion.face_visible_fraction;
+  context.send(make_frame(FrameKind::kFaceVisibleFraction, fraction.data(), fraction.size(), 1));
+  const auto& clusters = report.estimate.point_cluster;
+  context.send(make_frame(FrameKind::kPointClusters, clusters.data(), clusters.size(), 1));
+}
+
+// The reconstructed cloud itself, read back from what the job wrote, so the
+// viewer shows exactly the file.
+void reconstruct_frames(CommandContext& context, const ReconstructReport& report) {
+  if (report.outputs.empty()) return;
+  context.progress()("sending", 0.9);
+  context.send(cloud_frames(read_cloud(report.outputs.front())));
+}
+
+}  // namespace
+
+std::vector<Command> job_commands() {
+  return {
+      job_command("mesh_occlusion", {"mesh", true, {}}, &run_mesh_occlusion, &mesh_frames),
+      job_command("cloud_occlusion", {"point_cloud", true, {}}, &run_cloud_occlusion,
+                  &escape_frames),
+      job_command("region_growing_occlusion", {"region_growing", true, {}},
+                  &run_region_growing_occlusion, &region_growing_frames),
+      job_command("scan", {"point_cloud", true, {}}, &run_scan, &scan_frames),
+      job_command("reconstruct", {"reconstruct", true, {}}, &run_reconstruct, &reconstruct_frames),
+      job_command<EvaluateRequest, EvaluateReport>(
+          "evaluate", {"evaluate", true, {"ground_truth", "predictions"}}, &run_evaluate, nullptr),
+      not_yet("extract_polygons"),
+      not_yet("study"),
+  };
+}
+
+}  // namespace occlusion::server

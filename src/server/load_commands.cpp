@@ -1,0 +1,140 @@
+// load (a file of the data directory) and the upload that shares its reply.
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cctype>
+#include <filesystem>
+#include <fstream>
+
+#include "command_params.hpp"
+#include "command_table.hpp"
+#include "loaded_scene.hpp"
+#include "occlusion/io/atomic_file.hpp"
+#include "occlusion/io/cloud_io.hpp"
+#include "occlusion/io/input_error.hpp"
+#include "occlusion/io/obj_reader.hpp"
+#include "occlusion/server/protocol_error.hpp"
+#include "upload.hpp"
+
+namespace occlusion::server {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string lower_extension(const std::string& name) {
+  std::string extension = fs::path(name).extension().string();
+  for (auto& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return extension;
+}
+
+// `display` is how errors name the file (the client's path, not ours).
+std::shared_ptr<LoadedScene> read_scene(const fs::path& path, const std::string& display,
+                                        bool skip_bad_lines) {
+  try {
+    if (lower_extension(path.string()) == ".obj" && !fs::is_directory(path)) {
+      return mesh_scene(read_obj(path.string()));
+    }
+    CloudReadOptions options;
+    options.skip_bad_lines = skip_bad_lines;
+    CloudReadReport report;
+    const PointCloud cloud = read_cloud(path.string(), options, &report);
+    auto scene = cloud_scene(cloud);
+    scene->summary["dropped_nan"] = Json::UInt64(report.dropped_nan);
+    scene->summary["skipped_lines"] = Json::UInt64(report.skipped_lines);
+    return scene;
+  } catch (const InputError& e) {
+    if (e.path != path.string()) throw;
+    throw InputError(display, e.line, e.reason);
+  }
+}
+
+Json::Value reply(CommandContext& context, const LoadedScene& scene, const std::string& path,
+                  bool cached) {
+  context.progress()("sending", 1.0);
+  context.send(scene.frames);
+  Json::Value result = scene.summary;
+  result["path"] = path;
+  result["cached"] = cached;
+  return result;
+}
+
+Json::Value load(CommandContext& context) {
+  allow_keys(context.params, {"path", "skip_bad_lines"});
+  const std::string path = required_string(context.params, "path");
+  const bool skip_bad_lines = bool_param(context.params, "skip_bad_lines", false);
+  const DataRoot& root = context.server.root;
+  const fs::path resolved = root.resolve(path, true);
+  const std::string relative = root.relative(resolved.string());
+
+  const std::string key = scene_key(resolved, skip_bad_lines ? "skip_bad_lines" : "");
+  std::shared_ptr<const LoadedScene> scene = context.server.cache.find(key);
+  const bool cached = scene != nullptr;
+  if (!cached) {
+    context.progress()("loading", 0.0);
+    scene = read_scene(resolved, relative, skip_bad_lines);
+    context.server.cache.insert(key, scene);
+  }
+  return reply(context, *scene, relative, cached);
+}
+
+}  // namespace
+
+void check_upload_name(const std::string& name) {
+  const auto fail = [&](const std::string& why) {
+    throw ProtocolError("invalid_request", "upload name '" + name + "' " + why);
+  };
+  if (name.empty() || name.size() > 200) fail("must have 1 to 200 characters");
+  if (name.find_first_of(std::string("/\\\0", 3)) != std::string::npos) {
+    fail("must be a plain file name");
+  }
+  if (name[0] == '.') fail("must not start with '.'");
+  const std::string extension = lower_extension(name);
+  const char* known[] = {".obj", ".ply", ".pcd", ".txt", ".xyz", ".pts"};
+  if (std::find(std::begin(known), std::end(known), extension) == std::end(known)) {
+    fail("needs one of the extensions .obj .ply .pcd .txt .xyz .pts");
+  }
+}
+
+Json::Value store_upload(CommandContext& context, const std::string& name, std::string_view bytes) {
+  check_upload_name(name);
+  const DataRoot& root = context.server.root;
+  const fs::path folder = root.resolve("uploads", false);
+  ensure_directory(folder.string());
+  const fs::path target = root.resolve("uploads/" + name, false);
+  // Hidden (list_files skips it) and with the upload's extension, which decides the reader.
+  static std::atomic<unsigned long> counter{0};
+  const fs::path temporary = folder / (".upload-" + std::to_string(static_cast<long>(::getpid())) +
+                                       "-" + std::to_string(counter.fetch_add(1)) + "-" + name);
+  struct Remove {
+    const fs::path& path;
+    bool keep = false;
+    ~Remove() {
+      std::error_code ignored;
+      if (!keep) fs::remove(path, ignored);
+    }
+  } cleanup{temporary};
+  {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    out.close();
+    if (!out) throw OutputError("uploads/" + name, "cannot store the upload");
+  }
+  context.progress()("reading", 0.0);
+  const std::string relative = root.relative(target.string());
+  const auto scene = read_scene(temporary, relative, false);
+  context.progress().check_cancel();
+  std::error_code error;
+  fs::rename(temporary, target, error);
+  if (error) throw OutputError(relative, "cannot store the upload: " + error.message());
+  cleanup.keep = true;
+  return reply(context, *scene, relative, false);
+}
+
+std::vector<Command> load_commands() {
+  return {Command{"load", Where::kWorker, &load}};
+}
+
+}  // namespace occlusion::server

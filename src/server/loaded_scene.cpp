@@ -1,0 +1,89 @@
+#include "loaded_scene.hpp"
+
+#include "occlusion/app/json_output.hpp"
+
+namespace occlusion::server {
+
+namespace {
+
+Json::Value bounds_json(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi) {
+  Json::Value bounds(Json::objectValue);
+  bounds["min"] = to_json(lo);
+  bounds["max"] = to_json(hi);
+  return bounds;
+}
+
+}  // namespace
+
+std::size_t LoadedScene::bytes() const {
+  std::size_t total = 1024;  // the summary, roughly
+  for (const auto& frame : frames) total += frame.message.size();
+  return total;
+}
+
+std::vector<Frame> cloud_frames(const PointCloud& cloud) {
+  std::vector<Frame> frames;
+  const std::size_t n = cloud.size();
+  // Eigen::Vector3f and std::array<uint8_t, 3> are packed value triples.
+  static_assert(sizeof(Eigen::Vector3f) == 3 * sizeof(float), "packed positions");
+  static_assert(sizeof(std::array<std::uint8_t, 3>) == 3, "packed colours");
+  frames.push_back(make_frame(FrameKind::kPositions,
+                              reinterpret_cast<const float*>(cloud.positions.data()), n, 3));
+  if (cloud.has_colours()) {
+    frames.push_back(make_frame(FrameKind::kColours,
+                                reinterpret_cast<const std::uint8_t*>(cloud.colours.data()), n, 3));
+  }
+  if (cloud.has_labels()) {
+    frames.push_back(make_frame(FrameKind::kLabels, cloud.labels.data(), n, 1));
+  }
+  if (cloud.has_instances()) {
+    frames.push_back(make_frame(FrameKind::kInstances, cloud.instances.data(), n, 1));
+  }
+  return frames;
+}
+
+std::shared_ptr<LoadedScene> cloud_scene(const PointCloud& cloud) {
+  auto scene = std::make_shared<LoadedScene>();
+  Json::Value& summary = scene->summary;
+  summary["kind"] = "cloud";
+  summary["points"] = Json::UInt64(cloud.size());
+  summary["has_colours"] = cloud.has_colours();
+  summary["has_labels"] = cloud.has_labels();
+  summary["has_instances"] = cloud.has_instances();
+  summary["class_names"] = to_json(cloud.class_names);
+  Eigen::Vector3f lo, hi;
+  cloud.bounds(lo, hi);
+  summary["bounds"] = bounds_json(lo.cast<double>(), hi.cast<double>());
+  scene->frames = cloud_frames(cloud);
+  return scene;
+}
+
+std::shared_ptr<LoadedScene> mesh_scene(const TriangleMesh& mesh) {
+  auto scene = std::make_shared<LoadedScene>();
+  Json::Value& summary = scene->summary;
+  summary["kind"] = "mesh";
+  summary["vertices"] = Json::UInt64(mesh.vertices.size());
+  summary["faces"] = Json::UInt64(mesh.face_count());
+  summary["groups"] = to_json(mesh.group_names);
+  Eigen::Vector3d lo, hi;
+  mesh.bounds(lo, hi);
+  summary["bounds"] = bounds_json(lo, hi);
+
+  // The viewer draws in float32; the mesh is read in double.
+  std::vector<float> positions;
+  positions.reserve(3 * mesh.vertices.size());
+  for (const auto& v : mesh.vertices) {
+    for (int k = 0; k < 3; ++k) positions.push_back(static_cast<float>(v[k]));
+  }
+  static_assert(sizeof(std::array<std::uint32_t, 3>) == 12, "packed triangles");
+  scene->frames.push_back(
+      make_frame(FrameKind::kPositions, positions.data(), mesh.vertices.size(), 3));
+  scene->frames.push_back(make_frame(FrameKind::kIndices,
+                                     reinterpret_cast<const std::uint32_t*>(mesh.faces.data()),
+                                     mesh.face_count(), 3));
+  scene->frames.push_back(
+      make_frame(FrameKind::kFaceGroups, mesh.face_group.data(), mesh.face_count(), 1));
+  return scene;
+}
+
+}  // namespace occlusion::server

@@ -1,0 +1,33 @@
+#pragma once
+// What every connection of one server shares.
+
+#include <cstddef>
+
+#include "occlusion/server/data_root.hpp"
+#include "scene_cache.hpp"
+#include "worker_pool.hpp"
+
+namespace occlusion::server {
+
+struct Limits {
+  std::size_t max_text_bytes = std::size_t{1} << 20;
+  std::size_t max_upload_bytes = std::size_t{256} << 20;
+  std::size_t max_queued_jobs = 64;
+  double progress_interval_seconds = 0.1;  // at most 10 progress events per second per job
+};
+
+struct ServerContext {
+  ServerContext(const DataRoot& data, std::size_t cache_bytes, unsigned workers,
+                const Limits& server_limits)
+      : root(data),
+        limits(server_limits),
+        cache(cache_bytes),
+        pool(workers, server_limits.max_queued_jobs) {}
+
+  DataRoot root;
+  Limits limits;
+  SceneCache cache;
+  WorkerPool pool;  // last: stopped and joined before the rest goes
+};
+
+}  // namespace occlusion::server

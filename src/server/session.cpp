@@ -1,0 +1,248 @@
+#include "session.hpp"
+
+#include "command_params.hpp"
+#include "error_reply.hpp"
+#include "occlusion/server/protocol_error.hpp"
+#include "upload.hpp"
+
+namespace occlusion::server {
+
+namespace {
+
+// Refused announcements remembered per connection, so a client that keeps
+// sending them cannot grow the set without bound.
+constexpr std::size_t kMaxRefusedUploads = 64;
+
+}  // namespace
+
+std::string hello_message(const Limits& limits) {
+  Json::Value json(Json::objectValue);
+  json["type"] = "hello";
+  json["protocol"] = kProtocolVersion;
+  json["server"] = "occlusion 0.1.0";
+  Json::Value commands(Json::objectValue);
+  for (const auto& command : command_table()) commands[command.name] = command.available();
+  json["commands"] = commands;
+  Json::Value limit(Json::objectValue);
+  limit["max_text_bytes"] = Json::UInt64(limits.max_text_bytes);
+  limit["max_upload_bytes"] = Json::UInt64(limits.max_upload_bytes);
+  limit["progress_per_second"] = 1.0 / limits.progress_interval_seconds;
+  json["limits"] = limit;
+  return write_json(json);
+}
+
+Session::Session(ServerContext& server, std::shared_ptr<Outbox> outbox)
+    : server_(server), outbox_(std::move(outbox)) {}
+
+void Session::open() {
+  outbox_->send_text(hello_message(server_.limits));
+}
+
+void Session::on_text(std::string_view text) {
+  if (text.size() > server_.limits.max_text_bytes) {
+    send_error(Json::Value(), "", "message_too_large",
+               "text messages are limited to " + std::to_string(server_.limits.max_text_bytes) +
+                   " bytes; this one has " + std::to_string(text.size()));
+    return;
+  }
+  Json::Value message;
+  try {
+    message = parse_json(text);
+    dispatch(read_request(message));
+  } catch (...) {
+    const ErrorReply error = classify(std::current_exception());
+    const std::string command = message.isObject() && message["command"].isString()
+                                    ? message["command"].asString()
+                                    : std::string();
+    send_error(request_id_of(message), command, error.code, error.message);
+  }
+}
+
+void Session::dispatch(const Request& request) {
+  const Command* command = find_command(request.command);
+  if (command == nullptr) {
+    throw ProtocolError("unknown_command", "unknown command '" + request.command + "'");
+  }
+  if (!command->available()) {
+    throw ProtocolError("not_available",
+                        "'" + request.command + "' is not available in this build yet");
+  }
+  {
+    // Ids name replies, so no two requests of a connection may share one at a time.
+    const std::lock_guard<std::mutex> lock(mutex_);
+    if (running_.count(request.id) > 0) {
+      throw ProtocolError("duplicate_id", "id " + std::to_string(request.id) + " is still running");
+    }
+  }
+  if (command->name == "cancel") return cancel(request);
+  if (command->name == "upload") return announce_upload(request);
+  if (command->where == Where::kNetwork) {
+    execute(request.command, request.id, request.params, command->run, nullptr);
+    return;
+  }
+  const Flag flag = std::make_shared<std::atomic<bool>>(false);
+  if (!register_id(request.id, flag)) {
+    throw ProtocolError("duplicate_id", "id " + std::to_string(request.id) + " is still running");
+  }
+  submit(request.command, request.id, request.params, command->run, flag);
+}
+
+void Session::submit(const std::string& command, std::uint32_t id, Json::Value params, Run run,
+                     const Flag& flag) {
+  auto self = shared_from_this();
+  const bool queued =
+      server_.pool.submit([self, command, id, params = std::move(params), run = std::move(run),
+                           flag] { self->execute(command, id, params, run, flag); });
+  if (!queued) {
+    finish(id);
+    send_error(Json::Value(id), command, "busy", "too many jobs are waiting; try again later");
+  }
+}
+
+void Session::execute(const std::string& command, std::uint32_t id, const Json::Value& params,
+                      const Run& run, const Flag& flag) {
+  try {
+    CommandContext context(server_, *outbox_, id, params, flag.get());
+    context.progress().check_cancel();
+    Json::Value result = run(context);
+    // A job that finished as it was cancelled still counts as cancelled.
+    context.progress().check_cancel();
+    outbox_->send_text(result_message(id, command, std::move(result), context.sent()));
+  } catch (...) {
+    const ErrorReply error = classify(std::current_exception());
+    send_error(Json::Value(id), command, error.code, error.message);
+  }
+  if (flag) finish(id);
+}
+
+void Session::announce_upload(const Request& request) {
+  const auto refuse = [&] {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    if (refused_uploads_.size() >= kMaxRefusedUploads) refused_uploads_.clear();
+    refused_uploads_.insert(request.id);
+  };
+  try {
+    allow_keys(request.params, {"name", "size"});
+    const std::string name = required_string(request.params, "name");
+    const std::uint64_t size = required_unsigned(request.params, "size");
+    check_upload_name(name);
+    if (size > server_.limits.max_upload_bytes) {
+      throw ProtocolError(
+          "message_too_large",
+          "uploads are limited to " + std::to_string(server_.limits.max_upload_bytes) + " bytes");
+    }
+    server_.root.resolve("uploads/" + name, false);
+    if (!register_id(request.id, std::make_shared<std::atomic<bool>>(false))) {
+      throw ProtocolError("duplicate_id", "id " + std::to_string(request.id) + " is still running");
+    }
+    const std::lock_guard<std::mutex> lock(mutex_);
+    uploads_[request.id] = Upload{name, size};
+    refused_uploads_.erase(request.id);
+  } catch (...) {
+    refuse();
+    throw;
+  }
+}
+
+void Session::on_binary(std::string message) {
+  Json::Value id;
+  try {
+    const FrameHeader header = decode_frame_header(message);
+    id = header.request_id;
+    Upload upload;
+    Flag flag;
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      if (refused_uploads_.erase(header.request_id) > 0) return;
+      const auto it = uploads_.find(header.request_id);
+      if (it == uploads_.end()) {
+        throw ProtocolError("unexpected_binary",
+                            "no upload was announced with id " + std::to_string(header.request_id));
+      }
+      upload = it->second;
+      uploads_.erase(it);
+      flag = running_.at(header.request_id);
+    }
+    if (header.kind != FrameKind::kUpload || header.type != ElementType::kUint8 ||
+        header.components != 1 || header.count != upload.size) {
+      finish(header.request_id);
+      throw ProtocolError("unexpected_binary", "the upload frame must be kind 'upload', uint8, " +
+                                                   std::to_string(upload.size) +
+                                                   " bytes as announced");
+    }
+    auto bytes = std::make_shared<std::string>(std::move(message));
+    submit(
+        "upload", header.request_id, Json::Value(Json::objectValue),
+        [name = upload.name, bytes](CommandContext& context) {
+          return store_upload(context, name, std::string_view(*bytes).substr(kFrameHeaderSize));
+        },
+        flag);
+  } catch (...) {
+    const ErrorReply error = classify(std::current_exception());
+    send_error(id, id.isNull() ? "" : "upload", error.code, error.message);
+  }
+}
+
+void Session::cancel(const Request& request) {
+  allow_keys(request.params, {"target"});
+  const std::uint64_t target = required_unsigned(request.params, "target");
+  bool found = false;
+  bool was_pending_upload = false;
+  {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    if (const auto it = running_.find(static_cast<std::uint32_t>(target));
+        target <= UINT32_MAX && it != running_.end()) {
+      it->second->store(true);
+      found = true;
+      // An upload still waiting for its bytes has no worker to notice the flag.
+      was_pending_upload = uploads_.erase(it->first) > 0;
+      if (was_pending_upload) {
+        refused_uploads_.insert(it->first);
+        running_.erase(it);
+      }
+    }
+  }
+  Json::Value result(Json::objectValue);
+  result["target"] = Json::UInt64(target);
+  result["found"] = found;
+  outbox_->send_text(result_message(request.id, "cancel", result, {}));
+  if (was_pending_upload) {
+    send_error(Json::Value(static_cast<std::uint32_t>(target)), "upload", "cancelled", "cancelled");
+  }
+}
+
+void Session::close() {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  closed_ = true;
+  for (auto& [id, flag] : running_) flag->store(true);
+  uploads_.clear();
+}
+
+std::size_t Session::running() const {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  return running_.size();
+}
+
+bool Session::register_id(std::uint32_t id, const Flag& flag) {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  if (closed_) flag->store(true);
+  return running_.emplace(id, flag).second;
+}
+
+void Session::finish(std::uint32_t id) {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  running_.erase(id);
+}
+
+void Session::send_error(const Json::Value& id, const std::string& command, const std::string& code,
+                         const std::string& message) {
+  // Readers name files by their full path; the client knows them by the data-relative one.
+  std::string text = message;
+  const std::string prefix = server_.root.path().string() + "/";
+  for (std::size_t at = text.find(prefix); at != std::string::npos; at = text.find(prefix, at)) {
+    text.erase(at, prefix.size());
+  }
+  outbox_->send_text(error_message(id, command, code, text));
+}
+
+}  // namespace occlusion::server

@@ -1,0 +1,74 @@
+#pragma once
+// One client connection: reads its messages, runs its requests (on this
+// thread or a worker), keeps the cancel flag of each running request and the
+// uploads it announced. Knows nothing of WebSocket++: replies go to an Outbox.
+
+#include <atomic>
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <set>
+#include <string>
+#include <string_view>
+
+#include "command_table.hpp"
+#include "messages.hpp"
+#include "outbox.hpp"
+#include "server_context.hpp"
+
+namespace occlusion::server {
+
+class Session : public std::enable_shared_from_this<Session> {
+ public:
+  Session(ServerContext& server, std::shared_ptr<Outbox> outbox);
+
+  // Sends the hello message.
+  void open();
+  void on_text(std::string_view text);
+  void on_binary(std::string message);
+  // The connection is gone: cancels its requests, whose replies are dropped.
+  void close();
+
+  std::size_t running() const;
+
+ private:
+  using Flag = std::shared_ptr<std::atomic<bool>>;
+  using Run = std::function<Json::Value(CommandContext&)>;
+
+  struct Upload {
+    std::string name;
+    std::uint64_t size = 0;
+  };
+
+  void dispatch(const Request& request);
+  void announce_upload(const Request& request);
+  void cancel(const Request& request);
+  // Runs on a worker; the id must be registered already.
+  void submit(const std::string& command, std::uint32_t id, Json::Value params, Run run,
+              const Flag& flag);
+  // Runs `run` and sends its result or error. Never throws.
+  void execute(const std::string& command, std::uint32_t id, const Json::Value& params,
+               const Run& run, const Flag& flag);
+  void send_error(const Json::Value& id, const std::string& command, const std::string& code,
+                  const std::string& message);
+
+  // False if the id is in use.
+  bool register_id(std::uint32_t id, const Flag& flag);
+  void finish(std::uint32_t id);
+
+  ServerContext& server_;
+  std::shared_ptr<Outbox> outbox_;
+
+  mutable std::mutex mutex_;
+  std::map<std::uint32_t, Flag> running_;
+  std::map<std::uint32_t, Upload> uploads_;
+  std::set<std::uint32_t> refused_uploads_;  // their binary message is dropped
+  bool closed_ = false;
+};
+
+// The hello message: protocol version, commands and whether each is
+// available, limits.
+std::string hello_message(const Limits& limits);
+
+}  // namespace occlusion::server

@@ -1,0 +1,242 @@
+// -eval end to end on the synthetic S3DIS office (files/s3dis_synthetic):
+// predictions are made from its ground truth with known changes, so every
+// expected figure follows from the class counts.
+
+#include <gtest/gtest.h>
+#include <json/reader.h>
+
+#include <map>
+#include <sstream>
+
+#include "occlusion/io/cloud_io.hpp"
+#include "occlusion/io/label_file.hpp"
+#include "run_cli.hpp"
+
+namespace occlusion {
+namespace {
+
+using testing::CliRun;
+using testing::run_cli;
+using testing::TempDir;
+
+const std::string kSource = OCCLUSION_SOURCE_DIR;
+const std::string kRoomPath = kSource + "/files/s3dis_synthetic/Area_1/office_1";
+const std::string kRoom = "'" + kRoomPath + "'";
+
+// The seed's table 3.1, written out independently of the code under test.
+const std::map<std::string, std::int32_t> kTable = {
+    {"wall", 0},   {"floor", 1},    {"ceiling", 1}, {"chair", 4},    {"sofa", 5},
+    {"table", 6},  {"door", 7},     {"window", 8},  {"bookcase", 9}, {"beam", 20},
+    {"board", 21}, {"clutter", 25}, {"column", 26}};
+constexpr std::int32_t kChair = 4;
+constexpr std::int32_t kTableId = 6;
+
+struct Room {
+  PointCloud cloud;
+  std::vector<std::int32_t> ids;  // ground truth in evaluation ids
+  std::map<std::int32_t, std::size_t> support;
+};
+
+const Room& room() {
+  static const Room r = [] {
+    Room room;
+    room.cloud = read_cloud(kRoomPath);
+    for (const auto label : room.cloud.labels) {
+      const std::int32_t id = kTable.at(room.cloud.class_names.at(static_cast<std::size_t>(label)));
+      room.ids.push_back(id);
+      ++room.support[id];
+    }
+    return room;
+  }();
+  return r;
+}
+
+// Every chair point predicted as a table.
+std::string chairs_as_tables(const TempDir& dir) {
+  std::vector<std::int32_t> predicted = room().ids;
+  for (auto& id : predicted) id = id == kChair ? kTableId : id;
+  const std::string path = dir.file("office_1.labels");
+  write_label_file(path, predicted);
+  return path;
+}
+
+Json::Value parse_json(const std::string& text) {
+  Json::Value value;
+  Json::CharReaderBuilder builder;
+  std::string errors;
+  std::istringstream in(text);
+  EXPECT_TRUE(Json::parseFromStream(builder, in, &value, &errors)) << errors << "\n" << text;
+  return value;
+}
+
+Json::Value run_json(const std::string& args) {
+  const CliRun run = run_cli(args + " --json -q");
+  EXPECT_EQ(run.exit_code, 0) << args << "\n" << run.err;
+  return parse_json(run.out);
+}
+
+const Json::Value& class_entry(const Json::Value& json, std::int32_t id) {
+  for (const auto& c : json["classes"]) {
+    if (c["id"].asInt() == id) return c;
+  }
+  ADD_FAILURE() << "no class " << id;
+  return json;
+}
+
+TEST(EvaluateCli, LabelFileWithChairsCalledTables) {
+  const TempDir dir;
+  const std::string labels = chairs_as_tables(dir);
+  const Json::Value json =
+      run_json("-eval " + kRoom + " --prediction '" + labels + "' --out '" + dir.path() + "'");
+
+  const auto& support = room().support;
+  const double chairs = static_cast<double>(support.at(kChair));
+  const double tables = static_cast<double>(support.at(kTableId));
+  const double classes = static_cast<double>(support.size());
+  const double points = static_cast<double>(room().ids.size());
+  EXPECT_EQ(json["job"].asString(), "evaluate");
+  EXPECT_EQ(json["points"].asDouble(), points);
+  EXPECT_EQ(json["classes_with_support"].asDouble(), classes);
+  // Chair IoU 0, table tables / (tables + chairs), every other class 1.
+  EXPECT_NEAR(json["miou"].asDouble(), (classes - 2 + tables / (tables + chairs)) / classes, 1e-12);
+  EXPECT_NEAR(json["overall_accuracy"].asDouble(), (points - chairs) / points, 1e-12);
+  EXPECT_NEAR(json["mean_class_accuracy"].asDouble(), (classes - 1) / classes, 1e-12);
+  EXPECT_EQ(class_entry(json, kChair)["iou"].asDouble(), 0.0);
+  EXPECT_EQ(class_entry(json, kTableId)["fp"].asDouble(), chairs);
+  EXPECT_TRUE(class_entry(json, 5)["iou"].isNull());  // no sofa in the office
+  EXPECT_EQ(json["scenes"][0]["transfer"].asString(), "direct");
+  EXPECT_EQ(json["confusion"]["rows"].size(), 12u);
+
+  const std::string csv = testing::read_text(dir.file("office_1.eval.csv"));
+  EXPECT_EQ(csv.rfind("scene,id,class,support,tp,fp,fn,iou,precision,recall,f1\n", 0), 0u);
+  EXPECT_NE(csv.find("total,4,chair,"), std::string::npos);
+  EXPECT_NE(csv.find("total,5,sofa,0,0,0,0,,,,\n"), std::string::npos);
+  const std::string markdown = testing::read_text(dir.file("office_1.eval.md"));
+  EXPECT_NE(markdown.find("| id | class | support | IoU |"), std::string::npos);
+  EXPECT_NE(markdown.find("| 4 | chair |"), std::string::npos);
+  const Json::Value written = parse_json(testing::read_text(dir.file("office_1.eval.json")));
+  EXPECT_EQ(written["miou"], json["miou"]);
+}
+
+TEST(EvaluateCli, VoxelisedPredictionIsTransferred) {
+  const TempDir dir;
+  PointCloud shifted;
+  for (const auto& p : room().cloud.positions) {
+    shifted.positions.push_back(p + Eigen::Vector3f(0.0005f, 0, 0));
+  }
+  shifted.labels = room().ids;  // evaluation ids, no class names
+  write_cloud(dir.file("voxels.ply"), shifted);
+  const std::string base = "-eval " + kRoom + " --prediction '" + dir.file("voxels.ply") + "'";
+
+  // No two points of the office are closer than 1.7 mm, so each point's
+  // nearest prediction is its own, 0.5 mm away.
+  const Json::Value near = run_json(base);
+  EXPECT_EQ(near["miou"].asDouble(), 1.0);
+  EXPECT_EQ(near["scenes"][0]["transfer"].asString(), "nearest_neighbour");
+  EXPECT_NEAR(near["scenes"][0]["max_matched_distance"].asDouble(), 0.0005, 1e-5);
+  EXPECT_EQ(near["unlabelled_points"].asUInt64(), 0u);
+
+  const CliRun far = run_cli(base + " --max-distance 0.0002 --json");
+  ASSERT_EQ(far.exit_code, 0) << far.err;
+  const Json::Value json = parse_json(far.out);
+  EXPECT_EQ(json["miou"].asDouble(), 0.0);
+  EXPECT_EQ(json["beyond_distance_points"].asUInt64(), room().ids.size());
+  EXPECT_EQ(json["other_predictions"].asUInt64(), room().ids.size());
+  EXPECT_NE(far.err.find("have no predicted point within 0.0002"), std::string::npos) << far.err;
+
+  EXPECT_EQ(run_cli(base + " --max-distance 0 -q").exit_code, 2);
+}
+
+TEST(EvaluateCli, ScenesAreSummedAndNamedPredictionsMappedByName) {
+  const TempDir dir;
+  const std::string labels = chairs_as_tables(dir);
+  // The second prediction is the ground truth itself: its labels carry S3DIS
+  // names, which are mapped like the ground truth's.
+  const Json::Value json = run_json("-eval " + kRoom + " " + kRoom + " --prediction '" + labels +
+                                    "' --predictions " + kRoom + " --out '" + dir.path() + "'");
+  const double points = static_cast<double>(room().ids.size());
+  const double chairs = static_cast<double>(room().support.at(kChair));
+  ASSERT_EQ(json["scenes"].size(), 2u);
+  EXPECT_EQ(json["scenes"][1]["miou"].asDouble(), 1.0);
+  EXPECT_EQ(json["points"].asDouble(), 2 * points);
+  EXPECT_NEAR(json["overall_accuracy"].asDouble(), (2 * points - chairs) / (2 * points), 1e-12);
+  EXPECT_FALSE(testing::read_text(dir.file("eval.json")).empty());
+  EXPECT_NE(testing::read_text(dir.file("eval.csv")).find("\noffice_1,0,wall,"), std::string::npos);
+  EXPECT_NE(testing::read_text(dir.file("eval.md")).find("## Scenes"), std::string::npos);
+}
+
+TEST(EvaluateCli, MappingFileIgnoredClassesAndConfusion) {
+  const TempDir dir;
+  const std::string labels = chairs_as_tables(dir);
+  dir.write("mapping.json", R"({"classes": {"wall": 0, "floor": 1, "ceiling": 1, "chair": 4,
+    "table": 6, "door": 7, "window": 8, "bookcase": 9, "board": 21, "clutter": 25},
+    "names": {"1": "floor/ceiling"}, "ignored_classes": ["clutter"]})");
+  const std::string base = "-eval " + kRoom + " --prediction '" + labels + "' --mapping '" +
+                           dir.file("mapping.json") + "'";
+  const Json::Value json = run_json(base);
+  EXPECT_EQ(json["skipped_points"].asUInt64(), room().support.at(25));
+  EXPECT_EQ(json["classes"].size(), 8u);
+  EXPECT_EQ(class_entry(json, 1)["name"].asString(), "floor/ceiling");
+  EXPECT_EQ(json["mapping"]["ignored_classes"][0].asString(), "clutter");
+
+  const CliRun human = run_cli(base + " --confusion -q");
+  ASSERT_EQ(human.exit_code, 0) << human.err;
+  EXPECT_NE(human.out.find("mIoU"), std::string::npos) << human.out;
+  EXPECT_NE(human.out.find("confusion (rows: ground truth"), std::string::npos) << human.out;
+  EXPECT_NE(human.out.find("other"), std::string::npos) << human.out;
+}
+
+TEST(EvaluateCli, ConfigSection) {
+  const TempDir dir;
+  chairs_as_tables(dir);
+  dir.write("eval.json", R"({"occlusion": {"evaluate": {"ground_truth": [")" + kRoomPath +
+                             R"("], "predictions": ["office_1.labels"], "max_distance": 0.02,
+                             "ignored_classes": ["chair"]}}})");
+  const Json::Value json = run_json("-eval --config '" + dir.file("eval.json") + "'");
+  EXPECT_EQ(json["parameters"]["max_distance"].asDouble(), 0.02);
+  EXPECT_EQ(json["skipped_points"].asUInt64(), room().support.at(kChair));
+  EXPECT_EQ(
+      run_cli("-eval --config '" + dir.file("eval.json") + "' --max-distance -1 -q").exit_code, 2);
+  dir.write("bad.json", R"({"occlusion": {"evaluate": {"prediction": ["x"]}}})");
+  EXPECT_EQ(run_cli("-eval --config '" + dir.file("bad.json") + "' -q").exit_code, 2);
+}
+
+TEST(EvaluateCli, Errors) {
+  const TempDir dir;
+  const std::string labels = "'" + chairs_as_tables(dir) + "'";
+  EXPECT_EQ(run_cli("-eval " + kRoom + " -q").exit_code, 2);  // no prediction
+  EXPECT_EQ(run_cli("-eval " + kRoom + " " + kRoom + " --prediction " + labels + " -q").exit_code,
+            2);
+  dir.write("typo.json", R"({"clases": {}})");
+  EXPECT_EQ(run_cli("-eval " + kRoom + " --prediction " + labels + " --mapping '" +
+                    dir.file("typo.json") + "' -q")
+                .exit_code,
+            2);
+  dir.write("walls.json", R"({"classes": {"wall": 0}})");
+  const CliRun unmapped = run_cli("-eval " + kRoom + " --prediction " + labels + " --mapping '" +
+                                  dir.file("walls.json") + "' -q");
+  EXPECT_EQ(unmapped.exit_code, 2);
+  EXPECT_NE(unmapped.err.find("classes not in the class mapping: board, bookcase, ceiling, chair"),
+            std::string::npos)
+      << unmapped.err;
+
+  EXPECT_EQ(run_cli("-eval /nonexistent.ply --prediction " + labels + " -q").exit_code, 3);
+  dir.write("short.labels", "0\n1\n");
+  const CliRun short_file =
+      run_cli("-eval " + kRoom + " --prediction '" + dir.file("short.labels") + "' -q");
+  EXPECT_EQ(short_file.exit_code, 3);
+  EXPECT_NE(short_file.err.find("holds 2 labels"), std::string::npos) << short_file.err;
+  dir.write("bad.labels", "0\nwall\n");
+  const CliRun bad =
+      run_cli("-eval " + kRoom + " --prediction '" + dir.file("bad.labels") + "' -q");
+  EXPECT_EQ(bad.exit_code, 3);
+  EXPECT_NE(bad.err.find("bad.labels:2:"), std::string::npos) << bad.err;
+  dir.write("plain.txt", "0 0 0\n1 0 0\n0 1 0\n");
+  const CliRun unlabelled = run_cli("-eval '" + dir.file("plain.txt") + "' --prediction '" +
+                                    dir.file("short.labels") + "' -q");
+  EXPECT_EQ(unlabelled.exit_code, 3);
+  EXPECT_NE(unlabelled.err.find("has no labels"), std::string::npos) << unlabelled.err;
+}
+
+}  // namespace
+}  // namespace occlusion

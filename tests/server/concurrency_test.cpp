@@ -1,0 +1,160 @@
+// Many clients at once, long jobs off the network thread, cancel, and a
+// client that leaves mid-job.
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <thread>
+
+#include "occlusion/app/mesh_occlusion_job.hpp"
+#include "server_fixture.hpp"
+
+namespace occlusion::testing {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// A job that runs for many seconds unless cancelled, in little memory (rays
+// are traced in blocks; no escape directions are kept without "out").
+Json::Value long_job() {
+  return params(R"({"path": "s3dis_synthetic/Area_1/office_1", "point_radius": 0.06,
+                    "num_rays_per_vp": 20000000, "out": ""})");
+}
+
+TEST(Concurrency, SixteenClientsLoadAndComputeAtOnce) {
+  TestServer server;
+  // The expected figures, computed directly by the app layer.
+  std::vector<double> expected(16);
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    MeshOcclusionRequest request;
+    request.path = server.files().file("sample_room.obj");
+    request.samples_per_unit_area = 10;
+    request.seed = i;
+    request.viewpoints = ViewpointChoice::from_pattern(static_cast<int>(i % 7) + 1);
+    expected[i] = run_mesh_occlusion(request).result.occlusion_level;
+  }
+
+  std::vector<std::thread> clients;
+  std::atomic<int> right{0};
+  std::vector<std::string> failures(16);
+  for (std::size_t i = 0; i < 16; ++i) {
+    clients.emplace_back([&, i] {
+      try {
+        auto client = server.connect();
+        const Reply cloud = client->request(
+            1, "load", params(R"({"path": "s3dis_synthetic/Area_1/office_1"})"), Millis(60000));
+        const Reply mesh = client->request(
+            2, "mesh_occlusion",
+            params(R"({"path": "sample_room.obj", "samples_per_unit_area": 10, "seed": )" +
+                   std::to_string(i) + R"(, "pattern": )" + std::to_string(i % 7 + 1) +
+                   R"(, "out": ""})"),
+            Millis(60000));
+        const bool cloud_ok = cloud.ok() && cloud.frames.size() == 4 &&
+                              cloud.final["result"]["points"].asUInt64() > 0;
+        const bool mesh_ok =
+            mesh.ok() && mesh.final["result"]["occlusion_level"].asDouble() == expected[i];
+        if (cloud_ok && mesh_ok) {
+          ++right;
+        } else {
+          failures[i] = cloud.final.toStyledString() + mesh.final.toStyledString();
+        }
+      } catch (const std::exception& e) {
+        failures[i] = e.what();
+      }
+    });
+  }
+  for (auto& thread : clients) thread.join();
+  EXPECT_EQ(right.load(), 16);
+  for (std::size_t i = 0; i < failures.size(); ++i) {
+    EXPECT_TRUE(failures[i].empty()) << "client " << i << ": " << failures[i];
+  }
+}
+
+TEST(Concurrency, OtherClientsAreAnsweredWhileJobsRun) {
+  server::ServerOptions options = TestServer::quiet_options();
+  options.workers = 1;
+  TestServer server(options);
+  auto busy = server.connect();
+  busy->send_request(1, "cloud_occlusion", long_job());
+  busy->send_request(2, "load", params(R"({"path": "sample_room.obj"})"));  // queued behind it
+  // Wait until the job really runs.
+  const auto first = busy->receive(Millis(10000));
+  ASSERT_TRUE(first.has_value());
+
+  auto other = server.connect();
+  for (std::uint32_t id = 10; id < 20; ++id) {
+    const auto start = Clock::now();
+    const Reply reply = other->request(id, "list_files", Json::Value(Json::objectValue));
+    EXPECT_TRUE(reply.ok());
+    EXPECT_LT(seconds_since(start), 0.5);
+  }
+  EXPECT_TRUE(busy->request(3, "cancel", params(R"({"target": 1})")).ok());
+  EXPECT_EQ(busy->collect(1, Millis(10000)).error_code(), "cancelled");
+  EXPECT_TRUE(busy->collect(2, Millis(10000)).ok());
+}
+
+TEST(Concurrency, CancelStopsAJobPromptly) {
+  TestServer server;
+  auto client = server.connect();
+  client->send_request(1, "cloud_occlusion", long_job());
+  // Cancel once it is tracing.
+  for (;;) {
+    const auto message = client->receive(Millis(20000));
+    ASSERT_TRUE(message.has_value());
+    const Json::Value json = params(message->data);
+    ASSERT_EQ(json["type"].asString(), "progress") << message->data;
+    if (json["stage"].asString() == "tracing") break;
+  }
+  const auto start = Clock::now();
+  const Reply cancel = client->request(2, "cancel", params(R"({"target": 1})"));
+  ASSERT_TRUE(cancel.ok());
+  EXPECT_TRUE(cancel.final["result"]["found"].asBool());
+  const Reply job = client->collect(1, Millis(10000));
+  EXPECT_EQ(job.error_code(), "cancelled") << job.final;
+  EXPECT_LT(seconds_since(start), 1.0);
+
+  const Reply nothing = client->request(3, "cancel", params(R"({"target": 1})"));
+  EXPECT_FALSE(nothing.final["result"]["found"].asBool());
+}
+
+TEST(Concurrency, ClientThatLeavesMidJobHasItsJobsCancelled) {
+  server::ServerOptions options = TestServer::quiet_options();
+  options.workers = 1;
+  TestServer server(options);
+  {
+    auto leaving = server.connect();
+    leaving->send_request(1, "cloud_occlusion", long_job());
+    ASSERT_TRUE(leaving->receive(Millis(10000)).has_value());  // it runs
+  }
+  // The only worker is free again as soon as the job noticed.
+  auto next = server.connect();
+  const auto start = Clock::now();
+  const Reply reply = next->request(1, "load", params(R"({"path": "sample_room.obj"})"));
+  EXPECT_TRUE(reply.ok()) << reply.final;
+  EXPECT_LT(seconds_since(start), 2.0);
+}
+
+TEST(Concurrency, FullQueueSaysBusy) {
+  server::ServerOptions options = TestServer::quiet_options();
+  options.workers = 1;
+  options.max_queued_jobs = 1;
+  TestServer server(options);
+  auto client = server.connect();
+  client->send_request(1, "cloud_occlusion", long_job());
+  ASSERT_TRUE(client->receive(Millis(10000)).has_value());  // running, the queue is empty
+  client->send_request(2, "cloud_occlusion", long_job());   // queued
+  const Reply third = client->request(3, "cloud_occlusion", long_job());
+  EXPECT_EQ(third.error_code(), "busy");
+  client->send_request(4, "cancel", params(R"({"target": 1})"));
+  client->send_request(5, "cancel", params(R"({"target": 2})"));
+  EXPECT_EQ(client->collect(1, Millis(10000)).error_code(), "cancelled");
+  EXPECT_EQ(client->collect(2, Millis(10000)).error_code(), "cancelled");
+  EXPECT_TRUE(client->request(6, "ping").ok());
+}
+
+}  // namespace
+}  // namespace occlusion::testing
