@@ -21,11 +21,11 @@
 #include "child_process.hpp"
 #include "embree_scene.hpp"
 #include "moc_replay.hpp"
-#include "obj_writer.hpp"
 #include "occlusion/analysis/mesh_occlusion.hpp"
 #include "occlusion/analysis/mesh_sampling.hpp"
 #include "occlusion/analysis/viewpoints.hpp"
 #include "occlusion/core/octree.hpp"
+#include "occlusion/io/obj_writer.hpp"
 #include "room_generator.hpp"
 
 namespace {
@@ -80,7 +80,7 @@ int run(const Options& o) {
   const GeneratedRoom room = generate_room(o.triangles, o.seed);
   const double generate_seconds = seconds_since(start);
   const TriangleMesh& mesh = room.mesh;
-  write_obj(mesh, room_path, "bench_moc room, seed " + std::to_string(o.seed));
+  write_obj(room_path, mesh, "bench_moc room, seed " + std::to_string(o.seed));
   const double density = samples_per_unit_area_for(mesh, o.samples);
 
   // The CLI runs first, while this process is small: see child_process.hpp on ru_maxrss.

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "bench_args.hpp"
-#include "obj_writer.hpp"
+#include "occlusion/io/obj_writer.hpp"
 #include "room_generator.hpp"
 
 namespace {
@@ -47,7 +47,7 @@ int main(int argc, char** argv) {
     const std::string comment = "furnished room from bench/generate_room --triangles " +
                                 std::to_string(triangles) + " --seed " + std::to_string(seed) +
                                 " (metres, z up)";
-    write_obj(room.mesh, out, comment);
+    write_obj(out, room.mesh, comment);
     std::fprintf(stderr, "generate_room: wrote %s: %zu triangles, %zu vertices, %zu groups\n",
                  out.c_str(), room.mesh.faces.size(), room.mesh.vertices.size(),
                  room.mesh.group_names.size());

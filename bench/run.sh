@@ -1,17 +1,17 @@
 #!/usr/bin/env bash
-# Builds the benchmarks (Release, in build-bench) and runs bench_moc, then bench_poc.
-# Run by hand, never in CI. Arguments are passed on to each bench run, e.g.
-#   bench/run.sh --threads 1
-# OCCLUSION_BENCH=poc bench/run.sh --points 2000000 runs one of them (moc, poc;
-# default all: then give only flags both know: --triangles --threads --seed --cli).
+# Builds the benchmarks (Release, in build-bench) and runs them in turn:
+# bench_moc, bench_poc, bench_rgoc, bench_server. Run by hand, never in CI.
+# OCCLUSION_BENCH=poc bench/run.sh --points 2000000 runs one of them (moc, poc,
+# rgoc, server) and passes the arguments on to it; with all (the default) the
+# benches run with their defaults.
 # OCCLUSION_NATIVE=ON bench/run.sh builds with -march=native.
 set -euo pipefail
 
 selected="${OCCLUSION_BENCH:-all}"
 case "$selected" in
-  moc | poc | all) ;;
+  moc | poc | rgoc | server | all) ;;
   *)
-    echo "run.sh: OCCLUSION_BENCH must be moc, poc or all, got '$selected'" >&2
+    echo "run.sh: OCCLUSION_BENCH must be moc, poc, rgoc, server or all, got '$selected'" >&2
     exit 2
     ;;
 esac
@@ -31,7 +31,14 @@ fi
 
 cmake -S "$repo" -B "$build" -DCMAKE_BUILD_TYPE=Release -DOCCLUSION_BUILD_BENCH=ON \
   -DOCCLUSION_NATIVE="${OCCLUSION_NATIVE:-OFF}"
-cmake --build "$build" -j"$(nproc)" --target bench_moc bench_poc generate_room occlusion
-if [ "$selected" != poc ]; then "$build/bench/bench_moc" "$@"; fi
-if [ "$selected" = all ]; then echo; fi
-if [ "$selected" != moc ]; then "$build/bench/bench_poc" "$@"; fi
+cmake --build "$build" -j"$(nproc)" --target bench_moc bench_poc bench_rgoc bench_server \
+  generate_room occlusion
+if [ "$selected" != all ]; then
+  "$build/bench/bench_$selected" "$@"
+  exit
+fi
+for bench in moc poc rgoc server; do
+  echo "== bench_$bench"
+  "$build/bench/bench_$bench"
+  echo
+done

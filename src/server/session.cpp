@@ -101,18 +101,22 @@ void Session::submit(const std::string& command, std::uint32_t id, Json::Value p
 
 void Session::execute(const std::string& command, std::uint32_t id, const Json::Value& params,
                       const Run& run, const Flag& flag) {
+  std::string final_reply;
   try {
     CommandContext context(server_, *outbox_, id, params, flag.get());
     context.progress().check_cancel();
     Json::Value result = run(context);
     // A job that finished as it was cancelled still counts as cancelled.
     context.progress().check_cancel();
-    outbox_->send_text(result_message(id, command, std::move(result), context.sent()));
+    final_reply = result_message(id, command, std::move(result), context.sent());
   } catch (...) {
     const ErrorReply error = classify(std::current_exception());
-    send_error(Json::Value(id), command, error.code, error.message);
+    final_reply = error_text(Json::Value(id), command, error.code, error.message);
   }
+  // The id is free before its final reply leaves: a client may reuse it as
+  // soon as it reads that reply.
   if (flag) finish(id);
+  outbox_->send_text(final_reply);
 }
 
 void Session::announce_upload(const Request& request) {
@@ -236,13 +240,18 @@ void Session::finish(std::uint32_t id) {
 
 void Session::send_error(const Json::Value& id, const std::string& command, const std::string& code,
                          const std::string& message) {
+  outbox_->send_text(error_text(id, command, code, message));
+}
+
+std::string Session::error_text(const Json::Value& id, const std::string& command,
+                                const std::string& code, const std::string& message) const {
   // Readers name files by their full path; the client knows them by the data-relative one.
   std::string text = message;
   const std::string prefix = server_.root.path().string() + "/";
   for (std::size_t at = text.find(prefix); at != std::string::npos; at = text.find(prefix, at)) {
     text.erase(at, prefix.size());
   }
-  outbox_->send_text(error_message(id, command, code, text));
+  return error_message(id, command, code, text);
 }
 
 }  // namespace occlusion::server

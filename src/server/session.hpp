@@ -52,6 +52,9 @@ class Session : public std::enable_shared_from_this<Session> {
                const Run& run, const Flag& flag);
   void send_error(const Json::Value& id, const std::string& command, const std::string& code,
                   const std::string& message);
+  // The error reply as text, with data-directory prefixes taken out of the message.
+  std::string error_text(const Json::Value& id, const std::string& command, const std::string& code,
+                         const std::string& message) const;
 
   // False if the id is in use.
   bool register_id(std::uint32_t id, const Flag& flag);

@@ -146,8 +146,8 @@ TEST(RegionGrowingCli, BoxRoomOptionsAndConfig) {
 
 TEST(RegionGrowingCli, ExampleConfigRuns) {
   const TempDir dir;
-  const Json::Value json = run_json("-rgoc --config '" + kSource +
-                                    "/config/region_growing.json' --out '" + dir.path() + "'");
+  const Json::Value json =
+      run_json("-rgoc --config '" + kSource + "/config/example.json' --out '" + dir.path() + "'");
   EXPECT_GT(json["clusters_used"].asUInt64(), 5u);
   EXPECT_GT(json["covered_fraction"].asDouble(), 0.8);
   EXPECT_EQ(json["outputs"].size(), 4u);
