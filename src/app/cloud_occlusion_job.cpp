@@ -101,8 +101,7 @@ void validate(const CloudOcclusionRequest& request) {
   }
 }
 
-void apply_config(const Config& config, CloudOcclusionRequest& request) {
-  const ConfigSection section(config, "point_cloud");
+void apply_section(const ConfigSection& section, CloudOcclusionRequest& request) {
   section.read_path("path", request.path);
   section.read_viewpoints(request.viewpoints);
   section.read("num_rays_per_vp", request.num_rays_per_vp);
@@ -121,35 +120,35 @@ void apply_config(const Config& config, CloudOcclusionRequest& request) {
   section.read_path("out", request.out);
 }
 
-CloudOcclusionReport run_cloud_occlusion(const CloudOcclusionRequest& request,
-                                         const Progress& progress) {
+void apply_config(const Config& config, CloudOcclusionRequest& request) {
+  apply_section(ConfigSection(config, "point_cloud"), request);
+}
+
+std::vector<PlanarPolygon> read_openings(const std::string& polygon_path) {
+  std::vector<PlanarPolygon> openings;
+  if (polygon_path.empty()) return openings;
+  for (const auto& boundary : read_polygons(polygon_path)) {
+    try {
+      openings.emplace_back(boundary);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(polygon_path, 0,
+                       "opening " + std::to_string(openings.size() + 1) + ": " + e.what());
+    }
+  }
+  return openings;
+}
+
+CloudOcclusionReport run_cloud_occlusion_on(const PointCloud& cloud,
+                                            const ViewpointChoice::Resolved& viewpoints,
+                                            const std::vector<PlanarPolygon>& openings,
+                                            const CloudOcclusionRequest& request,
+                                            const Progress& progress) {
   validate(request);
   const auto start = job::Clock::now();
   CloudOcclusionReport report;
   report.request = request;
-
-  progress("loading", 0.0);
-  const job::LoadedCloud loaded = job::load_cloud(request.path, request.skip_bad_lines);
-  const PointCloud& cloud = loaded.cloud;
-  report.dropped_nan = loaded.dropped_nan;
-  report.skipped_lines = loaded.skipped_lines;
-  std::vector<PlanarPolygon> openings;
-  if (!request.polygon_path.empty()) {
-    for (const auto& boundary : read_polygons(request.polygon_path)) {
-      try {
-        openings.emplace_back(boundary);
-      } catch (const std::invalid_argument& e) {
-        throw InputError(request.polygon_path, 0,
-                         "opening " + std::to_string(openings.size() + 1) + ": " + e.what());
-      }
-    }
-  }
-  report.openings = openings.size();
-  report.load_seconds = job::seconds_since(start);
-  progress.check_cancel();
-
-  const ViewpointChoice::Resolved viewpoints = job::resolve_for_cloud(request.viewpoints, cloud);
   report.viewpoint_names = viewpoints.names;
+  report.openings = openings.size();
 
   CloudOcclusionOptions options;
   options.point_radius = request.point_radius;
@@ -175,6 +174,26 @@ CloudOcclusionReport run_cloud_occlusion(const CloudOcclusionRequest& request,
         compute_cloud_occlusion(cloud, viewpoints.positions, openings, options, progress);
     report.exterior = exterior;
   }
+  report.total_seconds = job::seconds_since(start);
+  return report;
+}
+
+CloudOcclusionReport run_cloud_occlusion(const CloudOcclusionRequest& request,
+                                         const Progress& progress) {
+  validate(request);
+  const auto start = job::Clock::now();
+  progress("loading", 0.0);
+  const job::LoadedCloud loaded = job::load_cloud(request.path, request.skip_bad_lines);
+  const std::vector<PlanarPolygon> openings = read_openings(request.polygon_path);
+  const double load_seconds = job::seconds_since(start);
+  progress.check_cancel();
+
+  CloudOcclusionReport report =
+      run_cloud_occlusion_on(loaded.cloud, job::resolve_for_cloud(request.viewpoints, loaded.cloud),
+                             openings, request, progress);
+  report.dropped_nan = loaded.dropped_nan;
+  report.skipped_lines = loaded.skipped_lines;
+  report.load_seconds = load_seconds;
 
   if (!request.out.empty()) {
     ensure_directory(request.out);

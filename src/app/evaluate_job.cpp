@@ -1,8 +1,6 @@
 #include "occlusion/app/evaluate_job.hpp"
 
 #include <algorithm>
-#include <cstdio>
-#include <filesystem>
 
 #include "evaluation_support.hpp"
 #include "job_support.hpp"
@@ -14,56 +12,6 @@
 namespace occlusion {
 
 namespace {
-
-// ConfigSection resolves single paths; these keys hold lists of them.
-std::vector<std::string> resolved_paths(const Config& config, std::vector<std::string> paths) {
-  for (auto& path : paths) {
-    const std::filesystem::path p(path);
-    if (!p.is_absolute() && !config.directory.empty()) {
-      path = (std::filesystem::path(config.directory) / p).lexically_normal().string();
-    }
-  }
-  return paths;
-}
-
-Json::Value optional_json(const std::optional<double>& value) {
-  return value ? Json::Value(*value) : Json::Value();
-}
-
-std::string format(const char* pattern, double value) {
-  char text[64];
-  std::snprintf(text, sizeof text, pattern, value);
-  return text;
-}
-
-std::string percent(std::size_t part, std::size_t whole) {
-  return format("%.1f%%", 100.0 * static_cast<double>(part) /
-                              static_cast<double>(std::max<std::size_t>(whole, 1)));
-}
-
-void add_scene_warnings(const SceneEvaluation& scene, double max_distance,
-                        std::vector<std::string>& warnings) {
-  if (scene.beyond_distance > 0) {
-    warnings.push_back(scene.name + ": " + std::to_string(scene.beyond_distance) + " of " +
-                       std::to_string(scene.points) + " ground-truth points (" +
-                       percent(scene.beyond_distance, scene.points) +
-                       ") have no predicted point within " + format("%g", max_distance) +
-                       "; they count as misses");
-  }
-  if (!scene.foreign_predictions.empty()) {
-    std::string ids;
-    for (std::size_t i = 0; i < scene.foreign_predictions.size() && i < 10; ++i) {
-      ids += (ids.empty() ? "" : ", ") + std::to_string(scene.foreign_predictions[i]);
-    }
-    if (scene.foreign_predictions.size() > 10) ids += ", ...";
-    warnings.push_back(scene.name + ": predicted ids " + ids +
-                       " are no evaluation class and count as misses (are the predictions in "
-                       "the mapping's evaluation ids?)");
-  }
-  if (scene.metrics.points == 0) {
-    warnings.push_back(scene.name + ": no ground-truth point is in an evaluation class");
-  }
-}
 
 Json::Value mapping_json(const ClassMapping& mapping, const std::string& path) {
   Json::Value json(Json::objectValue);
@@ -124,14 +72,8 @@ void validate(const EvaluateRequest& request) {
 
 void apply_config(const Config& config, EvaluateRequest& request) {
   const ConfigSection section(config, "evaluate");
-  if (section.has("ground_truth")) {
-    section.read("ground_truth", request.ground_truth);
-    request.ground_truth = resolved_paths(config, request.ground_truth);
-  }
-  if (section.has("predictions")) {
-    section.read("predictions", request.predictions);
-    request.predictions = resolved_paths(config, request.predictions);
-  }
+  section.read_paths("ground_truth", request.ground_truth);
+  section.read_paths("predictions", request.predictions);
   section.read_path("mapping_path", request.mapping_path);
   section.read("ignored_classes", request.ignored_classes);
   section.read("max_distance", request.max_distance);
@@ -140,13 +82,13 @@ void apply_config(const Config& config, EvaluateRequest& request) {
   section.read_path("out", request.out);
 }
 
-ClassMapping resolve_mapping(const EvaluateRequest& request) {
-  const ClassMapping mapping = request.mapping_path.empty()
-                                   ? ClassMapping::seed_table()
-                                   : load_class_mapping(request.mapping_path);
-  if (request.ignored_classes.empty()) return mapping;
+ClassMapping resolve_mapping(const std::string& mapping_path,
+                             const std::vector<std::string>& ignored_classes) {
+  const ClassMapping mapping =
+      mapping_path.empty() ? ClassMapping::seed_table() : load_class_mapping(mapping_path);
+  if (ignored_classes.empty()) return mapping;
   try {
-    return mapping.with_ignored(request.ignored_classes);
+    return mapping.with_ignored(ignored_classes);
   } catch (const std::invalid_argument& e) {
     throw UsageError(std::string("--ignored-classes: ") + e.what());
   }
@@ -157,7 +99,7 @@ EvaluateReport run_evaluate(const EvaluateRequest& request, const Progress& prog
   const auto start = job::Clock::now();
   EvaluateReport report;
   report.request = request;
-  report.mapping = resolve_mapping(request);
+  report.mapping = resolve_mapping(request.mapping_path, request.ignored_classes);
   report.confusion = ConfusionMatrix(report.mapping.evaluation_classes());
 
   const std::size_t count = request.ground_truth.size();
@@ -174,7 +116,7 @@ EvaluateReport run_evaluate(const EvaluateRequest& request, const Progress& prog
     scene.dropped_nan = loaded.dropped_nan;
     scene.skipped_lines = loaded.skipped_lines;
     report.transfer_seconds += scene.transfer_seconds;
-    add_scene_warnings(scene, request.max_distance, report.warnings);
+    job::add_scene_warnings(scene, request.max_distance, report.warnings);
     report.confusion += scene.confusion;
     report.scenes.push_back(std::move(scene));
   }
@@ -204,9 +146,9 @@ EvaluateReport run_evaluate(const EvaluateRequest& request, const Progress& prog
 
 Json::Value to_json(const SegmentationMetrics& metrics) {
   Json::Value json(Json::objectValue);
-  json["miou"] = optional_json(metrics.miou);
-  json["overall_accuracy"] = optional_json(metrics.overall_accuracy);
-  json["mean_class_accuracy"] = optional_json(metrics.mean_class_accuracy);
+  json["miou"] = to_json(metrics.miou);
+  json["overall_accuracy"] = to_json(metrics.overall_accuracy);
+  json["mean_class_accuracy"] = to_json(metrics.mean_class_accuracy);
   json["classes_with_support"] = Json::UInt64(metrics.classes_with_support);
   json["points"] = Json::UInt64(metrics.points);
   json["correct_points"] = Json::UInt64(metrics.correct);
@@ -221,10 +163,10 @@ Json::Value to_json(const SegmentationMetrics& metrics) {
     entry["tp"] = Json::UInt64(c.tp);
     entry["fp"] = Json::UInt64(c.fp);
     entry["fn"] = Json::UInt64(c.fn);
-    entry["iou"] = optional_json(c.iou);
-    entry["precision"] = optional_json(c.precision);
-    entry["recall"] = optional_json(c.recall);
-    entry["f1"] = optional_json(c.f1);
+    entry["iou"] = to_json(c.iou);
+    entry["precision"] = to_json(c.precision);
+    entry["recall"] = to_json(c.recall);
+    entry["f1"] = to_json(c.f1);
     classes.append(entry);
   }
   json["classes"] = classes;

@@ -13,6 +13,7 @@
 #include "occlusion/io/cloud_io.hpp"
 #include "occlusion/io/input_error.hpp"
 #include "occlusion/io/label_file.hpp"
+#include "report_format.hpp"
 
 namespace occlusion {
 
@@ -32,23 +33,8 @@ std::string joined(const std::vector<std::string>& items) {
 
 // The ground truth's labels as evaluation ids.
 std::vector<std::int32_t> ground_truth_ids(const SceneInput& scene, const ClassMapping& mapping) {
-  const PointCloud& cloud = scene.ground_truth;
-  if (!cloud.has_labels()) {
-    throw InputError(scene.ground_truth_name, 0,
-                     "has no labels; the ground truth must be a labelled cloud (PLY or PCD with "
-                     "a label field, an S3DIS room or Area)");
-  }
-  if (cloud.class_names.empty()) {
-    throw InputError(scene.ground_truth_name, 0,
-                     "its labels have no class names, so the class mapping cannot apply (PLY and "
-                     "PCD files written by occlusion keep them as header comments)");
-  }
-  const auto unmapped = mapping.unmapped_classes(cloud.labels, cloud.class_names);
-  if (!unmapped.empty()) {
-    throw UsageError(scene.ground_truth_name + ": classes not in the class mapping: " +
-                     joined(unmapped) + " (map them, or list them in ignored_classes)");
-  }
-  return mapping.map_labels(cloud.labels, cloud.class_names);
+  job::check_ground_truth(scene.ground_truth_name, scene.ground_truth, mapping);
+  return mapping.map_labels(scene.ground_truth.labels, scene.ground_truth.class_names);
 }
 
 // The prediction's labels as evaluation ids, still on its own points.
@@ -134,6 +120,74 @@ SceneEvaluation evaluate_scene(const SceneInput& scene, const ClassMapping& mapp
 
 namespace job {
 
+void check_ground_truth(const std::string& name, const PointCloud& cloud,
+                        const ClassMapping& mapping) {
+  if (!cloud.has_labels()) {
+    throw InputError(name, 0,
+                     "has no labels; the ground truth must be a labelled cloud (PLY or PCD with "
+                     "a label field, an S3DIS room or Area)");
+  }
+  if (cloud.class_names.empty()) {
+    throw InputError(name, 0,
+                     "its labels have no class names, so the class mapping cannot apply (PLY and "
+                     "PCD files written by occlusion keep them as header comments)");
+  }
+  const auto unmapped = mapping.unmapped_classes(cloud.labels, cloud.class_names);
+  if (!unmapped.empty()) {
+    throw UsageError(name + ": classes not in the class mapping: " + joined(unmapped) +
+                     " (map them, or list them in ignored_classes)");
+  }
+}
+
+namespace {
+
+std::string percent(std::size_t part, std::size_t whole) {
+  return job::format_number("%.1f%%", 100.0 * static_cast<double>(part) /
+                                          static_cast<double>(std::max<std::size_t>(whole, 1)));
+}
+
+}  // namespace
+
+void add_scene_warnings(const SceneEvaluation& scene, double max_distance,
+                        std::vector<std::string>& warnings) {
+  if (scene.beyond_distance > 0) {
+    warnings.push_back(scene.name + ": " + std::to_string(scene.beyond_distance) + " of " +
+                       std::to_string(scene.points) + " ground-truth points (" +
+                       percent(scene.beyond_distance, scene.points) +
+                       ") have no predicted point within " +
+                       job::format_number("%g", max_distance) + "; they count as misses");
+  }
+  if (!scene.foreign_predictions.empty()) {
+    std::string ids;
+    for (std::size_t i = 0; i < scene.foreign_predictions.size() && i < 10; ++i) {
+      ids += (ids.empty() ? "" : ", ") + std::to_string(scene.foreign_predictions[i]);
+    }
+    if (scene.foreign_predictions.size() > 10) ids += ", ...";
+    warnings.push_back(scene.name + ": predicted ids " + ids +
+                       " are no evaluation class and count as misses (are the predictions in "
+                       "the mapping's evaluation ids?)");
+  }
+  if (scene.metrics.points == 0) {
+    warnings.push_back(scene.name + ": no ground-truth point is in an evaluation class");
+  }
+}
+
+Prediction load_prediction(const std::string& path, bool skip_bad_lines) {
+  Prediction prediction;
+  if (is_label_file(path)) {
+    prediction.labels = read_label_file(path);
+    return prediction;
+  }
+  LoadedCloud predicted = load_cloud(path, skip_bad_lines);
+  if (!predicted.cloud.has_labels()) {
+    throw InputError(path, 0, "has no labels; a prediction is a labelled cloud or a label file");
+  }
+  prediction.labels = std::move(predicted.cloud.labels);
+  prediction.positions = std::move(predicted.cloud.positions);
+  prediction.class_names = std::move(predicted.cloud.class_names);
+  return prediction;
+}
+
 LoadedScene load_scene(const std::string& ground_truth, const std::string& prediction,
                        bool skip_bad_lines) {
   LoadedScene scene;
@@ -143,25 +197,13 @@ LoadedScene load_scene(const std::string& ground_truth, const std::string& predi
   scene.input.prediction_name = prediction;
   scene.dropped_nan = truth.dropped_nan;
   scene.skipped_lines = truth.skipped_lines;
-
-  if (is_label_file(prediction)) {
-    if (truth.dropped_nan + truth.skipped_lines > 0) {
-      throw InputError(prediction, 0,
-                       "labels are given by point order, but reading " + ground_truth +
-                           " dropped " + std::to_string(truth.dropped_nan + truth.skipped_lines) +
-                           " points (NaN or skipped lines), so they no longer line up");
-    }
-    scene.input.prediction.labels = read_label_file(prediction);
-    return scene;
-  }
-  LoadedCloud predicted = load_cloud(prediction, skip_bad_lines);
-  if (!predicted.cloud.has_labels()) {
+  if (is_label_file(prediction) && truth.dropped_nan + truth.skipped_lines > 0) {
     throw InputError(prediction, 0,
-                     "has no labels; a prediction is a labelled cloud or a label file");
+                     "labels are given by point order, but reading " + ground_truth + " dropped " +
+                         std::to_string(truth.dropped_nan + truth.skipped_lines) +
+                         " points (NaN or skipped lines), so they no longer line up");
   }
-  scene.input.prediction.labels = std::move(predicted.cloud.labels);
-  scene.input.prediction.positions = std::move(predicted.cloud.positions);
-  scene.input.prediction.class_names = std::move(predicted.cloud.class_names);
+  scene.input.prediction = load_prediction(prediction, skip_bad_lines);
   return scene;
 }
 

@@ -14,12 +14,28 @@ struct LoadedScene {
   std::size_t skipped_lines = 0;
 };
 
+// A ground truth the mapping can score: labels, class names, and every
+// class used mapped. InputError for the first two, UsageError listing the
+// unmapped classes.
+void check_ground_truth(const std::string& name, const PointCloud& cloud,
+                        const ClassMapping& mapping);
+
+// A prediction file: a label file (io/label_file.hpp decides) or a labelled
+// cloud. InputError for an unreadable file and a cloud without labels.
+Prediction load_prediction(const std::string& path, bool skip_bad_lines);
+
 // The ground truth with read_cloud; the prediction as a label file
 // (io/label_file.hpp decides) or a cloud. InputError for unreadable files,
 // and for a label file when reading the ground truth dropped points (NaN or
 // skipped lines): its labels, given by point order, would no longer line up.
 LoadedScene load_scene(const std::string& ground_truth, const std::string& prediction,
                        bool skip_bad_lines);
+
+// What a scene's evaluation should tell the user: ground-truth points left
+// without a prediction within max_distance, predicted ids that are no
+// evaluation class, a scene with no point in an evaluation class.
+void add_scene_warnings(const SceneEvaluation& scene, double max_distance,
+                        std::vector<std::string>& warnings);
 
 // One row per class: the sum first (scene "total"), then each scene when
 // there are several. Undefined figures are empty fields.

@@ -1,40 +1,22 @@
 // The evaluate job's CSV and Markdown reports.
 
-#include <cstdio>
 #include <ostream>
 
 #include "evaluation_support.hpp"
-#include "occlusion/app/json_output.hpp"
 #include "occlusion/io/atomic_file.hpp"
+#include "occlusion/io/csv_file.hpp"
+#include "report_format.hpp"
 
 namespace occlusion::job {
 
 namespace {
 
-// Undefined figures are left empty (CSV) or shown as a dash (Markdown) rather
-// than as 0 or NaN, which a reader would average in.
 std::string figure(const std::optional<double>& value, const char* missing) {
-  if (!value) return missing;
-  char text[32];
-  std::snprintf(text, sizeof text, "%.6g", *value);
-  return text;
+  return format_number("%.6g", value, missing);
 }
 
 std::string fixed(const std::optional<double>& value) {
-  if (!value) return "–";
-  char text[32];
-  std::snprintf(text, sizeof text, "%.4f", *value);
-  return text;
-}
-
-// A pipe would end the table cell.
-std::string markdown_cell(const std::string& text) {
-  std::string escaped;
-  for (const char c : text) {
-    if (c == '|') escaped += '\\';
-    escaped += c;
-  }
-  return escaped;
+  return format_number("%.4f", value, "–");
 }
 
 void csv_rows(std::ostream& out, const std::string& scene, const SegmentationMetrics& metrics) {

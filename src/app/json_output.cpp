@@ -16,22 +16,16 @@ Json::Value to_json(const std::vector<std::string>& strings) {
   return array;
 }
 
+Json::Value to_json(const std::optional<double>& value) {
+  return value ? Json::Value(*value) : Json::Value();
+}
+
 std::string format_json(const Json::Value& value) {
   Json::StreamWriterBuilder builder;
   builder["indentation"] = "  ";
   builder["emitUTF8"] = true;
   builder["precision"] = 15;
   return Json::writeString(builder, value);
-}
-
-std::string csv_field(const std::string& text) {
-  if (text.find_first_of(",\"\n\r") == std::string::npos) return text;
-  std::string quoted = "\"";
-  for (const char c : text) {
-    if (c == '"') quoted += '"';
-    quoted += c;
-  }
-  return quoted + '"';
 }
 
 }  // namespace occlusion

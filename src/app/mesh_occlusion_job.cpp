@@ -10,6 +10,7 @@
 #include "occlusion/app/errors.hpp"
 #include "occlusion/app/json_output.hpp"
 #include "occlusion/io/atomic_file.hpp"
+#include "occlusion/io/csv_file.hpp"
 #include "occlusion/io/obj_reader.hpp"
 #include "occlusion/io/ply_mesh_writer.hpp"
 

@@ -65,21 +65,12 @@ void apply_config(const Config& config, ScanRequest& request) {
   section.read_path("out", request.out);
 }
 
-ScanReport run_scan(const ScanRequest& request, const Progress& progress) {
+ScanReport run_scan_on(const PointCloud& cloud, const ViewpointChoice::Resolved& viewpoints,
+                       const ScanRequest& request, const Progress& progress) {
   validate(request);
   const auto start = job::Clock::now();
   ScanReport report;
   report.request = request;
-
-  progress("loading", 0.0);
-  const job::LoadedCloud loaded = job::load_cloud(request.path, request.skip_bad_lines);
-  const PointCloud& cloud = loaded.cloud;
-  report.dropped_nan = loaded.dropped_nan;
-  report.skipped_lines = loaded.skipped_lines;
-  report.load_seconds = job::seconds_since(start);
-  progress.check_cancel();
-
-  const ViewpointChoice::Resolved viewpoints = job::resolve_for_cloud(request.viewpoints, cloud);
   report.viewpoint_names = viewpoints.names;
   report.viewpoint_positions = viewpoints.positions;
 
@@ -91,6 +82,30 @@ ScanReport run_scan(const ScanRequest& request, const Progress& progress) {
   options.threads = request.threads;
   report.result = scan_cloud(cloud, viewpoints.positions, options, progress);
   report.classes = per_class(cloud, report.result);
+  report.total_seconds = job::seconds_since(start);
+  return report;
+}
+
+std::vector<bool> seen_points(const ScanResult& result) {
+  std::vector<bool> seen(result.visible_count.size());
+  for (std::size_t i = 0; i < seen.size(); ++i) seen[i] = result.visible_count[i] > 0;
+  return seen;
+}
+
+ScanReport run_scan(const ScanRequest& request, const Progress& progress) {
+  validate(request);
+  const auto start = job::Clock::now();
+  progress("loading", 0.0);
+  const job::LoadedCloud loaded = job::load_cloud(request.path, request.skip_bad_lines);
+  const PointCloud& cloud = loaded.cloud;
+  const double load_seconds = job::seconds_since(start);
+  progress.check_cancel();
+
+  ScanReport report =
+      run_scan_on(cloud, job::resolve_for_cloud(request.viewpoints, cloud), request, progress);
+  report.dropped_nan = loaded.dropped_nan;
+  report.skipped_lines = loaded.skipped_lines;
+  report.load_seconds = load_seconds;
 
   if (!request.out.empty()) {
     ensure_directory(request.out);
@@ -101,14 +116,12 @@ ScanReport run_scan(const ScanRequest& request, const Progress& progress) {
         job::output_path(request.out, request.path, ".scan_full" + extension);
     const std::string json_path = job::output_path(request.out, request.path, ".fscan.json");
 
-    std::vector<bool> seen(cloud.size());
     ScalarField visible_count{"visible_count", {}, true};
     visible_count.values.reserve(cloud.size());
-    for (std::size_t i = 0; i < cloud.size(); ++i) {
-      seen[i] = report.result.visible_count[i] > 0;
-      visible_count.values.push_back(static_cast<float>(report.result.visible_count[i]));
+    for (const auto count : report.result.visible_count) {
+      visible_count.values.push_back(static_cast<float>(count));
     }
-    write_cloud(scanned_path, cloud.subset(seen));
+    write_cloud(scanned_path, cloud.subset(seen_points(report.result)));
     write_cloud(full_path, cloud, {visible_count});
     report.outputs = {json_path, scanned_path, full_path};
     report.total_seconds = job::seconds_since(start);

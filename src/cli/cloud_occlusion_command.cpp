@@ -3,6 +3,7 @@
 #include "arguments.hpp"
 #include "commands.hpp"
 #include "common_options.hpp"
+#include "job_options.hpp"
 #include "occlusion/app/cloud_occlusion_job.hpp"
 #include "occlusion/app/errors.hpp"
 #include "option_table.hpp"
@@ -26,33 +27,7 @@ CloudOcclusionCommand parse(const std::vector<std::string>& args) {
   OptionTable table("-poc");
   add_output_options(table, command.output);
   add_viewpoint_options(table, viewpoints, /*allow_grid=*/true);
-  add_seed_option(table, request.seed);
-  add_threads_option(table, request.threads);
-  table.value({"--num-rays-per-vp"}, [&](const std::string& option, const std::string& v) {
-    request.num_rays_per_vp = parse_unsigned(option, v);
-  });
-  table.value({"--point-radius"}, [&](const std::string& option, const std::string& v) {
-    request.point_radius = parse_number(option, v);
-  });
-  table.value({"--polygon-path"},
-              [&](const std::string&, const std::string& v) { request.polygon_path = v; });
-  table.value({"--octree-resolution"}, [&](const std::string& option, const std::string& v) {
-    request.octree_resolution = parse_number(option, v);
-  });
-  table.value({"--enable-acceleration"}, [&](const std::string& option, const std::string& v) {
-    request.enable_acceleration = parse_bool(option, v);
-  });
-  table.value({"--sampling"},
-              [&](const std::string&, const std::string& v) { request.sampling = v; });
-  table.value({"--light-radius"}, [&](const std::string& option, const std::string& v) {
-    request.light_radius = parse_number(option, v);
-  });
-  table.flag({"--exterior"}, [&] { request.exterior = true; });
-  table.value({"--exterior-classes"}, [&](const std::string&, const std::string& v) {
-    request.exterior_classes = split_list(v);
-    request.exterior = true;
-  });
-  table.flag({"--skip-bad-lines"}, [&] { request.skip_bad_lines = true; });
+  add_tracing_options(table, request);
   table.value({"--out"}, [&](const std::string&, const std::string& v) { request.out = v; });
   table.parse(args, single_input(request.path, "-poc"));
   viewpoints.apply_to(request.viewpoints);

@@ -12,6 +12,7 @@ int run_region_growing_command(const std::vector<std::string>& args);
 int run_scan_command(const std::vector<std::string>& args);
 int run_reconstruct_command(const std::vector<std::string>& args);
 int run_evaluate_command(const std::vector<std::string>& args);
+int run_study_command(const std::vector<std::string>& args);
 int run_serve_command(const std::vector<std::string>& args);
 
 }  // namespace occlusion::cli

@@ -80,6 +80,20 @@ void add_threads_option(OptionTable& table, unsigned& threads) {
   });
 }
 
+void add_to_list(std::vector<std::string>& list, bool& replaced, const std::string& value) {
+  if (!replaced) list.clear();
+  replaced = true;
+  list.push_back(value);
+}
+
+std::string optional_figure(const std::optional<double>& value, const char* pattern,
+                            const char* missing) {
+  if (!value) return missing;
+  char text[48];
+  std::snprintf(text, sizeof text, pattern, *value);
+  return text;
+}
+
 void print_json(const Json::Value& json) {
   std::cout << format_json(json) << std::endl;
 }

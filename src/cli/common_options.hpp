@@ -48,6 +48,15 @@ void add_seed_option(OptionTable& table, std::uint64_t& seed);
 std::function<void(const std::string&)> single_input(std::string& path, const std::string& command);
 void add_threads_option(OptionTable& table, unsigned& threads);
 
+// For a repeatable option that fills a config list: the first value given on
+// the command line replaces the config's list, the next ones add to it.
+// `replaced` lives with the caller: option aliases hold separate copies of a handler.
+void add_to_list(std::vector<std::string>& list, bool& replaced, const std::string& value);
+
+// A figure for the human summaries, `missing` when it is undefined.
+std::string optional_figure(const std::optional<double>& value, const char* pattern,
+                            const char* missing);
+
 // Prints one JSON object on stdout.
 void print_json(const Json::Value& json);
 // Prints warnings on stderr.

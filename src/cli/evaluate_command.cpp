@@ -20,15 +20,6 @@ struct EvaluateCommand {
   bool confusion = false;
 };
 
-// The first value given on the command line replaces the config's list; the
-// next ones add to it. `replaced` lives with the caller: option aliases hold
-// separate copies of a handler.
-void add_to_list(std::vector<std::string>& list, bool& replaced, const std::string& value) {
-  if (!replaced) list.clear();
-  replaced = true;
-  list.push_back(value);
-}
-
 EvaluateCommand parse(const std::vector<std::string>& args) {
   EvaluateCommand command;
   EvaluateRequest& request = command.request;
@@ -98,10 +89,7 @@ void print_help() {
 }
 
 std::string figure(const std::optional<double>& value) {
-  if (!value) return "     -";
-  char text[32];
-  std::snprintf(text, sizeof text, "%6.4f", *value);
-  return text;
+  return optional_figure(value, "%6.4f", "     -");
 }
 
 void print_confusion(const ConfusionMatrix& matrix) {

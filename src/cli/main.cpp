@@ -35,6 +35,8 @@ void print_help() {
       "  -fscan, scan CLOUD               the points that fixed viewpoints really see\n"
       "  -recon, reconstruct FOLDER       S3DIS room or Area folder -> one labelled cloud\n"
       "  -eval, evaluate GT               segmentation quality (mIoU) of --prediction vs GT\n"
+      "  study --config FILE              occlusion against segmentation quality, scene x\n"
+      "                                   viewpoint configuration; 'study merge' joins shards\n"
       "  serve                            the browser viewer and its WebSocket server\n"
       "\n"
       "Run 'occlusion COMMAND --help' for a command's options.\n"
@@ -69,6 +71,7 @@ int dispatch(const std::vector<std::string>& args) {
   if (args[0] == "-eval" || args[0] == "evaluate") {
     return occlusion::cli::run_evaluate_command(rest);
   }
+  if (args[0] == "study") return occlusion::cli::run_study_command(rest);
   if (args[0] == "serve") return occlusion::cli::run_serve_command(rest);
   throw occlusion::UsageError("unknown command '" + args[0] + "' (see occlusion --help)");
 }

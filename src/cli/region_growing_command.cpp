@@ -1,9 +1,9 @@
 #include <cstdio>
-#include <limits>
 
 #include "arguments.hpp"
 #include "commands.hpp"
 #include "common_options.hpp"
+#include "job_options.hpp"
 #include "occlusion/app/config.hpp"
 #include "occlusion/app/errors.hpp"
 #include "occlusion/app/region_growing_job.hpp"
@@ -18,42 +18,6 @@ struct RegionGrowingCommand {
   RegionGrowingRequest request;
   OutputOptions output;
 };
-
-unsigned parse_count(const std::string& option, const std::string& text) {
-  const std::uint64_t value = parse_unsigned(option, text);
-  if (value > std::numeric_limits<unsigned>::max()) throw UsageError(option + " is too large");
-  return static_cast<unsigned>(value);
-}
-
-void add_estimation_options(OptionTable& table, RegionGrowingOptions& e) {
-  table.value({"--normal-k"}, [&e](const std::string& option, const std::string& v) {
-    e.normal_k = parse_count(option, v);
-  });
-  table.value({"--min-cluster-size"}, [&e](const std::string& option, const std::string& v) {
-    e.min_cluster_size = parse_unsigned(option, v);
-  });
-  table.value({"--max-cluster-size"}, [&e](const std::string& option, const std::string& v) {
-    e.max_cluster_size = parse_unsigned(option, v);
-  });
-  table.value({"--neighbours"}, [&e](const std::string& option, const std::string& v) {
-    e.neighbours = parse_count(option, v);
-  });
-  table.value({"--smoothness-degrees"}, [&e](const std::string& option, const std::string& v) {
-    e.smoothness_degrees = parse_number(option, v);
-  });
-  table.value({"--curvature-threshold"}, [&e](const std::string& option, const std::string& v) {
-    e.curvature_threshold = parse_number(option, v);
-  });
-  table.value({"--ransac-distance"}, [&e](const std::string& option, const std::string& v) {
-    e.ransac_distance = parse_number(option, v);
-  });
-  table.value({"--ransac-iterations"}, [&e](const std::string& option, const std::string& v) {
-    e.ransac_iterations = parse_count(option, v);
-  });
-  table.value({"--recover-edges"}, [&e](const std::string& option, const std::string& v) {
-    e.recover_edges = parse_bool(option, v);
-  });
-}
 
 RegionGrowingCommand parse(const std::vector<std::string>& args) {
   RegionGrowingCommand command;

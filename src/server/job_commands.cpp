@@ -10,11 +10,14 @@
 #include "job_params.hpp"
 #include "loaded_scene.hpp"
 #include "occlusion/app/cloud_occlusion_job.hpp"
+#include "occlusion/app/errors.hpp"
 #include "occlusion/app/evaluate_job.hpp"
+#include "occlusion/app/extract_polygons_job.hpp"
 #include "occlusion/app/mesh_occlusion_job.hpp"
 #include "occlusion/app/reconstruct_job.hpp"
 #include "occlusion/app/region_growing_job.hpp"
 #include "occlusion/app/scan_job.hpp"
+#include "occlusion/app/study_job.hpp"
 #include "occlusion/io/cloud_io.hpp"
 
 namespace occlusion::server {
@@ -46,11 +49,6 @@ Command job_command(const std::string& name, const JobParams& spec,
                  }};
 }
 
-// A job of the protocol whose app-layer job has not landed yet.
-Command not_yet(const std::string& name) {
-  return Command{name, Where::kWorker, {}};
-}
-
 void mesh_frames(CommandContext& context, const MeshOcclusionReport& report) {
   const auto& fraction = report.result.face_visible_fraction;
   context.send(make_frame(FrameKind::kFaceVisibleFraction, fraction.data(), fraction.size(), 1));
@@ -71,14 +69,36 @@ void scan_frames(CommandContext& context, const ScanReport& report) {
   context.send(make_frame(FrameKind::kVisibleCount, count.data(), count.size(), 1));
 }
 
+Frame point_clusters_frame(const MeshEstimate& estimate) {
+  const auto& clusters = estimate.point_cluster;
+  return make_frame(FrameKind::kPointClusters, clusters.data(), clusters.size(), 1);
+}
+
 // The estimated mesh (as `load` sends a mesh), how much of each face is
 // visible, and which cluster each input point fell in.
 void region_growing_frames(CommandContext& context, const RegionGrowingReport& report) {
   context.send(mesh_scene(report.estimate.mesh)->frames);
   const auto& fraction = report.occlusion.face_visible_fraction;
   context.send(make_frame(FrameKind::kFaceVisibleFraction, fraction.data(), fraction.size(), 1));
-  const auto& clusters = report.estimate.point_cluster;
-  context.send(make_frame(FrameKind::kPointClusters, clusters.data(), clusters.size(), 1));
+  context.send(point_clusters_frame(report.estimate));
+}
+
+// The planes as a mesh, and which cluster (= face group) each input point fell in.
+void extract_polygons_frames(CommandContext& context, const ExtractPolygonsReport& report) {
+  context.send(mesh_scene(report.estimate.mesh)->frames);
+  context.send(point_clusters_frame(report.estimate));
+}
+
+// A segmenter command would let whatever reaches the server run a shell
+// command as the server's user; over the protocol the study segments with the
+// built-in baseline only, and a network runs from the command line.
+StudyReport run_baseline_study(const StudyRequest& request, const Progress& progress) {
+  if (request.segmenter != kBaselineSegmenter) {
+    throw UsageError(
+        "'segmenter': only \"baseline\" over the server; a segmenter command runs with "
+        "'occlusion study' on the command line");
+  }
+  return run_study(request, progress);
 }
 
 // The reconstructed cloud itself, read back from what the job wrote, so the
@@ -102,8 +122,11 @@ std::vector<Command> job_commands() {
       job_command("reconstruct", {"reconstruct", true, {}}, &run_reconstruct, &reconstruct_frames),
       job_command<EvaluateRequest, EvaluateReport>(
           "evaluate", {"evaluate", true, {"ground_truth", "predictions"}}, &run_evaluate, nullptr),
-      not_yet("extract_polygons"),
-      not_yet("study"),
+      job_command<ExtractPolygonsRequest, ExtractPolygonsReport>(
+          "extract_polygons", {"region_growing", true, {}}, &run_extract_polygons,
+          &extract_polygons_frames),
+      job_command<StudyRequest, StudyReport>("study", {"study", true, {"scenes"}},
+                                             &run_baseline_study, nullptr),
   };
 }
 

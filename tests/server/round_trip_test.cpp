@@ -40,11 +40,9 @@ TEST_F(RoundTrip, HelloListsCommandsAndLimits) {
   EXPECT_EQ(hello["protocol"].asInt(), 1);
   for (const char* command :
        {"ping", "list_files", "load", "upload", "mesh_occlusion", "cloud_occlusion", "scan",
-        "reconstruct", "evaluate", "save_polygon", "cancel"}) {
+        "reconstruct", "evaluate", "region_growing_occlusion", "extract_polygons", "study",
+        "save_polygon", "cancel"}) {
     EXPECT_TRUE(hello["commands"][command].asBool()) << command;
-  }
-  for (const char* command : {"region_growing_occlusion", "extract_polygons", "study"}) {
-    EXPECT_TRUE(hello["commands"].isMember(command)) << command;
   }
   EXPECT_EQ(hello["limits"]["max_text_bytes"].asUInt64(), 1u << 20);
 }
@@ -213,6 +211,75 @@ TEST_F(RoundTrip, RegionGrowingOcclusionEqualsTheCli) {
   EXPECT_EQ(fractions.size(), result["mesh"]["faces"].asUInt64());
   const auto clusters = frame_values<std::int32_t>(*find_frame(reply, "point_clusters"));
   EXPECT_EQ(clusters.size(), result["points"].asUInt64());
+}
+
+TEST_F(RoundTrip, ExtractPolygonsIsRegionGrowingWithoutOcclusion) {
+  const Reply reply = client_->request(23, "extract_polygons",
+                                       params(R"({"path": "s3dis_synthetic/Area_1/office_1"})"));
+  ASSERT_TRUE(reply.ok()) << reply.final;
+  const Json::Value& result = reply.final["result"];
+  EXPECT_EQ(result["job"].asString(), "extract_polygons");
+  EXPECT_FALSE(result.isMember("occlusion_level"));
+  // The same planes as -rgoc finds with the same region-growing keys.
+  const Json::Value cli = run_cli_json("-rgoc '" + files().file("s3dis_synthetic/Area_1/office_1") +
+                                       "' --samples-per-unit-area 1");
+  ASSERT_TRUE(cli.isObject());
+  for (const char* key : {"clusters_found", "clusters_used", "covered_points", "edge_points"}) {
+    EXPECT_EQ(result[key], cli[key]) << key;
+  }
+  ASSERT_EQ(result["planes"].size(), cli["planes"].size());
+  for (Json::ArrayIndex p = 0; p < result["planes"].size(); ++p) {
+    Json::Value plane = cli["planes"][p];
+    plane.removeMember("occlusion_level");
+    expect_same_report(result["planes"][p], plane, "planes[" + std::to_string(p) + "]");
+  }
+  const auto indices = frame_values<std::uint32_t>(*find_frame(reply, "indices"));
+  const auto groups = frame_values<std::uint32_t>(*find_frame(reply, "face_groups"));
+  EXPECT_EQ(indices.size(), 3 * result["mesh"]["faces"].asUInt64());
+  EXPECT_EQ(groups.size(), result["mesh"]["faces"].asUInt64());
+  const auto clusters = frame_values<std::int32_t>(*find_frame(reply, "point_clusters"));
+  EXPECT_EQ(clusters.size(), result["points"].asUInt64());
+  EXPECT_EQ(find_frame(reply, "face_visible_fraction"), nullptr);
+  EXPECT_EQ(result["outputs"][1].asString(), "out/office_1.polygons.obj");
+  EXPECT_TRUE(fs::exists(files().file("out/office_1.polygons.obj")));
+}
+
+TEST_F(RoundTrip, StudyEqualsTheCli) {
+  const Reply reply =
+      client_->request(24, "study", params(R"({"scenes": ["s3dis_synthetic/Area_1/office_1"],
+                 "configurations": [{"name": "pattern_1", "pattern": 1}], "point_radius": 0.06,
+                 "num_rays_per_vp": 400, "polygon_path": "s3dis_synthetic/openings.txt",
+                 "out": "study"})"));
+  ASSERT_TRUE(reply.ok()) << reply.final;
+  const Json::Value& result = reply.final["result"];
+  EXPECT_EQ(result["runs_computed"].asUInt(), 1u);
+  EXPECT_EQ(result["outputs"][1].asString(), "study/study.csv");
+  EXPECT_EQ(result["parameters"]["scenes"][0].asString(), "s3dis_synthetic/Area_1/office_1");
+  EXPECT_TRUE(fs::exists(files().file("study/runs/office_1__pattern_1.scan.ply")));
+  const Json::Value cli = run_cli_json(
+      "study --scene '" + files().file("s3dis_synthetic/Area_1/office_1") +
+      "' --pattern 1 --point-radius 0.06 --num-rays-per-vp 400 --polygon-path '" +
+      files().file("s3dis_synthetic/openings.txt") + "' --out '" + cli_out() + "/study'");
+  ASSERT_TRUE(cli.isObject());
+  ASSERT_EQ(result["rows"].size(), 1u);
+  ASSERT_EQ(cli["rows"].size(), 1u);
+  Json::Value row = result["rows"][0], cli_row = cli["rows"][0];
+  for (const auto& key : row.getMemberNames()) {
+    if (key.find("_seconds") != std::string::npos) {
+      row.removeMember(key);
+      cli_row.removeMember(key);
+    }
+  }
+  expect_same_report(row, cli_row, "rows[0]");
+  expect_same_report(result["correlations"], cli["correlations"], "correlations");
+
+  // A segmenter command would run a shell command for whoever reaches the server.
+  const Reply refused =
+      client_->request(25, "study", params(R"({"scenes": ["s3dis_synthetic/Area_1/office_1"],
+                 "configurations": [{"name": "c", "pattern": 1}], "out": "study2",
+                 "segmenter": "touch pwned {input} {output}"})"));
+  EXPECT_EQ(refused.error_code(), "invalid_request");
+  EXPECT_FALSE(fs::exists(files().file("study2")));
 }
 
 TEST_F(RoundTrip, ScanEqualsTheCli) {

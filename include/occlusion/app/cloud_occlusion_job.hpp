@@ -60,8 +60,24 @@ struct CloudOcclusionReport {
 void validate(const CloudOcclusionRequest& request);
 // Copies the config's `occlusion.point_cloud` section into the request.
 void apply_config(const Config& config, CloudOcclusionRequest& request);
+// The same keys from another section (the study's carries the tracing keys).
+void apply_section(const ConfigSection& section, CloudOcclusionRequest& request);
+
 CloudOcclusionReport run_cloud_occlusion(const CloudOcclusionRequest& request,
                                          const Progress& progress = {});
+
+// What run_cloud_occlusion computes once the cloud is loaded, for a cloud
+// already in memory and viewpoints already placed (the study measures each
+// scanned cloud from its scan's viewpoints). request.path names the cloud in
+// messages; nothing is read or written.
+CloudOcclusionReport run_cloud_occlusion_on(const PointCloud& cloud,
+                                            const ViewpointChoice::Resolved& viewpoints,
+                                            const std::vector<PlanarPolygon>& openings,
+                                            const CloudOcclusionRequest& request,
+                                            const Progress& progress = {});
+// The openings of a polygon file; none for "". InputError naming the file and
+// the opening that is no polygon.
+std::vector<PlanarPolygon> read_openings(const std::string& polygon_path);
 // Headline: occlusion_level.
 Json::Value to_json(const CloudOcclusionReport& report);
 

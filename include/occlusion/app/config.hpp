@@ -1,7 +1,7 @@
 #pragma once
 // The JSON configuration file, in the seed's shape (thesis listing 4.14):
 //   { "occlusion": { "mesh": { "path": ..., "pattern": 4, ... },
-//                    "point_cloud": { ... }, "reconstruct": { ... } } }
+//                    "point_cloud": { ... }, "reconstruct": { ... }, "study": { ... } } }
 // The whole file is checked on load: an unknown key or a wrong type is a
 // UsageError that names the key. Relative paths are resolved against the
 // config file's folder. Each job reads its own section (ConfigSection).
@@ -46,6 +46,10 @@ class ConfigSection {
   void read(const std::string& key, std::uint64_t& out) const;
   void read(const std::string& key, unsigned& out) const;
   void read(const std::string& key, std::vector<std::string>& out) const;
+  // A list of paths, each resolved as read_path does.
+  void read_paths(const std::string& key, std::vector<std::string>& out) const;
+  // A list of named viewpoint choices (the study's configurations).
+  void read(const std::string& key, std::vector<NamedViewpointChoice>& out) const;
   // "viewpoints", "pattern" or "num_vp": at most one may be present.
   void read_viewpoints(ViewpointChoice& out) const;
 

@@ -88,9 +88,10 @@ struct EvaluateReport {
 void validate(const EvaluateRequest& request);
 // Copies the config's `occlusion.evaluate` section into the request.
 void apply_config(const Config& config, EvaluateRequest& request);
-// The request's mapping file (or table 3.1) with its ignored classes added.
+// A mapping file (or, for "", table 3.1) with `ignored_classes` added.
 // UsageError for a bad file.
-ClassMapping resolve_mapping(const EvaluateRequest& request);
+ClassMapping resolve_mapping(const std::string& mapping_path,
+                             const std::vector<std::string>& ignored_classes);
 
 // Evaluates one scene. Predictions on the ground truth's own points (same
 // count and positions, or a label file) are compared directly; others are

@@ -4,6 +4,7 @@
 #include <json/value.h>
 
 #include <Eigen/Core>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -11,9 +12,9 @@ namespace occlusion {
 
 Json::Value to_json(const Eigen::Vector3d& point);
 Json::Value to_json(const std::vector<std::string>& strings);
+// null when absent: an undefined figure (an mIoU without classes) is not 0.
+Json::Value to_json(const std::optional<double>& value);
 // Indented, 15 significant digits, UTF-8 kept as is.
 std::string format_json(const Json::Value& value);
-// A CSV field, quoted when it holds a comma, quote or newline (RFC 4180).
-std::string csv_field(const std::string& text);
 
 }  // namespace occlusion

@@ -51,6 +51,13 @@ void validate(const ScanRequest& request);
 // Copies the config's `occlusion.point_cloud` section into the request.
 void apply_config(const Config& config, ScanRequest& request);
 ScanReport run_scan(const ScanRequest& request, const Progress& progress = {});
+// What run_scan computes once the cloud is loaded, for a cloud already in
+// memory and viewpoints already placed (the study scans each scene it holds
+// from several configurations). Nothing is read or written.
+ScanReport run_scan_on(const PointCloud& cloud, const ViewpointChoice::Resolved& viewpoints,
+                       const ScanRequest& request, const Progress& progress = {});
+// Which points the scan kept: visible_count > 0 (PointCloud::subset's mask).
+std::vector<bool> seen_points(const ScanResult& result);
 // Headline: visible_fraction.
 Json::Value to_json(const ScanReport& report);
 

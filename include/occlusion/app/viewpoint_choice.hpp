@@ -36,4 +36,10 @@ struct ViewpointChoice {
   Json::Value to_json() const;
 };
 
+// A viewpoint choice with a name: one configuration of the occlusion study.
+struct NamedViewpointChoice {
+  std::string name;
+  ViewpointChoice choice;
+};
+
 }  // namespace occlusion

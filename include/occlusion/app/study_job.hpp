@@ -1,0 +1,114 @@
+#pragma once
+// The `study` job: how much does occlusion hurt semantic segmentation? For
+// each labelled scene x viewpoint configuration (a run):
+//   1. scan the scene from the configuration's viewpoints (as -fscan),
+//   2. measure the scanned cloud's occlusion (as -poc, and its exterior variant),
+//   3. segment the scanned cloud (the built-in baseline, or a command the user
+//      supplies, e.g. a network's inference script),
+//   4. score the segmentation against the scanned cloud's own labels (as -eval),
+// and append one row to OUT/study.csv. Then the correlation of each occlusion
+// measure with mIoU goes to OUT/study.md with a plot, OUT/study.svg.
+//
+// Runs already in study.csv are skipped, so an interrupted study resumes; each
+// finished run rewrites the CSV atomically. With a shard i/n only the runs
+// whose index k (scene-major: k = scene * configurations + configuration)
+// has k mod n = i are made; run_study_merge joins the shards' CSVs.
+// docs/study.md has the CSV columns, the baseline's rules and sharding recipes.
+
+#include <json/value.h>
+
+#include <string>
+#include <vector>
+
+#include "occlusion/analysis/correlation.hpp"
+#include "occlusion/analysis/mesh_estimation.hpp"
+#include "occlusion/analysis/progress.hpp"
+#include "occlusion/app/cloud_occlusion_job.hpp"
+#include "occlusion/app/config.hpp"
+#include "occlusion/app/viewpoint_choice.hpp"
+#include "occlusion/io/csv_file.hpp"
+
+namespace occlusion {
+
+// The segmenter that needs no GPU: analysis/baseline_segmenter.hpp.
+inline constexpr const char* kBaselineSegmenter = "baseline";
+
+// -poc's defaults, with the exterior variant on: the study reports both levels.
+CloudOcclusionRequest default_study_tracing();
+// -rgoc's defaults for the baseline, but clusters of any size: a real room's
+// walls and floor are far larger than -rgoc's max_cluster_size of 100000.
+RegionGrowingOptions default_study_estimation();
+
+struct StudyRequest {
+  std::vector<std::string> scenes;  // labelled clouds with class names, S3DIS rooms
+  std::vector<NamedViewpointChoice> configurations;
+  // How clouds are traced, as -poc takes it (its path, viewpoints and out do
+  // not apply). Its point_radius, octree keys, seed, threads and
+  // skip_bad_lines serve the whole study, the scan included.
+  CloudOcclusionRequest tracing = default_study_tracing();
+  double self_tolerance = -1.0;  // of the scan, as -fscan; negative: 2 * point_radius
+  std::string format = "ply";    // of the scanned clouds written for the segmenter
+  // 0: measure each scanned cloud's occlusion from its configuration's own
+  // viewpoints; N: from N viewpoints on a grid, the same for every configuration.
+  unsigned occlusion_num_vp = 0;
+  // "baseline", or a shell command with {input} (the scanned cloud) and
+  // {output} (where it must write its prediction) in it.
+  std::string segmenter = kBaselineSegmenter;
+  std::string segmenter_output = "labels";  // extension of {output}: labels, ply, pcd or txt
+  RegionGrowingOptions estimation = default_study_estimation();  // the baseline's planes
+  std::string mapping_path;  // as -eval; "" = the seed's table 3.1
+  std::vector<std::string> ignored_classes;
+  double max_distance = 0.05;  // as -eval, for predictions on other points
+  std::string shard = "0/1";   // "i/n"
+  std::string out;             // required
+};
+
+struct StudyShard {
+  std::size_t index = 0;
+  std::size_t count = 1;
+};
+// "i/n" with 0 <= i < n. UsageError naming --shard otherwise.
+StudyShard parse_shard(const std::string& text);
+
+// One occlusion measure against mIoU over the table's rows that have both.
+struct MeasureCorrelation {
+  std::string measure;  // a column: visible_fraction, occlusion_level, ...
+  Correlation correlation;
+};
+
+struct StudyReport {
+  std::string job = "study";        // or "study_merge"
+  StudyRequest request;             // as run (merge: out only)
+  std::vector<std::string> inputs;  // merge: the CSVs joined
+  std::size_t runs_total = 0;       // scenes x configurations
+  std::size_t runs_in_shard = 0;
+  std::size_t runs_skipped = 0;  // in the shard, already in study.csv
+  std::size_t runs_computed = 0;
+  CsvTable table;  // every row of study.csv, in run order
+  std::vector<MeasureCorrelation> correlations;
+  std::vector<std::string> outputs;
+  std::vector<std::string> warnings;
+  double total_seconds = 0.0;
+};
+
+// Throws UsageError naming the option at fault.
+void validate(const StudyRequest& request);
+// Copies the config's `occlusion.study` section into the request.
+void apply_config(const Config& config, StudyRequest& request);
+// Writes OUT/study.csv (after every run), study.svg, study.md, study.json and
+// OUT/runs/ (each run's scanned cloud and prediction). UsageError for bad
+// options, a scene whose classes the mapping does not know, or a study.csv
+// written with other columns; InputError for unreadable scenes and
+// predictions; std::runtime_error for a segmenter command that fails.
+StudyReport run_study(const StudyRequest& request, const Progress& progress = {});
+
+// Joins study CSVs (the shards') into OUT/study.csv, rows in run order, one
+// per (scene, configuration): the first wins, and a second with other figures
+// is a warning. Then writes the summary as run_study does. UsageError for
+// CSVs with different columns; InputError for unreadable ones.
+StudyReport run_study_merge(const std::vector<std::string>& inputs, const std::string& out);
+
+// Headline: correlations (each measure's n, pearson, spearman against miou).
+Json::Value to_json(const StudyReport& report);
+
+}  // namespace occlusion

@@ -1,0 +1,175 @@
+#include "region_growing_support.hpp"
+
+#include <map>
+
+#include "job_support.hpp"
+#include "occlusion/app/errors.hpp"
+#include "occlusion/app/json_output.hpp"
+#include "occlusion/io/input_error.hpp"
+
+namespace occlusion::job {
+
+namespace {
+
+void require_at_least(std::uint64_t value, std::uint64_t least, const std::string& option) {
+  if (value < least) throw UsageError(option + " must be at least " + std::to_string(least));
+}
+
+// What the user should know without reading the JSON: PCL dropping whole
+// surfaces for their size, and clusters that gave no polygon.
+std::vector<std::string> estimation_warnings(const MeshEstimate& estimate,
+                                             const RegionGrowingOptions& options) {
+  std::vector<std::string> warnings;
+  if (estimate.regions.too_large > 0) {
+    warnings.push_back(std::to_string(estimate.regions.too_large) + " regions (" +
+                       std::to_string(estimate.regions.too_large_points) +
+                       " points) are larger than max_cluster_size " +
+                       std::to_string(options.max_cluster_size) +
+                       " and were left out: raise --max-cluster-size to keep them");
+  }
+  if (!estimate.skipped.empty()) {
+    std::map<std::string, std::size_t> reasons;
+    for (const auto& skipped : estimate.skipped) ++reasons[skip_reason_name(skipped.reason)];
+    std::string text = std::to_string(estimate.skipped.size()) + " of " +
+                       std::to_string(estimate.clusters_found) + " clusters gave no polygon (";
+    bool first = true;
+    for (const auto& [reason, count] : reasons) {
+      text += (first ? "" : ", ") + std::to_string(count) + " " + reason;
+      first = false;
+    }
+    warnings.push_back(text + "); see \"skipped\" in the JSON report");
+  }
+  return warnings;
+}
+
+}  // namespace
+
+void validate_estimation(const RegionGrowingOptions& e) {
+  require_at_least(e.normal_k, 3, "--normal-k");
+  require_at_least(e.neighbours, 1, "--neighbours");
+  require_at_least(e.min_cluster_size, 1, "--min-cluster-size");
+  if (e.max_cluster_size < e.min_cluster_size) {
+    throw UsageError("--max-cluster-size must be at least --min-cluster-size (" +
+                     std::to_string(e.min_cluster_size) + ")");
+  }
+  if (!(e.smoothness_degrees > 0.0 && e.smoothness_degrees <= 180.0)) {
+    throw UsageError("--smoothness-degrees must be a number in (0, 180]");
+  }
+  require_non_negative(e.curvature_threshold, "--curvature-threshold");
+  require_positive(e.ransac_distance, "--ransac-distance");
+  require_at_least(e.ransac_iterations, 1, "--ransac-iterations");
+}
+
+void read_estimation(const ConfigSection& section, RegionGrowingOptions& e) {
+  std::uint64_t min_size = e.min_cluster_size, max_size = e.max_cluster_size;
+  section.read("normal_k", e.normal_k);
+  section.read("min_cluster_size", min_size);
+  section.read("max_cluster_size", max_size);
+  section.read("neighbours", e.neighbours);
+  section.read("smoothness_degrees", e.smoothness_degrees);
+  section.read("curvature_threshold", e.curvature_threshold);
+  section.read("ransac_distance", e.ransac_distance);
+  section.read("ransac_iterations", e.ransac_iterations);
+  section.read("recover_edges", e.recover_edges);
+  e.min_cluster_size = static_cast<std::size_t>(min_size);
+  e.max_cluster_size = static_cast<std::size_t>(max_size);
+}
+
+CloudEstimate load_and_estimate(const std::string& path, bool skip_bad_lines,
+                                RegionGrowingOptions options, unsigned threads,
+                                const Progress& progress) {
+  const auto start = Clock::now();
+  progress("loading", 0.0);
+  CloudEstimate input;
+  input.loaded = load_cloud(path, skip_bad_lines);
+  input.load_seconds = seconds_since(start);
+  progress.check_cancel();
+
+  const PointCloud& cloud = input.loaded.cloud;
+  options.threads = threads;
+  if (cloud.size() < 3) {
+    throw InputError(path, 0,
+                     "has " + std::to_string(cloud.size()) + " points; a plane needs at least 3");
+  }
+  try {
+    input.estimate = estimate_mesh(cloud, options, progress);
+  } catch (const NoPlaneFound& e) {
+    // The cloud is readable; these options find no surface in it.
+    throw UsageError(path + ": " + e.what());
+  }
+  input.warnings = estimation_warnings(input.estimate, options);
+  return input;
+}
+
+ScalarField cluster_field(const MeshEstimate& estimate) {
+  ScalarField field{"cluster", {}, true};
+  field.values.reserve(estimate.point_cluster.size());
+  for (const std::int32_t cluster : estimate.point_cluster) {
+    field.values.push_back(static_cast<float>(cluster));
+  }
+  return field;
+}
+
+void add_estimation_json(const MeshEstimate& e, Json::Value& json) {
+  json["clusters_found"] = Json::UInt64(e.clusters_found);
+  json["clusters_used"] = Json::UInt64(e.clusters_used);
+  json["clusters_skipped"] = Json::UInt64(e.skipped.size());
+  json["covered_points"] = Json::UInt64(e.covered_points);
+  json["covered_fraction"] = e.covered_fraction;
+  json["edge_points"] = Json::UInt64(e.edge_points);
+
+  Json::Value skipped(Json::arrayValue);
+  for (const auto& s : e.skipped) {
+    Json::Value entry(Json::objectValue);
+    entry["cluster"] = Json::UInt64(s.cluster);
+    entry["points"] = Json::UInt64(s.points);
+    entry["reason"] = skip_reason_name(s.reason);
+    entry["detail"] = s.detail;
+    skipped.append(entry);
+  }
+  json["skipped"] = skipped;
+
+  Json::Value regions(Json::objectValue);
+  regions["grown"] = Json::UInt64(e.regions.regions);
+  regions["too_small"] = Json::UInt64(e.regions.too_small);
+  regions["too_small_points"] = Json::UInt64(e.regions.too_small_points);
+  regions["too_large"] = Json::UInt64(e.regions.too_large);
+  regions["too_large_points"] = Json::UInt64(e.regions.too_large_points);
+  regions["largest"] = Json::UInt64(e.regions.largest);
+  json["regions"] = regions;
+}
+
+Json::Value plane_json(const EstimatedPlane& p) {
+  Json::Value plane(Json::objectValue);
+  plane["cluster"] = Json::UInt64(p.cluster);
+  plane["points"] = Json::UInt64(p.points);
+  plane["inliers"] = Json::UInt64(p.inliers);
+  plane["edge_points"] = Json::UInt64(p.edge_points);
+  plane["normal"] = to_json(p.normal);
+  plane["offset"] = p.offset;
+  plane["centroid"] = to_json(p.centroid);
+  plane["area"] = p.area;
+  plane["triangles"] = Json::UInt64(p.hull_vertices);
+  return plane;
+}
+
+void add_estimation_parameters(const RegionGrowingOptions& o, Json::Value& parameters) {
+  parameters["normal_k"] = o.normal_k;
+  parameters["min_cluster_size"] = Json::UInt64(o.min_cluster_size);
+  parameters["max_cluster_size"] = Json::UInt64(o.max_cluster_size);
+  parameters["neighbours"] = o.neighbours;
+  parameters["smoothness_degrees"] = o.smoothness_degrees;
+  parameters["curvature_threshold"] = o.curvature_threshold;
+  parameters["ransac_distance"] = o.ransac_distance;
+  parameters["ransac_iterations"] = o.ransac_iterations;
+  parameters["recover_edges"] = o.recover_edges;
+}
+
+void add_estimation_timings(const MeshEstimate& e, Json::Value& timings) {
+  timings["normals_seconds"] = e.timings.normals_seconds;
+  timings["region_growing_seconds"] = e.timings.region_growing_seconds;
+  timings["planes_seconds"] = e.timings.planes_seconds;
+  timings["hulls_seconds"] = e.timings.hulls_seconds;
+}
+
+}  // namespace occlusion::job

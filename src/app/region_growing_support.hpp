@@ -1,0 +1,63 @@
+#pragma once
+// The region-growing estimate as two jobs use it (internal to app/): -rgoc,
+// which goes on to measure the mesh's occlusion, and extract_polygons, which
+// stops at the planes. Options, checks, warnings and JSON live here once.
+
+#include <json/value.h>
+
+#include <string>
+#include <vector>
+
+#include "job_support.hpp"
+#include "occlusion/analysis/mesh_estimation.hpp"
+#include "occlusion/app/config.hpp"
+#include "occlusion/io/cloud_io.hpp"
+
+namespace occlusion::job {
+
+// Throws UsageError naming the option (--normal-k, ...).
+void validate_estimation(const RegionGrowingOptions& options);
+// normal_k, min_cluster_size, ... from any section that has them.
+void read_estimation(const ConfigSection& section, RegionGrowingOptions& options);
+
+// The cloud loaded and its planes estimated: where both jobs start.
+struct CloudEstimate {
+  LoadedCloud loaded;
+  double load_seconds = 0.0;
+  MeshEstimate estimate;
+  // What the user should know without reading the JSON: PCL dropping whole
+  // surfaces for their size, and clusters that gave no polygon.
+  std::vector<std::string> warnings;
+};
+
+// Throws what load_cloud throws; InputError for fewer than 3 points;
+// UsageError (naming the option to change) when no cluster gives a plane.
+// `threads` replaces options.threads.
+CloudEstimate load_and_estimate(const std::string& path, bool skip_bad_lines,
+                                RegionGrowingOptions options, unsigned threads,
+                                const Progress& progress);
+
+// Moves the estimate, the counts and the warnings into a job's report.
+template <class Report>
+void take_estimate(CloudEstimate& input, Report& report) {
+  report.points = input.loaded.cloud.size();
+  report.dropped_nan = input.loaded.dropped_nan;
+  report.skipped_lines = input.loaded.skipped_lines;
+  report.load_seconds = input.load_seconds;
+  report.estimate = std::move(input.estimate);
+  report.warnings = std::move(input.warnings);
+}
+
+// Every point's cluster as an integer field (-1: none), for the segmented cloud.
+ScalarField cluster_field(const MeshEstimate& estimate);
+
+// The estimate's counts, regions and skipped clusters, added to `json`.
+void add_estimation_json(const MeshEstimate& estimate, Json::Value& json);
+// One plane, without figures of its occlusion.
+Json::Value plane_json(const EstimatedPlane& plane);
+// The options, added to `parameters`.
+void add_estimation_parameters(const RegionGrowingOptions& options, Json::Value& parameters);
+// The estimate's stage timings, added to `timings`.
+void add_estimation_timings(const MeshEstimate& estimate, Json::Value& timings);
+
+}  // namespace occlusion::job

@@ -1,0 +1,130 @@
+// One run of the study: scan, measure, segment, score.
+
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+
+#include "evaluation_support.hpp"
+#include "job_support.hpp"
+#include "occlusion/app/errors.hpp"
+#include "occlusion/io/cloud_io.hpp"
+#include "study_support.hpp"
+
+namespace occlusion::job {
+
+namespace {
+
+std::string safe(const std::string& name) {
+  std::string text;
+  for (const char c : name) {
+    const bool plain = std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '.';
+    text += plain ? c : '_';
+  }
+  return text;
+}
+
+// The viewpoints the scanned cloud's occlusion is measured from.
+ViewpointChoice::Resolved measuring_viewpoints(const StudyRequest& request, const PointCloud& scene,
+                                               const ViewpointChoice::Resolved& scanning) {
+  if (request.occlusion_num_vp == 0) return scanning;
+  // On the whole scene's box, so every configuration is measured from the same points.
+  return resolve_for_cloud(ViewpointChoice::from_grid(request.occlusion_num_vp), scene);
+}
+
+// The analyses' own stages would flood a study's log; it reports its four
+// steps (run_study_once) and forwards only the cancel flag.
+Progress cancel_only(const Progress& progress) {
+  Progress quiet;
+  quiet.cancel = progress.cancel;
+  return quiet;
+}
+
+}  // namespace
+
+ScanRequest study_scan_request(const StudyRequest& request, const std::string& scene) {
+  ScanRequest scan;
+  scan.path = scene;
+  scan.point_radius = request.tracing.point_radius;
+  scan.self_tolerance = request.self_tolerance;
+  scan.octree_resolution = request.tracing.octree_resolution;
+  scan.enable_acceleration = request.tracing.enable_acceleration;
+  scan.format = request.format;
+  scan.skip_bad_lines = request.tracing.skip_bad_lines;
+  scan.threads = request.tracing.threads;
+  return scan;
+}
+
+std::string run_file_stem(const std::string& scene, const std::string& configuration) {
+  return safe(scene) + "__" + safe(configuration);
+}
+
+StudyRow run_study_once(const StudyContext& context, const StudyRunInput& run,
+                        const Progress& progress, std::vector<std::string>& warnings) {
+  const StudyRequest& request = context.request;
+  const PointCloud& cloud = *run.cloud;
+  const Progress inner = cancel_only(progress);
+  StudyRow row;
+  row.run = run.index;
+  row.scene = run.scene_name;
+  row.configuration = run.configuration->name;
+  row.points = cloud.size();
+  row.segmenter = segmenter_name(request.segmenter);
+  const std::string stem = run_file_stem(run.scene_name, run.configuration->name);
+
+  progress("scanning", 0.0);
+  auto start = Clock::now();
+  const ViewpointChoice::Resolved viewpoints = resolve_for_cloud(run.configuration->choice, cloud);
+  row.viewpoints = viewpoints.positions;
+  const ScanReport scan =
+      run_scan_on(cloud, viewpoints, study_scan_request(request, run.scene_path), inner);
+  row.visible_fraction = scan.result.visible_fraction;
+  PointCloud scanned = cloud.subset(seen_points(scan.result));
+  row.scanned_points = scanned.size();
+  if (scanned.size() == 0) {
+    throw UsageError("configuration '" + row.configuration + "' sees no point of " + row.scene);
+  }
+  const std::string scanned_path = (std::filesystem::path(context.runs_dir) /
+                                    (stem + ".scan." + cloud_extension(request.format)))
+                                       .string();
+  write_cloud(scanned_path, scanned);
+  row.scan_seconds = seconds_since(start);
+  progress.check_cancel();
+
+  progress("measuring occlusion", 0.25);
+  start = Clock::now();
+  CloudOcclusionRequest tracing = request.tracing;
+  tracing.path = run.scene_path;  // names the scene in messages
+  tracing.out.clear();
+  tracing.escape_directions = false;
+  const CloudOcclusionReport occlusion = run_cloud_occlusion_on(
+      scanned, measuring_viewpoints(request, cloud, viewpoints), context.openings, tracing, inner);
+  row.occlusion_level = occlusion.result.occlusion_level;
+  if (occlusion.exterior) {
+    row.exterior_occlusion_level = occlusion.exterior->result.occlusion_level;
+    const double ratio = occlusion.exterior->interior_exterior_ratio;
+    if (std::isfinite(ratio)) row.interior_exterior_ratio = ratio;
+  }
+  row.occlusion_seconds = seconds_since(start);
+  progress.check_cancel();
+
+  progress("segmenting", 0.5);
+  start = Clock::now();
+  SceneInput scene;
+  scene.prediction = segment_scanned_cloud(context, scanned, scanned_path, stem, inner,
+                                           scene.prediction_name, warnings);
+  row.segmentation_seconds = seconds_since(start);
+  progress.check_cancel();
+
+  progress("scoring", 0.75);
+  start = Clock::now();
+  scene.ground_truth_name = scanned_path;
+  scene.ground_truth = std::move(scanned);
+  const SceneEvaluation evaluation =
+      evaluate_scene(scene, context.mapping, request.max_distance, request.tracing.threads, inner);
+  add_scene_warnings(evaluation, request.max_distance, warnings);
+  row.metrics = evaluation.metrics;
+  row.evaluation_seconds = seconds_since(start);
+  return row;
+}
+
+}  // namespace occlusion::job

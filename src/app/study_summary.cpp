@@ -1,0 +1,169 @@
+// What the study's rows say together: correlations, the plot, the report.
+
+#include <filesystem>
+#include <ostream>
+
+#include "job_support.hpp"
+#include "occlusion/analysis/baseline_segmenter.hpp"
+#include "occlusion/io/atomic_file.hpp"
+#include "occlusion/io/svg_plot.hpp"
+#include "report_format.hpp"
+#include "study_support.hpp"
+
+namespace occlusion::job {
+
+namespace {
+
+struct Measure {
+  const char* column;
+  const char* label;
+};
+
+// The occlusion measures, each correlated with mIoU.
+const Measure kMeasures[] = {
+    {"occlusion_level", "occlusion level (-poc)"},
+    {"exterior_occlusion_level", "exterior occlusion level (-poc, walls, floor, ceiling)"},
+    {"visible_fraction", "visible fraction (-fscan)"},
+};
+
+// The pairs (measure, mIoU) of the rows that have both.
+void pairs(const CsvTable& table, const std::string& column, std::vector<double>& x,
+           std::vector<double>& y) {
+  const std::size_t c = table.column(column), miou = table.column("miou");
+  for (const auto& row : table.rows) {
+    const auto a = cell_number(row[c]), b = cell_number(row[miou]);
+    if (a && b) {
+      x.push_back(*a);
+      y.push_back(*b);
+    }
+  }
+}
+
+std::string fixed(const std::optional<double>& value) {
+  return format_number("%.4f", value, "–");
+}
+std::string fixed(const std::string& cell) {
+  return fixed(cell_number(cell));
+}
+
+std::vector<std::string> segmenters(const CsvTable& table) {
+  std::vector<std::string> names;
+  for (const auto& row : table.rows) {
+    const std::string& name = row[table.column("segmenter")];
+    if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+  }
+  return names;
+}
+
+std::string plot(const StudyReport& report) {
+  std::vector<ScatterPanel> panels;
+  for (const auto& measure : kMeasures) {
+    ScatterPanel panel;
+    panel.title = measure.label;
+    panel.x_label = measure.column;
+    panel.y_label = "mIoU";
+    pairs(report.table, measure.column, panel.x, panel.y);
+    for (const auto& c : report.correlations) {
+      if (c.measure == measure.column && c.correlation.fit) {
+        panel.line = PlotLine{c.correlation.fit->slope, c.correlation.fit->intercept};
+      }
+    }
+    // A measure the study did not take (exterior off) has no panel, unless
+    // the table is empty and the plot would otherwise have none.
+    if (!panel.x.empty() || (panels.empty() && report.table.rows.empty())) {
+      panels.push_back(panel);
+    }
+  }
+  return scatter_plot_svg(panels, "mIoU against occlusion, one point per run (" +
+                                      std::to_string(report.table.rows.size()) + " runs)");
+}
+
+void write_markdown(std::ostream& out, const StudyReport& report, const std::string& svg_name) {
+  const CsvTable& table = report.table;
+  out << "# Occlusion study\n\n";
+  for (const auto& name : segmenters(table)) {
+    out << "Segmenter: **" << markdown_cell(name) << "**";
+    if (name == kBaselineSegmenterName) {
+      out << " — a geometric baseline, not a network: floor, ceiling and walls from the "
+             "region-growing planes, everything else clutter (docs/study.md)";
+    }
+    out << ".\n\n";
+  }
+  out << table.rows.size() << " runs";
+  if (report.job == "study") {
+    out << " (" << report.runs_computed << " computed now, " << report.runs_skipped
+        << " already in study.csv; shard " << report.request.shard << " of " << report.runs_total
+        << " runs in all)";
+  } else {
+    out << ", merged from " << report.inputs.size() << " CSV files";
+  }
+  out << ".\n\n## Correlation with mIoU\n\n"
+      << "| measure | runs | Pearson r | Spearman ρ | fitted line |\n"
+      << "|---|---:|---:|---:|---|\n";
+  for (const auto& m : report.correlations) {
+    const Correlation& c = m.correlation;
+    const std::string line = c.fit ? "mIoU = " + format_number("%.4g", c.fit->slope) + " × x + " +
+                                         format_number("%.4g", c.fit->intercept)
+                                   : "–";
+    out << "| " << m.measure << " | " << c.n << " | " << fixed(c.pearson) << " | "
+        << fixed(c.spearman) << " | " << line << " |\n";
+  }
+  out << "\nA correlation needs at least 3 runs and a measure that varies; – marks one that is "
+         "undefined.\n\n"
+      << "![mIoU against occlusion](" << svg_name << ")\n\n## Runs\n\n"
+      << "| scene | configuration | viewpoints | visible fraction | occlusion level | exterior "
+         "occlusion level | mIoU | overall accuracy |\n"
+      << "|---|---|---:|---:|---:|---:|---:|---:|\n";
+  const auto cell = [&](const std::vector<std::string>& row, const char* column) {
+    return row[table.column(column)];
+  };
+  for (const auto& row : table.rows) {
+    out << "| " << markdown_cell(cell(row, "scene")) << " | "
+        << markdown_cell(cell(row, "configuration")) << " | " << cell(row, "viewpoints") << " | "
+        << fixed(cell(row, "visible_fraction")) << " | " << fixed(cell(row, "occlusion_level"))
+        << " | " << fixed(cell(row, "exterior_occlusion_level")) << " | "
+        << fixed(cell(row, "miou")) << " | " << fixed(cell(row, "overall_accuracy")) << " |\n";
+  }
+  std::vector<std::size_t> classes;
+  for (std::size_t c = 0; c < table.columns.size(); ++c) {
+    if (table.columns[c].rfind("iou_", 0) != 0) continue;
+    const bool any = std::any_of(table.rows.begin(), table.rows.end(),
+                                 [c](const auto& row) { return !row[c].empty(); });
+    if (any) classes.push_back(c);
+  }
+  if (classes.empty()) return;
+  out << "\n## IoU per class\n\n| scene | configuration |";
+  for (const std::size_t c : classes)
+    out << ' ' << markdown_cell(table.columns[c].substr(4)) << " |";
+  out << "\n|---|---|";
+  for (std::size_t k = 0; k < classes.size(); ++k) out << "---:|";
+  out << '\n';
+  for (const auto& row : table.rows) {
+    out << "| " << markdown_cell(cell(row, "scene")) << " | "
+        << markdown_cell(cell(row, "configuration")) << " |";
+    for (const std::size_t c : classes) out << ' ' << fixed(row[c]) << " |";
+    out << '\n';
+  }
+}
+
+}  // namespace
+
+void write_study_summary(StudyReport& report, const std::string& out) {
+  report.correlations.clear();
+  for (const auto& measure : kMeasures) {
+    std::vector<double> x, y;
+    pairs(report.table, measure.column, x, y);
+    if (x.empty() && std::string(measure.column) == "exterior_occlusion_level") continue;
+    report.correlations.push_back({measure.column, correlate(x, y)});
+  }
+  ensure_directory(out);
+  const auto path = [&](const char* name) { return (std::filesystem::path(out) / name).string(); };
+  const std::string svg = plot(report);
+  write_file_atomically(path("study.svg"), [&](std::ostream& stream) { stream << svg; });
+  write_file_atomically(path("study.md"),
+                        [&](std::ostream& stream) { write_markdown(stream, report, "study.svg"); });
+  report.outputs = {path("study.json"), path("study.csv"), path("study.svg"), path("study.md")};
+  write_json_report(path("study.json"), to_json(report));
+}
+
+}  // namespace occlusion::job

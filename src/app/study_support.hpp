@@ -1,0 +1,95 @@
+#pragma once
+// The study job's pieces (internal to app/): one run (study_run.cpp), its
+// segmentation (study_segmenter.cpp), the CSV table (study_table.cpp) and the
+// summary (study_summary.cpp). study_job.cpp puts them together.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "occlusion/analysis/class_mapping.hpp"
+#include "occlusion/app/evaluate_job.hpp"
+#include "occlusion/app/scan_job.hpp"
+#include "occlusion/app/study_job.hpp"
+#include "occlusion/core/polygon.hpp"
+
+namespace occlusion::job {
+
+// What every run of one invocation shares.
+struct StudyContext {
+  const StudyRequest& request;
+  ClassMapping mapping;
+  std::vector<PlanarPolygon> openings;
+  std::string runs_dir;  // OUT/runs: scanned clouds and predictions
+};
+
+// One run's figures, as a CSV row holds them.
+struct StudyRow {
+  std::size_t run = 0;
+  std::string scene, configuration;
+  std::vector<Eigen::Vector3d> viewpoints;
+  std::size_t points = 0, scanned_points = 0;
+  double visible_fraction = 0.0;
+  double occlusion_level = 0.0;
+  std::optional<double> exterior_occlusion_level, interior_exterior_ratio;
+  std::string segmenter;
+  SegmentationMetrics metrics;
+  double scan_seconds = 0.0, occlusion_seconds = 0.0, segmentation_seconds = 0.0,
+         evaluation_seconds = 0.0;
+};
+
+struct StudyRunInput {
+  std::size_t index = 0;  // k of the docs: scene-major
+  std::string scene_name;
+  std::string scene_path;
+  const PointCloud* cloud = nullptr;
+  const NamedViewpointChoice* configuration = nullptr;
+};
+
+// Scans, measures, segments and scores one run. Its scanned cloud and
+// prediction are left in context.runs_dir.
+StudyRow run_study_once(const StudyContext& context, const StudyRunInput& run,
+                        const Progress& progress, std::vector<std::string>& warnings);
+
+// The request as -fscan would take it for `scene`.
+ScanRequest study_scan_request(const StudyRequest& request, const std::string& scene);
+// File stem of a run's files in runs/: scene and configuration, made safe.
+std::string run_file_stem(const std::string& scene, const std::string& configuration);
+
+// The segmenter's name in the CSV and the report: the baseline's long name,
+// or the command template as given.
+std::string segmenter_name(const std::string& segmenter);
+// The scanned cloud's labels as the segmenter predicts them, in evaluation ids
+// (the baseline) or as the command wrote them. `prediction_path` receives the
+// file the prediction is in.
+Prediction segment_scanned_cloud(const StudyContext& context, const PointCloud& scanned,
+                                 const std::string& scanned_path, const std::string& stem,
+                                 const Progress& progress, std::string& prediction_path,
+                                 std::vector<std::string>& warnings);
+// UsageError unless the segmenter is the baseline or a template with {input}
+// and {output}, and segmenter_output an extension -eval reads.
+void validate_segmenter(const StudyRequest& request);
+
+// The CSV columns: the run's identity and figures, one iou_<class> per
+// evaluation class of the mapping, then the timings (columns ending _seconds).
+std::vector<std::string> study_columns(const ClassMapping& mapping);
+std::vector<std::string> study_cells(const StudyRow& row, const ClassMapping& mapping);
+// A cell as a number; nothing for an empty cell or text.
+std::optional<double> cell_number(const std::string& cell);
+// "scene\nconfiguration": what makes a run the same run in another CSV.
+std::string run_key(const CsvTable& table, const std::vector<std::string>& row);
+// The study's CSV, or an empty table with `columns` when there is none yet.
+// UsageError when the file has other columns (another class mapping).
+CsvTable read_study_table(const std::string& path, const std::vector<std::string>& columns);
+// Stable, by the `run` column.
+void sort_by_run(CsvTable& table);
+// Rows of all tables, one per run key, the first kept; UsageError when the
+// columns differ or are not a study's.
+CsvTable merge_study_tables(const std::vector<CsvTable>& tables,
+                            const std::vector<std::string>& names,
+                            std::vector<std::string>& warnings);
+
+// The correlations, study.svg, study.md and study.json of report.table, in `out`.
+void write_study_summary(StudyReport& report, const std::string& out);
+
+}  // namespace occlusion::job
