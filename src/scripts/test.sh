@@ -1,6 +1,9 @@
 #!/usr/bin/env bash
-# Sets up, builds once and runs every test: C++ formatting, then all GoogleTest
-# cases in parallel through ctest.
+# Sets up, builds once and runs every test: C++ formatting, all GoogleTest
+# cases in parallel through ctest, then the browser viewer's checks
+# (src/scripts/web.sh installs and builds it): prettier, tsc, the Vitest unit
+# tests, and the end-to-end tests in headless Chromium (Debian's chromium,
+# installed here if missing) against a real `occlusion serve`.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 bash "$root/src/scripts/setup.sh"
@@ -8,3 +11,24 @@ bash "$root/src/scripts/check_format.sh"
 bash "$root/src/scripts/build.sh"
 build="${OCCLUSION_BUILD_DIR:-$root/build}"
 ctest --test-dir "$build" -j "$(nproc)" --output-on-failure
+
+bash "$root/src/scripts/web.sh"
+chromium="${CHROMIUM_PATH:-/usr/bin/chromium}"
+if [[ ! -x "$chromium" ]]; then
+  sudo=()
+  if [[ $(id -u) -ne 0 ]]; then
+    command -v sudo >/dev/null || { echo "test: run as root to install chromium" >&2; exit 1; }
+    sudo=(sudo)
+  fi
+  echo "test: installing chromium (for the viewer's end-to-end tests)"
+  export DEBIAN_FRONTEND=noninteractive
+  "${sudo[@]}" apt-get update -qq
+  "${sudo[@]}" apt-get install -y -qq chromium >/dev/null
+fi
+cd "$root/web"
+npm run --silent format:check
+npm run --silent typecheck
+npm test --silent
+# Every wait inside is bounded; this is the outer limit (the tests stop their server).
+OCCLUSION_BIN="$build/occlusion" CHROMIUM_PATH="$chromium" \
+  timeout --kill-after=20 600 npm run --silent e2e

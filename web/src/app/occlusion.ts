@@ -1,0 +1,162 @@
+// Compute Occlusion: mesh occlusion for a mesh; point-cloud occlusion (with
+// the escape rays drawn) and, optionally, the visibility scan for a cloud.
+// Viewpoints are the enabled markers, where the user left them.
+
+import type { EscapeData, FaceFractionData, Vec3, VisibilityData } from "../decode/types";
+import type { JobReport } from "../results";
+import { num } from "../results";
+import { occlusionCard, scanCard } from "../ui/occlusion_view";
+import { percent } from "../ui/format";
+import { VIEWPOINT_LABELS } from "../scene/viewpoints";
+import type { AppContext } from "./context";
+
+export class Occlusion {
+  constructor(private readonly ctx: AppContext) {}
+
+  /** Runs the occlusion job that fits the scene; `method` overrides the GUI's cloud method. */
+  async compute(method?: "poc" | "rgoc"): Promise<void> {
+    const { view, markers, notices, gui } = this.ctx;
+    const info = view.info;
+    if (info === null) {
+      notices.info("Load a scene first (Files, on the left).");
+      return;
+    }
+    const enabled = markers.enabled();
+    if (enabled.length === 0) {
+      notices.error(
+        "No viewpoint enabled",
+        "Turn on Center, Viewpoint Max or Viewpoint Min in the GUI (Viewpoints).",
+      );
+      return;
+    }
+    const viewpoints = enabled.map((v) => v.position.map((x) => Number(x.toFixed(6))));
+    // Labels of the viewpoints sent, in order (the job names them viewpoint_1 …).
+    const names = enabled.map((v) => VIEWPOINT_LABELS[v.name]);
+    const s = gui.settings;
+    if (view.cloud === null) {
+      await this.mesh(info.path, viewpoints, s.samplesPerUnitArea, names);
+      return;
+    }
+    if (
+      (method ?? s.cloudMethod) === "rgoc" &&
+      this.ctx.client.available("region_growing_occlusion")
+    ) {
+      await this.regionGrowing(info.path, viewpoints, s.samplesPerUnitArea, names);
+      return;
+    }
+    const cloud: Record<string, unknown> = {
+      path: info.path,
+      viewpoints,
+      num_rays_per_vp: s.raysPerViewpoint,
+      point_radius: s.pointRadius,
+      seed: 0,
+    };
+    const openings = this.ctx.openings.openingsFile;
+    if (openings) cloud.polygon_path = openings;
+    const jobs: Promise<void>[] = [this.cloud(cloud, names)];
+    if (s.visibilityScan) {
+      jobs.push(this.scan({ path: info.path, viewpoints, point_radius: s.pointRadius }, names));
+    }
+    await Promise.all(jobs);
+  }
+
+  private async mesh(
+    path: string,
+    viewpoints: number[][],
+    samples: number,
+    names: string[],
+  ): Promise<void> {
+    const outcome = await this.ctx.runner.run<JobReport>("Mesh occlusion", "mesh_occlusion", {
+      path,
+      viewpoints,
+      samples_per_unit_area: samples,
+      seed: 0,
+    });
+    if (outcome === null) return;
+    const report = outcome.result;
+    this.remember(path, report);
+    if (outcome.decoded?.kind === "face_fraction") {
+      try {
+        this.ctx.view.setFaceFraction(outcome.decoded as FaceFractionData);
+      } catch (error) {
+        this.ctx.notices.fromError(error, "Mesh occlusion");
+      }
+    }
+    this.ctx.results.setCard("occlusion", "occlusion", occlusionCard(report, names));
+    this.ctx.notices.info(`Occlusion level ${percent(num(report.occlusion_level), 2)}`, "success");
+  }
+
+  private async regionGrowing(
+    path: string,
+    viewpoints: number[][],
+    samples: number,
+    names: string[],
+  ): Promise<void> {
+    const outcome = await this.ctx.runner.run<JobReport>(
+      "Region-growing mesh occlusion",
+      "region_growing_occlusion",
+      { path, viewpoints, samples_per_unit_area: samples, seed: 0 },
+    );
+    if (outcome === null) return;
+    const report = outcome.result;
+    this.remember(path, report);
+    if (outcome.decoded?.kind === "region_growing") {
+      try {
+        this.ctx.view.setEstimatedMesh(outcome.decoded);
+      } catch (error) {
+        this.ctx.notices.fromError(error, "Region-growing mesh");
+      }
+    }
+    this.ctx.results.setCard("occlusion", "occlusion", occlusionCard(report, names));
+    this.ctx.notices.info(`Occlusion level ${percent(num(report.occlusion_level), 2)}`, "success");
+  }
+
+  private async cloud(params: Record<string, unknown>, names: string[]): Promise<void> {
+    const count = (params.viewpoints as unknown[]).length;
+    const outcome = await this.ctx.runner.run<JobReport>(
+      "Point-cloud occlusion",
+      "cloud_occlusion",
+      params,
+      { context: () => ({ viewpoints: count }) },
+    );
+    if (outcome === null) return;
+    const report = outcome.result;
+    this.remember(String(params.path), report);
+    if (outcome.decoded?.kind === "escapes") {
+      const origins = (report.viewpoints ?? []).map((v) => v.position ?? ([0, 0, 0] as Vec3));
+      this.ctx.rays.show(outcome.decoded as EscapeData, origins, this.ctx.viewer.diagonal * 0.6);
+      this.ctx.rays.visible = this.ctx.gui.settings.showRays;
+      this.ctx.viewer.requestRender();
+    }
+    this.ctx.results.setCard("occlusion", "occlusion", occlusionCard(report, names));
+    this.ctx.notices.info(`Occlusion level ${percent(num(report.occlusion_level), 2)}`, "success");
+  }
+
+  private async scan(params: Record<string, unknown>, names: string[]): Promise<void> {
+    const count = (params.viewpoints as unknown[]).length;
+    const outcome = await this.ctx.runner.run<JobReport>("Visibility scan", "scan", params, {
+      context: () => ({ viewpoints: count }),
+    });
+    if (outcome === null) return;
+    const report = outcome.result;
+    this.remember(String(params.path), report);
+    const seen = (report.outputs ?? []).find(
+      (o) => o.endsWith(".scan.ply") || o.endsWith(".scan.pcd"),
+    );
+    if (seen) this.ctx.history.scanOutput.set(String(params.path), seen);
+    if (outcome.decoded?.kind === "visibility") {
+      try {
+        this.ctx.view.setVisibility(outcome.decoded as VisibilityData);
+      } catch (error) {
+        this.ctx.notices.fromError(error, "Visibility scan");
+      }
+    }
+    this.ctx.results.setCard("occlusion", "scan", scanCard(report, names));
+  }
+
+  private remember(path: string, report: JobReport): void {
+    const level = num(report.occlusion_level);
+    if (level !== undefined) this.ctx.history.occlusion.set(path, level);
+    for (const o of report.outputs ?? []) this.ctx.history.outputs.add(o);
+  }
+}

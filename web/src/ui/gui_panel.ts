@@ -1,0 +1,135 @@
+// The seed's GUI panel (top right, lil-gui): light intensity, show cloud,
+// shader material, the viewpoint toggles (centre, max, min, all lights) and
+// picker size, plus the view and computation settings this viewer adds.
+
+import GUI from "lil-gui";
+import type { Controller } from "lil-gui";
+
+export interface GuiSettings {
+  lightIntensity: number;
+  showCloud: boolean;
+  showMesh: boolean;
+  colourBy: string;
+  pointSize: number;
+  cutCeiling: boolean;
+  useShaderMaterial: boolean;
+  centre: boolean;
+  max: boolean;
+  min: boolean;
+  allLights: boolean;
+  showRays: boolean;
+  pickerSize: number;
+  raysPerViewpoint: number;
+  pointRadius: number;
+  samplesPerUnitArea: number;
+  visibilityScan: boolean;
+  cloudMethod: string;
+}
+
+export type GuiKey = keyof GuiSettings;
+
+export const DEFAULT_SETTINGS: GuiSettings = {
+  lightIntensity: 1,
+  showCloud: true,
+  showMesh: true,
+  colourBy: "rgb",
+  pointSize: 0.05,
+  cutCeiling: true,
+  useShaderMaterial: false,
+  centre: true,
+  max: true,
+  min: true,
+  allLights: true,
+  showRays: true,
+  pickerSize: 0.05,
+  raysPerViewpoint: 20000,
+  pointRadius: 0.06,
+  samplesPerUnitArea: 20,
+  visibilityScan: true,
+  cloudMethod: "poc",
+};
+
+export class GuiPanel {
+  readonly gui: GUI;
+  readonly settings: GuiSettings = { ...DEFAULT_SETTINGS };
+  private readonly controllers = new Map<GuiKey, Controller>();
+  onChange: (key: GuiKey, settings: GuiSettings) => void = () => undefined;
+  onResetViewpoints: () => void = () => undefined;
+
+  constructor(container: HTMLElement) {
+    this.gui = new GUI({ container, title: "Controls", width: 250 });
+    this.gui.domElement.dataset.testid = "gui-panel";
+    const add = (folder: GUI, key: GuiKey, name: string, ...args: unknown[]) => {
+      const controller = (folder.add as (...a: unknown[]) => Controller)(
+        this.settings,
+        key,
+        ...args,
+      )
+        .name(name)
+        .onChange(() => this.onChange(key, this.settings));
+      this.controllers.set(key, controller);
+      return controller;
+    };
+
+    const view = this.gui.addFolder("Scene");
+    add(view, "lightIntensity", "Light Intensity", 0, 3, 0.05);
+    add(view, "showCloud", "Show Cloud");
+    add(view, "showMesh", "Show Mesh");
+    add(view, "colourBy", "Colour by", { RGB: "rgb" });
+    add(view, "pointSize", "Point size", 0.001, 0.3, 0.001);
+    add(view, "cutCeiling", "Hide ceiling");
+
+    const viewpoints = this.gui.addFolder("Viewpoints");
+    add(viewpoints, "centre", "Center");
+    add(viewpoints, "max", "Viewpoint Max");
+    add(viewpoints, "min", "Viewpoint Min");
+    add(viewpoints, "allLights", "All lights");
+    add(viewpoints, "showRays", "Show escape rays");
+    viewpoints.add({ reset: () => this.onResetViewpoints() }, "reset").name("Reset positions");
+
+    const picker = this.gui.addFolder("Picker");
+    add(picker, "useShaderMaterial", "Use Shader Material");
+    add(picker, "pickerSize", "Picker Size", 0.005, 0.5, 0.005);
+    picker.close();
+
+    const compute = this.gui.addFolder("Occlusion settings");
+    add(compute, "raysPerViewpoint", "Rays / viewpoint", 1000, 200000, 1000);
+    add(compute, "pointRadius", "Point radius", 0.005, 0.3, 0.001);
+    add(compute, "samplesPerUnitArea", "Samples / m² (mesh)", 1, 200, 1);
+    add(compute, "visibilityScan", "Also scan visibility");
+    add(compute, "cloudMethod", "Cloud method", {
+      "Ray casting (-poc)": "poc",
+      "Region-growing mesh (-rgoc)": "rgoc",
+    }).hide();
+    compute.close();
+  }
+
+  /** Sets a value from code (no onChange). */
+  set<K extends GuiKey>(key: K, value: GuiSettings[K]): void {
+    this.settings[key] = value;
+    this.controllers.get(key)?.updateDisplay();
+  }
+
+  setColourOptions(options: Record<string, string>, current: string): void {
+    this.settings.colourBy = current;
+    const controller = this.controllers.get("colourBy");
+    if (controller) {
+      const updated = controller.options(options);
+      updated.name("Colour by").onChange(() => this.onChange("colourBy", this.settings));
+      this.controllers.set("colourBy", updated);
+      updated.updateDisplay();
+    }
+  }
+
+  setRange(key: GuiKey, min: number, max: number, step: number): void {
+    this.controllers.get(key)?.min(min).max(max).step(step).updateDisplay();
+  }
+
+  show(key: GuiKey, on: boolean): void {
+    this.controllers.get(key)?.show(on);
+  }
+
+  enable(key: GuiKey, on: boolean): void {
+    this.controllers.get(key)?.disable(!on);
+  }
+}

@@ -1,0 +1,196 @@
+// Occlusion figures: the headline level, per-viewpoint figures and, for
+// meshes, the most occluded groups; the visibility scan's figures.
+
+import type { JobReport } from "../results";
+import { num } from "../results";
+import { h } from "./dom";
+import { fixed, integer, ms, percent, point } from "./format";
+import { card, facts, headline, table, warnings } from "./results_panel";
+
+function seconds(report: JobReport): string {
+  const total = num(report.timings?.total_seconds);
+  return total === undefined ? "—" : ms(total * 1000);
+}
+
+export function occlusionCard(report: JobReport, names: string[] = []): HTMLElement {
+  const level = num(report.occlusion_level);
+  const isRegionGrowing = report.job === "region_growing_occlusion";
+  const isMesh = report.job === "mesh_occlusion" || isRegionGrowing;
+  const viewpoints = report.viewpoints ?? [];
+  // -rgoc keeps the estimated mesh's counts under `mesh`.
+  const mesh = (report.mesh ?? {}) as Record<string, unknown>;
+  const count = (key: string) => integer(num(report[key]) ?? num(mesh[key]));
+  const pairs: [string, string][] = isMesh
+    ? [
+        ["visible area", `${fixed(num(report.visible_area), 2)} m²`],
+        ["total area", `${fixed(num(report.total_area), 2)} m²`],
+        ["faces", count("faces")],
+        ["samples", count("samples")],
+        ["rays", count("rays")],
+        ...(isRegionGrowing
+          ? ([
+              ["clusters used", integer(num(report.clusters_used))],
+              ["points covered", percent(num(report.covered_fraction))],
+            ] as [string, string][])
+          : []),
+        ["time", seconds(report)],
+      ]
+    : [
+        ["rays", integer(num(report.rays))],
+        ["occlusion rays", integer(num(report.occlusion_rays))],
+        ["through openings", integer(num(report.through_openings))],
+        ["openings", integer(num(report.openings))],
+        ["points", integer(num(report.points))],
+        ["time", seconds(report)],
+      ];
+  const polygonPath = report.parameters?.polygon_path;
+  const rows = viewpoints.map((v, i) =>
+    isMesh
+      ? [names[i] ?? v.name ?? `#${i + 1}`, point(v.position), percent(v.visible_fraction)]
+      : [
+          names[i] ?? v.name ?? `#${i + 1}`,
+          point(v.position),
+          percent(v.occlusion_level, 2),
+          integer(v.occlusion_rays),
+          integer(v.through_openings),
+        ],
+  );
+  const head = isMesh
+    ? ["viewpoint", "position", "sees alone"]
+    : ["viewpoint", "position", "occlusion", "occl. rays", "openings"];
+  const groups = isMesh ? groupTable(report) : null;
+  return card(
+    isRegionGrowing
+      ? "Region-growing mesh occlusion (-rgoc)"
+      : isMesh
+        ? "Mesh occlusion (-moc)"
+        : "Point-cloud occlusion (-poc)",
+    [
+      headline("Occlusion level", percent(level, 2), "occlusion-level", level),
+      facts(pairs),
+      typeof polygonPath === "string" && polygonPath
+        ? h("div", {
+            class: "mt-1 truncate text-xs text-teal-300",
+            text: `openings file: ${polygonPath}`,
+            testid: "openings-used",
+          })
+        : null,
+      h("div", { class: "mt-3" }, [table(head, rows, "viewpoint-table")]),
+      groups,
+      warnings(report.warnings),
+    ],
+    "occlusion-card",
+  );
+}
+
+function groupTable(report: JobReport): HTMLElement | null {
+  const groups = Array.isArray(report.groups) ? (report.groups as Record<string, unknown>[]) : [];
+  if (groups.length === 0) return null;
+  const sorted = [...groups].sort(
+    (a, b) => (num(b.occlusion_level) ?? 0) - (num(a.occlusion_level) ?? 0),
+  );
+  return h("details", { class: "mt-3" }, [
+    h("summary", {
+      class: "cursor-pointer text-xs text-slate-400",
+      text: `${groups.length} groups, most occluded first`,
+    }),
+    table(
+      ["group", "occlusion", "area m²"],
+      sorted.map((g) => [
+        String(g.name ?? ""),
+        percent(num(g.occlusion_level)),
+        fixed(num(g.total_area), 2),
+      ]),
+    ),
+  ]);
+}
+
+export function scanCard(report: JobReport, names: string[] = []): HTMLElement {
+  const fraction = num(report.visible_fraction);
+  const classes = Array.isArray(report.classes)
+    ? (report.classes as Record<string, unknown>[])
+    : [];
+  return card(
+    "Visibility scan (-fscan)",
+    [
+      headline(
+        "Points seen by at least one viewpoint",
+        percent(fraction),
+        "visible-fraction",
+        fraction,
+      ),
+      facts([
+        ["visible points", integer(num(report.visible_points))],
+        ["points", integer(num(report.points))],
+        ["time", seconds(report)],
+      ]),
+      h("div", { class: "mt-3" }, [
+        table(
+          ["viewpoint", "position", "sees"],
+          (report.viewpoints ?? []).map((v, i) => [
+            names[i] ?? v.name ?? `#${i + 1}`,
+            point(v.position),
+            percent(v.visible_fraction),
+          ]),
+        ),
+      ]),
+      classes.length
+        ? h("details", { class: "mt-3" }, [
+            h("summary", { class: "cursor-pointer text-xs text-slate-400", text: "per class" }),
+            table(
+              ["class", "points", "seen"],
+              classes
+                .filter((c) => (num(c.points) ?? 0) > 0)
+                .map((c) => [
+                  String(c.name),
+                  integer(num(c.points)),
+                  percent(num(c.visible_fraction)),
+                ]),
+            ),
+          ])
+        : null,
+      warnings(report.warnings),
+    ],
+    "scan-card",
+  );
+}
+
+/** extract_polygons: how many planes region growing found and how much of the cloud they cover. */
+export function polygonsCard(report: JobReport): HTMLElement {
+  const planes = Array.isArray(report.planes) ? (report.planes as Record<string, unknown>[]) : [];
+  const mesh = (report.mesh ?? {}) as Record<string, unknown>;
+  const used = num(report.clusters_used);
+  return card(
+    "Extracted polygons (region growing)",
+    [
+      headline("Planes", integer(used ?? planes.length), "planes", used),
+      facts([
+        ["clusters found", integer(num(report.clusters_found))],
+        ["points covered", percent(num(report.covered_fraction))],
+        ["triangles", integer(num(mesh.faces))],
+        ["time", seconds(report)],
+      ]),
+      planes.length
+        ? h("details", { class: "mt-3" }, [
+            h("summary", {
+              class: "cursor-pointer text-xs text-slate-400",
+              text: "planes, largest first",
+            }),
+            table(
+              ["cluster", "points", "area m²", "normal"],
+              [...planes]
+                .sort((a, b) => (num(b.area) ?? 0) - (num(a.area) ?? 0))
+                .map((p) => [
+                  String(p.cluster ?? ""),
+                  integer(num(p.points)),
+                  fixed(num(p.area), 2),
+                  point(p.normal as number[] | undefined),
+                ]),
+            ),
+          ])
+        : null,
+      warnings(report.warnings),
+    ],
+    "polygons-card",
+  );
+}

@@ -1,0 +1,172 @@
+// The results side panel: tabs for occlusion figures, evaluation tables and
+// the study's scatter plot.
+
+import { clear, h } from "./dom";
+
+export type ResultsTab = "occlusion" | "evaluation" | "study";
+
+const TITLES: Record<ResultsTab, string> = {
+  occlusion: "Occlusion",
+  evaluation: "Evaluation",
+  study: "Study",
+};
+
+export class ResultsPanel {
+  readonly bodies = new Map<ResultsTab, HTMLElement>();
+  private readonly buttons = new Map<ResultsTab, HTMLButtonElement>();
+
+  constructor(container: HTMLElement) {
+    const tabs = h("div", { class: "flex gap-1 border-b border-slate-800 px-3 pt-2" });
+    const bodies = h("div", { class: "min-h-0 flex-1 overflow-auto p-3" });
+    for (const tab of Object.keys(TITLES) as ResultsTab[]) {
+      const button = h("button", {
+        class: "rounded-t-md px-3 py-1.5 text-sm font-medium",
+        text: TITLES[tab],
+        testid: `tab-${tab}`,
+        on: { click: () => this.show(tab) },
+      });
+      this.buttons.set(tab, button);
+      tabs.append(button);
+      const body = h("div", { class: "hidden space-y-4", testid: `results-${tab}` }, [
+        h("p", { class: "text-sm text-slate-500", text: placeholder(tab) }),
+      ]);
+      this.bodies.set(tab, body);
+      bodies.append(body);
+    }
+    container.append(tabs, bodies);
+    this.show("occlusion");
+  }
+
+  show(tab: ResultsTab): void {
+    for (const [name, body] of this.bodies) body.classList.toggle("hidden", name !== tab);
+    for (const [name, button] of this.buttons) {
+      const on = name === tab;
+      button.className =
+        "rounded-t-md px-3 py-1.5 text-sm font-medium " +
+        (on ? "bg-slate-800 text-white" : "text-slate-400 hover:text-slate-200");
+    }
+  }
+
+  /** Replaces a tab's content and (unless `focus` is false) brings it to the front. */
+  set(tab: ResultsTab, content: HTMLElement[], focus = true): void {
+    const body = this.bodies.get(tab)!;
+    clear(body);
+    body.append(...content);
+    if (focus) this.show(tab);
+  }
+
+  /** Replaces one card (by key) inside a tab, keeping the others. */
+  setCard(tab: ResultsTab, key: string, card: HTMLElement): void {
+    const body = this.bodies.get(tab)!;
+    body.querySelector(":scope > p")?.remove();
+    card.dataset.card = key;
+    const old = body.querySelector(`:scope > [data-card="${key}"]`);
+    if (old) old.replaceWith(card);
+    else body.prepend(card); // the newest kind of result on top
+    this.show(tab);
+  }
+
+  clearTab(tab: ResultsTab): void {
+    const body = this.bodies.get(tab)!;
+    clear(body);
+    body.append(h("p", { class: "text-sm text-slate-500", text: placeholder(tab) }));
+  }
+}
+
+function placeholder(tab: ResultsTab): string {
+  switch (tab) {
+    case "occlusion":
+      return "Load a scene and press Compute Occlusion.";
+    case "evaluation":
+      return "Press Evaluate to compare a segmentation with the ground truth.";
+    case "study":
+      return "Each evaluation after an occlusion computation adds a point (occlusion, mIoU).";
+  }
+}
+
+export function card(
+  title: string,
+  children: (HTMLElement | null)[],
+  testid?: string,
+): HTMLElement {
+  return h(
+    "section",
+    {
+      class: "rounded-lg border border-slate-800 bg-slate-900/60 p-3",
+      ...(testid ? { testid } : {}),
+    },
+    [
+      h("h3", {
+        class: "mb-2 text-xs font-semibold uppercase tracking-wide text-slate-400",
+        text: title,
+      }),
+      ...children,
+    ],
+  );
+}
+
+export function headline(label: string, value: string, testid: string, raw?: number): HTMLElement {
+  const figure = h("div", {
+    class: "text-3xl font-semibold tabular-nums text-white",
+    text: value,
+    testid,
+  });
+  if (raw !== undefined) figure.dataset.value = String(raw);
+  return h("div", { class: "mb-2" }, [
+    h("div", { class: "text-xs text-slate-400", text: label }),
+    figure,
+  ]);
+}
+
+export function facts(pairs: [string, string][]): HTMLElement {
+  return h(
+    "dl",
+    { class: "grid grid-cols-2 gap-x-3 gap-y-0.5 text-xs" },
+    pairs.flatMap(([k, v]) => [
+      h("dt", { class: "text-slate-400", text: k }),
+      h("dd", { class: "text-right tabular-nums text-slate-200", text: v }),
+    ]),
+  );
+}
+
+export function table(
+  head: string[],
+  rows: (string | HTMLElement)[][],
+  testid?: string,
+): HTMLElement {
+  return h("div", { class: "overflow-x-auto" }, [
+    h("table", { class: "w-full text-xs tabular-nums", ...(testid ? { testid } : {}) }, [
+      h("thead", {}, [
+        h(
+          "tr",
+          { class: "text-left text-slate-400" },
+          head.map((c, i) =>
+            h("th", { class: `px-1.5 py-1 font-medium ${i ? "text-right" : ""}`, text: c }),
+          ),
+        ),
+      ]),
+      h(
+        "tbody",
+        {},
+        rows.map((row) =>
+          h(
+            "tr",
+            { class: "border-t border-slate-800" },
+            row.map((c, i) =>
+              h("td", { class: `px-1.5 py-1 ${i ? "text-right" : "text-slate-200"}` }, [c]),
+            ),
+          ),
+        ),
+      ),
+    ]),
+  ]);
+}
+
+export function warnings(list: unknown): HTMLElement | null {
+  if (!Array.isArray(list) || list.length === 0) return null;
+  return h(
+    "ul",
+    { class: "mt-2 space-y-1 text-xs text-amber-300", testid: "result-warnings" },
+    list.map((w) => h("li", { text: `⚠ ${String(w)}` })),
+  );
+}

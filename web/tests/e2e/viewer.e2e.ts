@@ -1,0 +1,324 @@
+// The viewer against the real server, in real headless Chromium: load the
+// sample room, see its points, compute occlusion, pick and save an opening
+// (used by the next computation), evaluate, and read a server error.
+// Screenshots of every step go to web/test-artifacts/.
+
+import { existsSync, readFileSync } from "node:fs";
+import { join } from "node:path";
+import type { Browser, Page } from "playwright-core";
+import { afterAll, beforeAll, describe, expect, test } from "vitest";
+import {
+  canvasForeground,
+  launchBrowser,
+  openPage,
+  prepareData,
+  removeData,
+  screenshot,
+  startServer,
+} from "./harness";
+import type { Server } from "./harness";
+
+const ROOM = "s3dis_synthetic/Area_1/office_1";
+
+let server: Server;
+let browser: Browser;
+let page: Page;
+let problems: string[];
+
+async function occlusionLevel(): Promise<number> {
+  const figure = page.locator("[data-testid=occlusion-card] [data-testid=occlusion-level]");
+  await figure.waitFor({ state: "visible", timeout: 60_000 });
+  return Number(await figure.getAttribute("data-value"));
+}
+
+describe("viewer (e2e)", () => {
+  beforeAll(async () => {
+    server = await startServer(prepareData());
+    browser = await launchBrowser();
+    ({ page, problems } = await openPage(browser, `${server.url}/`));
+  });
+
+  afterAll(async () => {
+    await browser?.close().catch(() => undefined);
+    await server?.stop();
+    if (server) removeData(server.dataDir);
+  });
+
+  test("opens on the sample room mesh with a WebGL canvas", async () => {
+    await page.locator("[data-testid=connection][data-state=online]").waitFor();
+    await expect
+      .poll(() => page.locator("[data-testid=status-scene]").textContent())
+      .toContain("sample_room.obj");
+    const webgl = await page.evaluate(() => {
+      const gl = document.querySelector("canvas")!.getContext("webgl2");
+      return gl !== null;
+    });
+    expect(webgl).toBe(true);
+    const { foreground, total } = await canvasForeground(page, "01-sample-room-mesh");
+    expect(foreground / total).toBeGreaterThan(0.1);
+    await screenshot(page, "01-sample-room-mesh-page");
+    // Mesh occlusion from the three markers: per-triangle colours and a colour bar.
+    await page.locator("[data-testid=btn-compute]").click();
+    const level = await occlusionLevel();
+    expect(level).toBeGreaterThan(0);
+    expect(level).toBeLessThan(1);
+    await page.locator("[data-testid=colour-bar]").waitFor();
+    expect(await page.locator("[data-testid=legend]").textContent()).toContain("Visible fraction");
+    await screenshot(page, "01-sample-room-mesh-occlusion");
+  });
+
+  test("loads the S3DIS room from the file list and draws its points", async () => {
+    await page.locator('[data-testid=file-entry][data-path="s3dis_synthetic"]').click();
+    await page.locator('[data-testid=file-entry][data-path="s3dis_synthetic/Area_1"]').waitFor();
+    await page.locator('button[title="Browse s3dis_synthetic/Area_1"]').click();
+    await page.locator(`[data-testid=file-entry][data-path="${ROOM}"]`).click();
+    await expect
+      .poll(() => page.locator("[data-testid=status-scene]").textContent(), { timeout: 30_000 })
+      .toContain("33,019 points");
+
+    // Points on the canvas: many foreground pixels, and far fewer with the cloud hidden.
+    const withCloud = await canvasForeground(page, "02-room-points-canvas");
+    await page.evaluate(() => {
+      const app = (window as any).__occlusion.app;
+      app.ctx.gui.set("showCloud", false);
+      app.ctx.view.apply("showCloud");
+    });
+    const without = await canvasForeground(page);
+    await page.evaluate(() => {
+      const app = (window as any).__occlusion.app;
+      app.ctx.gui.set("showCloud", true);
+      app.ctx.view.apply("showCloud");
+    });
+    expect(withCloud.foreground / withCloud.total).toBeGreaterThan(0.05);
+    expect(withCloud.foreground).toBeGreaterThan(3 * without.foreground + 1000);
+    // Semantic colours with a legend of class names.
+    await page.locator("[data-testid=btn-semantic]").click();
+    await expect.poll(() => page.locator("[data-testid=legend-class]").count()).toBeGreaterThan(5);
+    expect(await page.locator("[data-testid=legend]").textContent()).toContain("wall");
+    await screenshot(page, "02-room-semantic");
+  });
+
+  test("computes occlusion and shows the figure", async () => {
+    await page.locator("[data-testid=btn-compute]").click();
+    const level = await occlusionLevel();
+    expect(level).toBeGreaterThanOrEqual(0);
+    expect(level).toBeLessThan(1);
+    await page.locator("[data-testid=scan-card] [data-testid=visible-fraction]").waitFor();
+    expect(
+      await page
+        .locator("[data-testid=occlusion-card] [data-testid=viewpoint-table] tbody tr")
+        .count(),
+    ).toBe(3);
+    await expect.poll(() => page.locator("[data-testid=job]").count()).toBe(0);
+    await screenshot(page, "03-occlusion");
+  });
+
+  test("a viewpoint marker dragged before computing is where the job looks from", async () => {
+    const screen = () =>
+      page.evaluate(() => {
+        const app = (window as any).__occlusion.app;
+        const viewer = app.ctx.viewer;
+        const p = app.ctx.markers.vector("centre").project(viewer.camera);
+        const r = viewer.renderer.domElement.getBoundingClientRect();
+        return { x: r.left + ((p.x + 1) / 2) * r.width, y: r.top + ((1 - p.y) / 2) * r.height };
+      });
+    const position = () =>
+      page.evaluate(
+        () => (window as any).__occlusion.app.ctx.markers.position("centre") as number[],
+      );
+    const before = await position();
+    const at = await screen();
+    await page.mouse.click(at.x, at.y); // selects the marker: a transform gizmo appears
+    await expect
+      .poll(() => page.evaluate(() => (window as any).__occlusion.app.ctx.markers.selection))
+      .toBe("centre");
+    await page.mouse.move(at.x, at.y, { steps: 2 });
+    await page.mouse.down();
+    await page.mouse.move(at.x + 60, at.y + 25, { steps: 10 });
+    await page.mouse.up();
+    const after = await position();
+    expect(
+      Math.hypot(after[0]! - before[0]!, after[1]! - before[1]!, after[2]! - before[2]!),
+    ).toBeGreaterThan(0.1);
+    await screenshot(page, "03-viewpoint-dragged");
+    await page.keyboard.press("Escape");
+    await page.locator("[data-testid=btn-compute]").click();
+    await expect
+      .poll(
+        async () => {
+          const text = await page
+            .locator("[data-testid=occlusion-card] [data-testid=viewpoint-table] tbody tr")
+            .first()
+            .textContent();
+          return text ?? "";
+        },
+        { timeout: 60_000 },
+      )
+      .toContain(`(${after.map((x) => x.toFixed(2)).join(", ")})`);
+  });
+
+  test("picks three points into an opening, saves it, and the next computation uses it", async () => {
+    await page.locator("[data-testid=pick-toggle]").click();
+    const canvas = await page.locator("[data-testid=viewer-canvas]").boundingBox();
+    const spots = [
+      [0.42, 0.62],
+      [0.5, 0.66],
+      [0.46, 0.72],
+      [0.38, 0.7],
+      [0.55, 0.58],
+      [0.5, 0.5],
+      [0.35, 0.55],
+    ];
+    for (const [fx, fy] of spots) {
+      if (
+        (await page.locator("[data-testid=picked-points] li").count()) >= 3 &&
+        !(await page.locator("[data-testid=save-opening]").isDisabled())
+      )
+        break;
+      await page.mouse.click(canvas!.x + fx! * canvas!.width, canvas!.y + fy! * canvas!.height);
+      await page.waitForTimeout(150);
+    }
+    expect(await page.locator("[data-testid=save-opening]").isEnabled()).toBe(true);
+    await screenshot(page, "04-picked-polygon");
+    await page.locator("[data-testid=save-opening]").click();
+    await page.locator("[data-testid=notice-success]", { hasText: "Saved the opening" }).waitFor();
+    expect(await page.locator("[data-testid=openings-file]").getAttribute("data-path")).toBe(
+      "openings/office_1.txt",
+    );
+    const saved = join(server.dataDir, "openings", "office_1.txt");
+    expect(existsSync(saved)).toBe(true);
+    const lines = readFileSync(saved, "utf8")
+      .split("\n")
+      .filter((l) => /^\s*-?\d/.test(l));
+    expect(lines.length).toBe(3);
+
+    await page.locator("[data-testid=btn-compute]").click();
+    await page
+      .locator("[data-testid=openings-used]", { hasText: "openings/office_1.txt" })
+      .waitFor({ timeout: 60_000 });
+    await occlusionLevel();
+    await screenshot(page, "04-opening-saved-and-used");
+  });
+
+  test("evaluates the scan against the ground truth and shows the tables", async () => {
+    await page.locator("[data-testid=btn-evaluate]").click();
+    await page.locator("[data-testid=evaluate-dialog]").waitFor();
+    expect(await page.locator("[data-testid=eval-ground-truth]").inputValue()).toBe(ROOM);
+    expect(await page.locator("[data-testid=eval-prediction]").inputValue()).toMatch(
+      /\.scan\.ply$/,
+    );
+    await page.locator("[data-testid=eval-run]").click();
+    await page.locator("[data-testid=eval-table] tbody tr").first().waitFor({ timeout: 60_000 });
+    expect(await page.locator("[data-testid=eval-table] tbody tr").count()).toBeGreaterThan(5);
+    expect(await page.locator("[data-testid=confusion-matrix]").isVisible()).toBe(true);
+    const miou = Number(await page.locator("[data-testid=miou]").getAttribute("data-value"));
+    expect(miou).toBeGreaterThan(0);
+    expect(miou).toBeLessThanOrEqual(1);
+    await screenshot(page, "05-evaluation");
+    await page.locator("[data-testid=tab-study]").click();
+    expect(await page.locator("[data-testid=study-scatter] circle").count()).toBe(1);
+    await screenshot(page, "05-study-scatter");
+  });
+
+  test("extracts polygons, estimates a mesh and runs the study, when the server has them", async () => {
+    const available = (command: string) =>
+      page.evaluate(
+        (c) => (window as any).__occlusion.app.ctx.client.available(c) as boolean,
+        command,
+      );
+    if (await available("extract_polygons")) {
+      await page.locator("[data-testid=btn-polygons]").click();
+      const planes = page.locator("[data-testid=polygons-card] [data-testid=planes]");
+      await planes.waitFor({ timeout: 60_000 });
+      expect(Number(await planes.getAttribute("data-value"))).toBeGreaterThan(3);
+      await screenshot(page, "06-extracted-polygons");
+    } else {
+      expect(await page.locator("[data-testid=btn-polygons]").isDisabled()).toBe(true);
+    }
+    if (await available("region_growing_occlusion")) {
+      await page.evaluate(() => (window as any).__occlusion.app.ctx.gui.set("cloudMethod", "rgoc"));
+      await page.locator("[data-testid=btn-compute]").click();
+      await page
+        .locator("[data-testid=occlusion-card]", { hasText: "-rgoc" })
+        .waitFor({ timeout: 60_000 });
+      expect(await occlusionLevel()).toBeLessThan(1);
+      await page.locator("[data-testid=colour-bar]").waitFor();
+      await screenshot(page, "06-region-growing-mesh");
+      await page.evaluate(() => (window as any).__occlusion.app.ctx.gui.set("cloudMethod", "poc"));
+    }
+    if (await available("study")) {
+      await page.locator("[data-testid=tab-study]").click();
+      await page.locator("button", { hasText: "Run study on the server" }).click();
+      await expect
+        .poll(() => page.locator("[data-testid=study-scatter] circle[data-series=study]").count(), {
+          timeout: 120_000,
+        })
+        .toBeGreaterThanOrEqual(8);
+      await page.locator("[data-testid=study-correlations]").waitFor();
+      await screenshot(page, "06-study");
+    }
+  });
+
+  test("shows server errors as readable messages", async () => {
+    // A corrupt upload: the server answers input_error, the viewer says so.
+    await page.locator("[data-testid=upload-input]").setInputFiles({
+      name: "broken.ply",
+      mimeType: "application/octet-stream",
+      buffer: Buffer.from(
+        "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nend_header\n1\nnot-a-number\n",
+      ),
+    });
+    const upload = page.locator("[data-testid=notice-error]", { hasText: "input_error" });
+    await upload.waitFor();
+    expect(await upload.textContent()).toContain("broken.ply");
+    // A path outside the data directory.
+    await page.locator("[data-testid=btn-evaluate]").click();
+    await page.locator("[data-testid=eval-prediction]").fill("../../etc/passwd");
+    await page.locator("[data-testid=eval-run]").click();
+    const outside = page.locator("[data-testid=notice-error]", { hasText: "path_outside_data" });
+    await outside.waitFor();
+    expect(await outside.textContent()).toContain("outside the data directory");
+    await screenshot(page, "06-server-errors");
+    // The viewer keeps working afterwards.
+    expect(await page.locator("[data-testid=connection]").getAttribute("data-state")).toBe(
+      "online",
+    );
+  });
+
+  test("uploads a dropped text cloud and shows it", async () => {
+    const lines: string[] = [];
+    for (let i = 0; i < 2000; ++i) {
+      const t = (i / 2000) * Math.PI * 2 * 13;
+      const z = (i / 2000) * 2 - 1;
+      const r = Math.sqrt(1 - z * z);
+      lines.push(
+        `${(r * Math.cos(t)).toFixed(4)} ${(r * Math.sin(t)).toFixed(4)} ${z.toFixed(4)} ${i % 256} 120 ${255 - (i % 256)}`,
+      );
+    }
+    const dataTransfer = await page.evaluateHandle(
+      (text) => {
+        const transfer = new DataTransfer();
+        transfer.items.add(new File([text], "my_sphere.txt", { type: "text/plain" }));
+        return transfer;
+      },
+      lines.join("\n") + "\n",
+    );
+    await page.dispatchEvent("body", "dragenter", { dataTransfer });
+    expect(await page.locator("[data-testid=drop-overlay]").isVisible()).toBe(true);
+    await page.dispatchEvent("body", "drop", { dataTransfer });
+    await expect
+      .poll(() => page.locator("[data-testid=status-scene]").textContent(), { timeout: 30_000 })
+      .toContain("uploads/my_sphere.txt — 2,000 points");
+    expect(existsSync(join(server.dataDir, "uploads", "my_sphere.txt"))).toBe(true);
+    const { foreground, total } = await canvasForeground(page, "07-dropped-upload");
+    expect(foreground / total).toBeGreaterThan(0.01);
+    await screenshot(page, "07-dropped-upload-page");
+  });
+
+  test("no uncaught errors in the page", () => {
+    const unexpected = problems.filter(
+      (p) => !/input_error|path_outside_data|GPU stall|Failed to load resource/.test(p),
+    );
+    expect(unexpected).toEqual([]);
+  });
+});
