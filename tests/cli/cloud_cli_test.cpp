@@ -12,7 +12,9 @@ namespace occlusion {
 namespace {
 
 using testing::CliRun;
+using testing::parse_json;
 using testing::run_cli;
+using testing::run_json;
 using testing::TempDir;
 
 const std::string kSource = OCCLUSION_SOURCE_DIR;
@@ -22,21 +24,6 @@ const std::string kOpenings = "'" + kSource + "/files/s3dis_synthetic/openings.t
 const std::string kRealScan = "'" + kSource + "/../shared/data/room_scan1.pcd'";
 // The sample office is sampled every 6.5 cm: spheres of 6 cm close the surfaces.
 const std::string kClosedSurfaces = " --point-radius 0.06";
-
-Json::Value parse_json(const std::string& text) {
-  Json::Value value;
-  Json::CharReaderBuilder builder;
-  std::string errors;
-  std::istringstream in(text);
-  EXPECT_TRUE(Json::parseFromStream(builder, in, &value, &errors)) << errors << "\n" << text;
-  return value;
-}
-
-Json::Value run_json(const std::string& args) {
-  const CliRun run = run_cli(args + " --json -q");
-  EXPECT_EQ(run.exit_code, 0) << args << "\n" << run.err;
-  return parse_json(run.out);
-}
 
 std::size_t class_points(const Json::Value& classes, const std::string& name,
                          const char* field = "points") {

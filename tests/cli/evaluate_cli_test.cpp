@@ -16,7 +16,9 @@ namespace occlusion {
 namespace {
 
 using testing::CliRun;
+using testing::parse_json;
 using testing::run_cli;
+using testing::run_json;
 using testing::TempDir;
 
 const std::string kSource = OCCLUSION_SOURCE_DIR;
@@ -58,21 +60,6 @@ std::string chairs_as_tables(const TempDir& dir) {
   const std::string path = dir.file("office_1.labels");
   write_label_file(path, predicted);
   return path;
-}
-
-Json::Value parse_json(const std::string& text) {
-  Json::Value value;
-  Json::CharReaderBuilder builder;
-  std::string errors;
-  std::istringstream in(text);
-  EXPECT_TRUE(Json::parseFromStream(builder, in, &value, &errors)) << errors << "\n" << text;
-  return value;
-}
-
-Json::Value run_json(const std::string& args) {
-  const CliRun run = run_cli(args + " --json -q");
-  EXPECT_EQ(run.exit_code, 0) << args << "\n" << run.err;
-  return parse_json(run.out);
 }
 
 const Json::Value& class_entry(const Json::Value& json, std::int32_t id) {

@@ -12,20 +12,13 @@ namespace occlusion {
 namespace {
 
 using testing::CliRun;
+using testing::parse_json;
 using testing::run_cli;
+using testing::run_json;
 using testing::TempDir;
 
 const std::string kSource = OCCLUSION_SOURCE_DIR;
 const std::string kCornell = "'" + kSource + "/files/cornell_box/CornellBox-Original.obj'";
-
-Json::Value parse_json(const std::string& text) {
-  Json::Value value;
-  Json::CharReaderBuilder builder;
-  std::string errors;
-  std::istringstream in(text);
-  EXPECT_TRUE(Json::parseFromStream(builder, in, &value, &errors)) << errors << "\n" << text;
-  return value;
-}
 
 TEST(Cli, HelpAndUsage) {
   const CliRun help = run_cli("--help");

@@ -13,27 +13,14 @@ namespace occlusion {
 namespace {
 
 using testing::CliRun;
+using testing::parse_json;
 using testing::read_text;
 using testing::run_cli;
+using testing::run_json;
 using testing::TempDir;
 
 const std::string kSource = OCCLUSION_SOURCE_DIR;
 const std::string kRealScan = "'" + kSource + "/../shared/data/room_scan1.pcd'";
-
-Json::Value parse_json(const std::string& text) {
-  Json::Value value;
-  Json::CharReaderBuilder builder;
-  std::string errors;
-  std::istringstream in(text);
-  EXPECT_TRUE(Json::parseFromStream(builder, in, &value, &errors)) << errors << "\n" << text;
-  return value;
-}
-
-Json::Value run_json(const std::string& args) {
-  const CliRun run = run_cli(args + " --json -q");
-  EXPECT_EQ(run.exit_code, 0) << args << "\n" << run.err;
-  return parse_json(run.out);
-}
 
 // A deterministic jitter in [-0.5, 0.5) (splitmix64), so that the synthetic
 // scan is not a perfect grid, whose symmetric neighbourhoods real scans lack.

@@ -1,5 +1,7 @@
 #include "run_cli.hpp"
 
+#include <gtest/gtest.h>
+#include <json/reader.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -34,6 +36,21 @@ TempDir::~TempDir() {
 
 void TempDir::write(const std::string& name, const std::string& text) const {
   std::ofstream(file(name), std::ios::binary) << text;
+}
+
+Json::Value parse_json(const std::string& text) {
+  Json::Value value;
+  Json::CharReaderBuilder builder;
+  std::string errors;
+  std::istringstream in(text);
+  EXPECT_TRUE(Json::parseFromStream(builder, in, &value, &errors)) << errors << "\n" << text;
+  return value;
+}
+
+Json::Value run_json(const std::string& arguments) {
+  const CliRun run = run_cli(arguments + " --json -q");
+  EXPECT_EQ(run.exit_code, 0) << arguments << "\n" << run.err;
+  return parse_json(run.out);
 }
 
 CliRun run_cli(const std::string& arguments) {

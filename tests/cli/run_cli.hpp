@@ -1,6 +1,8 @@
 #pragma once
 // Runs the built `occlusion` binary as a user would, capturing its output.
 
+#include <json/value.h>
+
 #include <string>
 
 namespace occlusion::testing {
@@ -13,6 +15,11 @@ struct CliRun {
 
 // `arguments` is appended to the binary's path as shell words.
 CliRun run_cli(const std::string& arguments);
+
+// The one JSON object of a --json run; a parse failure fails the test.
+Json::Value parse_json(const std::string& text);
+// run_cli(args + " --json -q"), expecting exit code 0, parsed.
+Json::Value run_json(const std::string& arguments);
 
 // A fresh, empty directory under the system temp dir, removed by the destructor.
 class TempDir {

@@ -12,21 +12,13 @@ namespace occlusion {
 namespace {
 
 using testing::CliRun;
+using testing::parse_json;
 using testing::run_cli;
+using testing::run_json;
 using testing::TempDir;
 
 const std::string kConfig =
     "study --config '" + std::string(OCCLUSION_SOURCE_DIR) + "/config/study.json'";
-
-Json::Value parse(const std::string& text) {
-  Json::Value json;
-  std::istringstream stream(text);
-  std::string errors;
-  EXPECT_TRUE(Json::parseFromStream(Json::CharReaderBuilder(), stream, &json, &errors))
-      << errors << "\n"
-      << text;
-  return json;
-}
 
 TEST(StudyCli, ASegmenterCommandLeavesStdoutToTheJson) {
   const TempDir dir;
@@ -38,7 +30,7 @@ TEST(StudyCli, ASegmenterCommandLeavesStdoutToTheJson) {
               "' --segmenter 'echo chatter; cp {input} {output}' "
               "--segmenter-output ply --json -q");
   ASSERT_EQ(run.exit_code, 0) << run.err;
-  const Json::Value json = parse(run.out);
+  const Json::Value json = parse_json(run.out);
   EXPECT_EQ(json["job"].asString(), "study");
   EXPECT_EQ(json["runs_computed"].asUInt(), 1u);
   ASSERT_EQ(json["rows"].size(), 1u);
@@ -50,7 +42,7 @@ TEST(StudyCli, ASegmenterCommandLeavesStdoutToTheJson) {
   const CliRun merged = run_cli("study merge '" + dir.file("merged") + "' '" +
                                 dir.file("study/study.csv") + "' --json");
   ASSERT_EQ(merged.exit_code, 0) << merged.err;
-  EXPECT_EQ(parse(merged.out)["rows"].size(), 1u);
+  EXPECT_EQ(parse_json(merged.out)["rows"].size(), 1u);
   EXPECT_TRUE(std::filesystem::exists(dir.file("merged/study.md")));
 }
 
