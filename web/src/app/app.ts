@@ -58,7 +58,13 @@ export class App {
   private everConnected = false;
 
   constructor() {
-    const notices = new Notices(byId("notices"));
+    const notices = new Notices(byId("notices"), {
+      stage: byId("stage"),
+      gui: byId("gui"),
+      stats: byId("stats"),
+      legend: byId("legend"),
+      jobs: byId("jobs"),
+    });
     const viewer = new Viewer(byId("canvas-host"));
     this.stats = new StatsPanel(byId("stats"));
     viewer.hooks.after = () => this.stats.frame();

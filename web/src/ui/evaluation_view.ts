@@ -82,7 +82,14 @@ export function evaluationCards(report: EvaluationReport): HTMLElement[] {
   );
   const perClass = card("Per class", [
     table(
-      ["class", "IoU", "F1", "precision", "recall", "support"],
+      [
+        "class",
+        { label: "IoU", title: "intersection over union" },
+        { label: "F1", title: "F1 score" },
+        { label: "prec.", title: "precision" },
+        "recall",
+        { label: "support", title: "ground-truth points of the class" },
+      ],
       classes.map((c) => [
         c.name,
         percent(c.iou ?? undefined),
@@ -92,6 +99,7 @@ export function evaluationCards(report: EvaluationReport): HTMLElement[] {
         integer(c.support),
       ]),
       "eval-table",
+      true,
     ),
   ]);
   const matrix = card("Confusion matrix (row-normalised colour)", [confusionHeatmap(report)]);

@@ -129,36 +129,57 @@ export function facts(pairs: [string, string][]): HTMLElement {
   );
 }
 
+/** A column heading, optionally abbreviated with the full wording as its tooltip. */
+export type Heading = string | { label: string; title: string };
+
+/**
+ * A table of figures. `dense` (tighter cells, a smaller font, no wrapping) is for
+ * tables with many numeric columns that must fit the panel's width.
+ */
 export function table(
-  head: string[],
+  head: Heading[],
   rows: (string | HTMLElement)[][],
   testid?: string,
+  dense = false,
 ): HTMLElement {
+  const pad = dense ? "whitespace-nowrap px-1 py-1" : "px-1.5 py-1";
   return h("div", { class: "overflow-x-auto" }, [
-    h("table", { class: "w-full text-xs tabular-nums", ...(testid ? { testid } : {}) }, [
-      h("thead", {}, [
-        h(
-          "tr",
-          { class: "text-left text-slate-400" },
-          head.map((c, i) =>
-            h("th", { class: `px-1.5 py-1 font-medium ${i ? "text-right" : ""}`, text: c }),
-          ),
-        ),
-      ]),
-      h(
-        "tbody",
-        {},
-        rows.map((row) =>
+    h(
+      "table",
+      {
+        class: `w-full ${dense ? "text-[11px]" : "text-xs"} tabular-nums`,
+        ...(testid ? { testid } : {}),
+      },
+      [
+        h("thead", {}, [
           h(
             "tr",
-            { class: "border-t border-slate-800" },
-            row.map((c, i) =>
-              h("td", { class: `px-1.5 py-1 ${i ? "text-right" : "text-slate-200"}` }, [c]),
+            { class: "text-left text-slate-400" },
+            head.map((c, i) => {
+              const { label, title } = typeof c === "string" ? { label: c, title: "" } : c;
+              return h("th", {
+                class: `${pad} font-medium ${i ? "text-right" : ""} ${title ? "cursor-help" : ""}`,
+                text: label,
+                title,
+              });
+            }),
+          ),
+        ]),
+        h(
+          "tbody",
+          {},
+          rows.map((row) =>
+            h(
+              "tr",
+              { class: "border-t border-slate-800" },
+              row.map((c, i) =>
+                h("td", { class: `${pad} ${i ? "text-right" : "text-slate-200"}` }, [c]),
+              ),
             ),
           ),
         ),
-      ),
-    ]),
+      ],
+    ),
   ]);
 }
 
