@@ -241,12 +241,7 @@ Json::Value to_json(const CloudOcclusionReport& report) {
   parameters["threads"] = q.threads;
   json["parameters"] = parameters;
 
-  Json::Value octree(Json::objectValue);
-  octree["inner_nodes"] = Json::UInt64(report.result.octree.inner_nodes);
-  octree["leaves"] = Json::UInt64(report.result.octree.leaves);
-  octree["depth"] = report.result.octree.depth;
-  octree["memory_bytes"] = Json::UInt64(report.result.octree.memory_bytes);
-  json["octree"] = octree;
+  json["octree"] = to_json(report.result.octree);
 
   Json::Value timings(Json::objectValue);
   timings["load_seconds"] = report.load_seconds;

@@ -20,6 +20,16 @@ Json::Value to_json(const std::optional<double>& value) {
   return value ? Json::Value(*value) : Json::Value();
 }
 
+Json::Value to_json(const OctreeStats& stats) {
+  Json::Value json(Json::objectValue);
+  json["inner_nodes"] = Json::UInt64(stats.inner_nodes);
+  json["leaves"] = Json::UInt64(stats.leaves);
+  json["depth"] = stats.depth;
+  json["largest_leaf"] = Json::UInt64(stats.largest_leaf);
+  json["memory_bytes"] = Json::UInt64(stats.memory_bytes);
+  return json;
+}
+
 std::string format_json(const Json::Value& value) {
   Json::StreamWriterBuilder builder;
   builder["indentation"] = "  ";

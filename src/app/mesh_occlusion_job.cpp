@@ -144,13 +144,7 @@ Json::Value to_json(const MeshOcclusionReport& report) {
   parameters["threads"] = q.threads;
   json["parameters"] = parameters;
 
-  Json::Value octree(Json::objectValue);
-  octree["inner_nodes"] = Json::UInt64(r.octree.inner_nodes);
-  octree["leaves"] = Json::UInt64(r.octree.leaves);
-  octree["depth"] = r.octree.depth;
-  octree["largest_leaf"] = Json::UInt64(r.octree.largest_leaf);
-  octree["memory_bytes"] = Json::UInt64(r.octree.memory_bytes);
-  json["octree"] = octree;
+  json["octree"] = to_json(r.octree);
 
   Json::Value timings(Json::objectValue);
   timings["load_seconds"] = report.load_seconds;
