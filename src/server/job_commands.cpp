@@ -3,7 +3,6 @@
 
 #include <json/value.h>
 
-#include <type_traits>
 #include <utility>
 
 #include "command_table.hpp"
@@ -24,22 +23,13 @@ namespace occlusion::server {
 
 namespace {
 
-template <class T, class = void>
-struct HasOut : std::false_type {};
-template <class T>
-struct HasOut<T, std::void_t<decltype(std::declval<T&>().out)>> : std::true_type {};
-
 template <class Request, class Report>
 Command job_command(const std::string& name, const JobParams& spec,
                     Report (*run)(const Request&, const Progress&),
                     void (*send_frames)(CommandContext&, const Report&)) {
   return Command{name, Where::kWorker, [=](CommandContext& context) {
-                   const JobConfig job = job_config(context.params, spec, context.server.root);
                    Request request;
-                   apply_config(job.config, request);
-                   if constexpr (HasOut<Request>::value) {
-                     if (job.no_out) request.out.clear();
-                   }
+                   apply_config(job_config(context.params, spec, context.server.root), request);
                    const Report report = run(request, context.progress());
                    context.progress().check_cancel();
                    if (send_frames != nullptr) send_frames(context, report);

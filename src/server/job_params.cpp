@@ -24,13 +24,8 @@ bool is_path_key(const std::string& key) {
   return key == "path" || key == "out" || ends_with(key, "_path");
 }
 
-JobConfig job_config(const Json::Value& params, const JobParams& spec, const DataRoot& root) {
+Config job_config(const Json::Value& params, const JobParams& spec, const DataRoot& root) {
   Json::Value body = params;
-  JobConfig job;
-  if (body.isMember("out") && body["out"] == "") {
-    body.removeMember("out");
-    job.no_out = true;
-  }
   // A wrong type is left for the config check to name; "" means "none".
   const auto resolve = [&root](Json::Value& value, bool must_exist) {
     if (value.isString() && !value.asString().empty()) {
@@ -45,15 +40,15 @@ JobConfig job_config(const Json::Value& params, const JobParams& spec, const Dat
       for (auto& item : value) resolve(item, true);
     }
   }
-  if (spec.default_out && !job.no_out && !body.isMember("out")) {
+  // "out": "" stays as it is: the config reads it as "no output files".
+  if (spec.default_out && !body.isMember("out")) {
     body["out"] = root.resolve("out", false).string();
   }
 
   Json::Value file(Json::objectValue);
   file["occlusion"][spec.section] = body;
   // Relative paths (none are left, but the rule stays right) are data-relative.
-  job.config = config_from_json(file, root.path().string(), "params");
-  return job;
+  return config_from_json(file, root.path().string(), "params");
 }
 
 }  // namespace occlusion::server

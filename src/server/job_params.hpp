@@ -25,17 +25,10 @@ struct JobParams {
   std::vector<std::string> path_list_keys;  // lists of input paths, e.g. "ground_truth"
 };
 
-struct JobConfig {
-  Config config;
-  // "out": "" asks for no output files. The config would resolve "" to its
-  // folder, so the key is taken out and the caller clears the request's out.
-  bool no_out = false;
-};
-
 // The params as a Config holding the one section `spec.section`. Path keys
 // (is_path_key and spec.path_list_keys) are resolved inside the data
 // directory first (ProtocolError path_outside_data, or not_found for a
 // missing input). Throws UsageError for what a config file would be refused for.
-JobConfig job_config(const Json::Value& params, const JobParams& spec, const DataRoot& root);
+Config job_config(const Json::Value& params, const JobParams& spec, const DataRoot& root);
 
 }  // namespace occlusion::server
