@@ -29,4 +29,10 @@ inline std::uint64_t parse_unsigned(const std::string& flag, const std::string& 
   return value;
 }
 
+// A thread count, capped at 1024 like the CLI's --threads.
+inline unsigned parse_threads(const std::string& flag, const std::string& text) {
+  const std::uint64_t threads = parse_unsigned(flag, text);
+  return static_cast<unsigned>(threads < 1024 ? threads : 1024);
+}
+
 }  // namespace occlusion::bench

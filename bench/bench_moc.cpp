@@ -55,8 +55,7 @@ Options parse(int argc, char** argv) {
     } else if (arg == "--samples") {
       o.samples = parse_unsigned(arg, flag_value(argc, argv, i));
     } else if (arg == "--threads") {
-      o.threads = static_cast<unsigned>(
-          std::min<std::uint64_t>(parse_unsigned(arg, flag_value(argc, argv, i)), 1024));
+      o.threads = parse_threads(arg, flag_value(argc, argv, i));
     } else if (arg == "--seed") {
       o.seed = parse_unsigned(arg, flag_value(argc, argv, i));
     } else if (arg == "--cli") {

@@ -63,8 +63,7 @@ Options parse(int argc, char** argv) {
     } else if (arg == "--rays-per-vp") {
       o.rays_per_vp = parse_unsigned(arg, flag_value(argc, argv, i));
     } else if (arg == "--threads") {
-      o.threads = static_cast<unsigned>(
-          std::min<std::uint64_t>(parse_unsigned(arg, flag_value(argc, argv, i)), 1024));
+      o.threads = parse_threads(arg, flag_value(argc, argv, i));
     } else if (arg == "--seed") {
       o.seed = parse_unsigned(arg, flag_value(argc, argv, i));
     } else if (arg == "--cli") {

@@ -25,6 +25,7 @@
 namespace {
 
 using occlusion::bench::flag_value;
+using occlusion::bench::parse_threads;
 using occlusion::bench::parse_unsigned;
 using occlusion::bench::UsageError;
 
@@ -52,8 +53,7 @@ Options parse(int argc, char** argv) {
     } else if (arg == "--triangles") {
       o.triangles = parse_unsigned(arg, flag_value(argc, argv, i));
     } else if (arg == "--threads") {
-      o.threads = static_cast<unsigned>(
-          std::min<std::uint64_t>(parse_unsigned(arg, flag_value(argc, argv, i)), 1024));
+      o.threads = parse_threads(arg, flag_value(argc, argv, i));
     } else if (arg == "--seed") {
       o.seed = parse_unsigned(arg, flag_value(argc, argv, i));
     } else if (arg == "--max-cluster-size") {
