@@ -10,34 +10,13 @@
 
 #include "occlusion/core/octree.hpp"
 #include "occlusion/core/parallel.hpp"
+#include "octree_packet.hpp"
 #include "octree_slab.hpp"
+#include "ray_order.hpp"
 
 namespace occlusion {
 
 namespace octree_detail {
-
-// Deep enough for any scene: the cell edge halves at each level, so 32 levels
-// reach 1e-10 of the scene size, below float resolution.
-inline constexpr int kMaxDepthLimit = 32;
-inline constexpr std::size_t kStackSize = 8 * (kMaxDepthLimit + 2);
-
-// kRankedMask[s][m]: the bit mask m with bit k moved to bit k ^ s.
-struct RankedMaskTable {
-  std::uint8_t table[8][256];
-  constexpr RankedMaskTable() : table{} {
-    for (int s = 0; s < 8; ++s) {
-      for (int m = 0; m < 256; ++m) {
-        int ranked = 0;
-        for (int k = 0; k < 8; ++k) {
-          if (m & (1 << k)) ranked |= 1 << (k ^ s);
-        }
-        table[s][m] = static_cast<std::uint8_t>(ranked);
-      }
-    }
-  }
-  constexpr const std::uint8_t* operator[](int s) const { return table[s]; }
-};
-inline constexpr RankedMaskTable kRankedMask{};
 
 // A child under construction: a leaf range of shapes or an inner node.
 struct BuiltChild {
@@ -214,6 +193,11 @@ Octree<Shape>::Octree(std::vector<Shape> shapes, const OctreeOptions& options) {
   if (shapes.size() >= kNoPrimitive) {
     throw std::invalid_argument("octree: too many primitives");
   }
+  traversal_ = options.traversal;
+  if (traversal_ == OctreeTraversal::kAuto) traversal_ = octree_detail::best_packet_traversal();
+  if (!cpu_supports(traversal_)) {
+    throw std::invalid_argument("octree: this build or CPU cannot run the traversal asked for");
+  }
   const auto start = std::chrono::steady_clock::now();
   stats_ = OctreeStats{};
   stats_.primitives = shapes.size();
@@ -321,29 +305,67 @@ bool Octree<Shape>::occluded(const Ray& ray, PrimitiveId ignore_id) const {
 }
 
 namespace octree_detail {
-inline constexpr std::size_t kBatchGrain = 512;
+// Rays per parallel chunk: each chunk is sorted by direction on its own, and
+// larger chunks give more coherent packets at a linear cost.
+inline constexpr std::size_t kBatchGrain = 2048;
+}  // namespace octree_detail
+
+template <class Shape>
+template <bool kAnyHit>
+void Octree<Shape>::trace_batch(const Ray* rays, std::size_t count, const PrimitiveId* ignore_ids,
+                                std::optional<Hit>* hits, std::uint8_t* occluded_out,
+                                unsigned threads) const {
+  const auto single = [&](std::size_t i) {
+    const std::optional<Hit> hit =
+        traverse<kAnyHit>(rays[i], ignore_ids ? ignore_ids[i] : kNoPrimitive);
+    if constexpr (kAnyHit) {
+      occluded_out[i] = hit ? 1 : 0;
+    } else {
+      hits[i] = hit;
+    }
+  };
+  if (traversal_ == OctreeTraversal::kSingle) {
+    parallel_for(count, octree_detail::kBatchGrain, threads, [&](std::size_t b, std::size_t e) {
+      for (std::size_t i = b; i < e; ++i) single(i);
+    });
+    return;
+  }
+#if OCCLUSION_PACKETS
+  octree_detail::TreeView<Shape> view;
+  if (!nodes_.empty()) view = {nodes_.data(), shapes_.data(), ids_.data()};
+  const octree_detail::PacketQuery query{rays, ignore_ids, hits, occluded_out};
+  parallel_for(count, octree_detail::kBatchGrain, threads, [&](std::size_t b, std::size_t e) {
+    thread_local std::vector<std::uint32_t> order, scratch;
+    order.resize(e - b);
+    order_by_direction(rays, b, e, order.data(), scratch);
+    switch (traversal_) {
+      case OctreeTraversal::kPacketAvx512:
+        octree_detail::packet_avx512::trace_packets<Shape, kAnyHit>(view, query, order.data(),
+                                                                    e - b);
+        break;
+      case OctreeTraversal::kPacketAvx2:
+        octree_detail::packet_avx2::trace_packets<Shape, kAnyHit>(view, query, order.data(), e - b);
+        break;
+      default:
+        octree_detail::packet_sse2::trace_packets<Shape, kAnyHit>(view, query, order.data(), e - b);
+        break;
+    }
+  });
+#endif
 }
 
 template <class Shape>
 void Octree<Shape>::intersect_batch(const Ray* rays, std::size_t count,
                                     const PrimitiveId* ignore_ids, std::optional<Hit>* hits,
                                     unsigned threads) const {
-  parallel_for(count, octree_detail::kBatchGrain, threads, [&](std::size_t b, std::size_t e) {
-    for (std::size_t i = b; i < e; ++i) {
-      hits[i] = intersect(rays[i], ignore_ids ? ignore_ids[i] : kNoPrimitive);
-    }
-  });
+  trace_batch<false>(rays, count, ignore_ids, hits, nullptr, threads);
 }
 
 template <class Shape>
 void Octree<Shape>::occluded_batch(const Ray* rays, std::size_t count,
                                    const PrimitiveId* ignore_ids, std::uint8_t* occluded_out,
                                    unsigned threads) const {
-  parallel_for(count, octree_detail::kBatchGrain, threads, [&](std::size_t b, std::size_t e) {
-    for (std::size_t i = b; i < e; ++i) {
-      occluded_out[i] = occluded(rays[i], ignore_ids ? ignore_ids[i] : kNoPrimitive) ? 1 : 0;
-    }
-  });
+  trace_batch<true>(rays, count, ignore_ids, nullptr, occluded_out, threads);
 }
 
 }  // namespace occlusion

@@ -17,6 +17,29 @@
 
 namespace occlusion::octree_detail {
 
+// Deep enough for any scene: the cell edge halves at each level, so 32 levels
+// reach 1e-10 of the scene size, below float resolution.
+inline constexpr int kMaxDepthLimit = 32;
+inline constexpr std::size_t kStackSize = 8 * (kMaxDepthLimit + 2);
+
+// kRankedMask[s][m]: the bit mask m with bit k moved to bit k ^ s.
+struct RankedMaskTable {
+  std::uint8_t table[8][256];
+  constexpr RankedMaskTable() : table{} {
+    for (int s = 0; s < 8; ++s) {
+      for (int m = 0; m < 256; ++m) {
+        int ranked = 0;
+        for (int k = 0; k < 8; ++k) {
+          if (m & (1 << k)) ranked |= 1 << (k ^ s);
+        }
+        table[s][m] = static_cast<std::uint8_t>(ranked);
+      }
+    }
+  }
+  constexpr const std::uint8_t* operator[](int s) const { return table[s]; }
+};
+inline constexpr RankedMaskTable kRankedMask{};
+
 #if defined(__SSE2__)
 
 struct SlabRay {

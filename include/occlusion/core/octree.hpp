@@ -16,7 +16,9 @@
 // `ignore_id` skips one primitive (a sample's own triangle). Primitive ids are
 // the indices of the vector the tree was built from.
 // Batch versions run on `threads` threads (0 = all cores) and return exactly
-// what the single-ray calls return for each ray.
+// what the single-ray calls return for each ray. They sort each chunk of rays
+// by direction and trace them in packets (OctreeTraversal), so they are
+// fastest when rays that share an endpoint (a viewpoint) are passed together.
 
 #include <cstddef>
 #include <cstdint>
@@ -30,6 +32,17 @@
 
 namespace occlusion {
 
+// How the batch queries trace. All give the same answers; they differ in speed.
+enum class OctreeTraversal {
+  kAuto,          // packets, with the widest SIMD this CPU has
+  kSingle,        // one ray at a time (the reference for the packet paths)
+  kPacketSse2,    // eight rays at a time, SSE2 (the x86-64 baseline)
+  kPacketAvx2,    // eight rays at a time, AVX2
+  kPacketAvx512,  // sixteen rays at a time, AVX-512F
+};
+// Whether this build and CPU can run `traversal` (the octree refuses one it can't).
+bool cpu_supports(OctreeTraversal traversal);
+
 struct OctreeOptions {
   // Stop subdividing a cell that holds at most this many primitives.
   std::size_t max_leaf_size = 4;
@@ -41,6 +54,7 @@ struct OctreeOptions {
   // The config's `enable_acceleration`: false puts every primitive in one leaf,
   // which makes every query a brute-force loop (a reference and a fallback).
   bool enable_acceleration = true;
+  OctreeTraversal traversal = OctreeTraversal::kAuto;
 };
 
 struct OctreeStats {
@@ -95,6 +109,9 @@ class Octree {
  private:
   template <bool kAnyHit>
   std::optional<Hit> traverse(const Ray& ray, PrimitiveId ignore_id) const;
+  template <bool kAnyHit>
+  void trace_batch(const Ray* rays, std::size_t count, const PrimitiveId* ignore_ids,
+                   std::optional<Hit>* hits, std::uint8_t* occluded, unsigned threads) const;
 
   std::vector<OctreeNode> nodes_;           // nodes_[0] is the root
   std::vector<Shape> shapes_;               // in leaf order
@@ -102,6 +119,7 @@ class Octree {
   std::vector<std::uint32_t> position_of_;  // inverse of ids_
   Aabb bounds_;
   OctreeStats stats_;
+  OctreeTraversal traversal_ = OctreeTraversal::kAuto;  // resolved: never kAuto
 };
 
 // The kernel the triangle octree calls.

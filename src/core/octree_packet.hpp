@@ -1,0 +1,67 @@
+#pragma once
+// Packet traversal for the octree's batch queries: rays are put in a coherent
+// order (ray_order.hpp), then traced 8 at a time with SSE2 or AVX2, or 16 at a
+// time with AVX-512, whichever the CPU has. See octree_packet_body.inc for how a packet goes down.
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+
+#include "occlusion/core/octree.hpp"
+#include "octree_slab.hpp"
+
+#if defined(__x86_64__) && defined(__SSE2__) && defined(__GNUC__)
+#define OCCLUSION_PACKETS 1
+#include "octree_packet_lanes.hpp"
+#else
+#define OCCLUSION_PACKETS 0
+#endif
+
+namespace occlusion::octree_detail {
+
+template <class Shape>
+struct TreeView {
+  const OctreeNode* nodes = nullptr;  // null for an empty tree
+  const Shape* shapes = nullptr;
+  const PrimitiveId* ids = nullptr;
+};
+
+// A batch query: inputs, and one of the two outputs.
+struct PacketQuery {
+  const Ray* rays = nullptr;
+  const PrimitiveId* ignore_ids = nullptr;  // may be null
+  std::optional<Hit>* hits = nullptr;       // closest hit
+  std::uint8_t* occluded = nullptr;         // any hit
+};
+
+#if OCCLUSION_PACKETS
+
+namespace packet_sse2 {
+#include "octree_packet_body.inc"
+}  // namespace packet_sse2
+
+#pragma GCC push_options
+#pragma GCC target("avx2")
+namespace packet_avx2 {
+#include "octree_packet_body.inc"
+}  // namespace packet_avx2
+#pragma GCC pop_options
+
+#pragma GCC push_options
+#pragma GCC target("avx512f")
+// GCC 12 flags the deliberately undefined pass-through operand of its own
+// AVX-512 intrinsics (_mm512_undefined_ps) as maybe uninitialised.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+namespace packet_avx512 {
+#include "octree_packet_body.inc"
+}  // namespace packet_avx512
+#pragma GCC diagnostic pop
+#pragma GCC pop_options
+
+#endif
+
+// The packet width the CPU supports best; kSingle where packets are not built.
+OctreeTraversal best_packet_traversal();
+
+}  // namespace occlusion::octree_detail
