@@ -305,9 +305,15 @@ bool Octree<Shape>::occluded(const Ray& ray, PrimitiveId ignore_id) const {
 }
 
 namespace octree_detail {
-// Rays per parallel chunk: each chunk is sorted by direction on its own, and
-// larger chunks give more coherent packets at a linear cost.
-inline constexpr std::size_t kBatchGrain = 2048;
+// Rays sorted by direction together. Callers pass rays in a spatially coherent
+// order (a viewpoint's rays together, neighbouring samples together); sorting
+// a window refines that order into packets without mixing far-apart rays that
+// happen to point the same way. bench_moc-like shadow rays, AVX-512, one
+// thread: windows of 64 / 1,024 / 4,096 / 16,384 / 65,536 rays gave 5.6 / 5.6 /
+// 6.0 / 5.4 / 4.6 M rays/s (single rays: 3.5).
+inline constexpr std::size_t kSortWindow = 4096;
+// Rays per parallel chunk: one window.
+inline constexpr std::size_t kBatchGrain = kSortWindow;
 }  // namespace octree_detail
 
 template <class Shape>
@@ -336,19 +342,22 @@ void Octree<Shape>::trace_batch(const Ray* rays, std::size_t count, const Primit
   const octree_detail::PacketQuery query{rays, ignore_ids, hits, occluded_out};
   parallel_for(count, octree_detail::kBatchGrain, threads, [&](std::size_t b, std::size_t e) {
     thread_local std::vector<std::uint32_t> order, scratch;
-    order.resize(e - b);
-    order_by_direction(rays, b, e, order.data(), scratch);
-    switch (traversal_) {
-      case OctreeTraversal::kPacketAvx512:
-        octree_detail::packet_avx512::trace_packets<Shape, kAnyHit>(view, query, order.data(),
-                                                                    e - b);
-        break;
-      case OctreeTraversal::kPacketAvx2:
-        octree_detail::packet_avx2::trace_packets<Shape, kAnyHit>(view, query, order.data(), e - b);
-        break;
-      default:
-        octree_detail::packet_sse2::trace_packets<Shape, kAnyHit>(view, query, order.data(), e - b);
-        break;
+    for (std::size_t window = b; window < e; window += octree_detail::kSortWindow) {
+      const std::size_t window_end = std::min(e, window + octree_detail::kSortWindow);
+      const std::size_t n = window_end - window;
+      order.resize(n);
+      order_by_direction(rays, window, window_end, order.data(), scratch);
+      switch (traversal_) {
+        case OctreeTraversal::kPacketAvx512:
+          octree_detail::packet_avx512::trace_packets<Shape, kAnyHit>(view, query, order.data(), n);
+          break;
+        case OctreeTraversal::kPacketAvx2:
+          octree_detail::packet_avx2::trace_packets<Shape, kAnyHit>(view, query, order.data(), n);
+          break;
+        default:
+          octree_detail::packet_sse2::trace_packets<Shape, kAnyHit>(view, query, order.data(), n);
+          break;
+      }
     }
   });
 #endif

@@ -61,7 +61,7 @@ namespace packet_avx512 {
 
 #endif
 
-// The packet width the CPU supports best; kSingle where packets are not built.
+// What kAuto resolves to on this CPU: the widest packets that pay, else kSingle.
 OctreeTraversal best_packet_traversal();
 
 }  // namespace occlusion::octree_detail

@@ -34,9 +34,9 @@ namespace occlusion {
 
 // How the batch queries trace. All give the same answers; they differ in speed.
 enum class OctreeTraversal {
-  kAuto,          // packets, with the widest SIMD this CPU has
+  kAuto,          // packets with AVX-512 or AVX2 if the CPU has them, else single rays
   kSingle,        // one ray at a time (the reference for the packet paths)
-  kPacketSse2,    // eight rays at a time, SSE2 (the x86-64 baseline)
+  kPacketSse2,    // eight rays at a time, SSE2 (x86-64 baseline; slower than kSingle)
   kPacketAvx2,    // eight rays at a time, AVX2
   kPacketAvx512,  // sixteen rays at a time, AVX-512F
 };
