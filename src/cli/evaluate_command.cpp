@@ -82,10 +82,14 @@ void print_help() {
       "  --json                     print one JSON object (headline: miou)\n"
       "  -q, --quiet                no progress on stderr\n"
       "\n"
-      "Conventions (ScanNet benchmark): ground truth outside the evaluation classes is\n"
-      "skipped; a prediction outside them is a miss of the true class, no class's false\n"
-      "positive; a class with neither ground truth nor predictions has no IoU. mIoU and\n"
-      "mean class accuracy average the classes that have ground truth.\n");
+      "Counting follows the ScanNet benchmark: ground truth outside the evaluation\n"
+      "classes is skipped; a prediction outside them is a miss of the true class, no\n"
+      "class's false positive; a class with neither ground truth nor predictions has no\n"
+      "IoU. Averaging (mean_over) is our own rule by default: mIoU and mean class\n"
+      "accuracy average the classes that have ground truth ('support'). ScanNet's\n"
+      "script also averages in a 0 for a class predicted but absent ('scannet');\n"
+      "Pointcept averages every class, 0 where undefined ('pointcept'). The JSON's\n"
+      "mean_over says which rule; docs/metrics.md has all three.\n");
 }
 
 std::string figure(const std::optional<double>& value) {

@@ -3,6 +3,7 @@
 
 #include "arguments.hpp"
 #include "commands.hpp"
+#include "interrupt.hpp"
 #include "common_options.hpp"
 #include "job_options.hpp"
 #include "occlusion/app/errors.hpp"
@@ -98,6 +99,11 @@ void print_help() {
       "                               evaluation ids, as -eval reads them), e.g.\n"
       "                               'python infer.py {input} {output}'\n"
       "  --segmenter-output EXT       extension of {output}: labels (default), ply, pcd, txt\n"
+      "                               A run whose segmenter fails (exit status, timeout, a\n"
+      "                               prediction that cannot be read) is a 'failed' row; the\n"
+      "                               study goes on, exits 1 at the end, and a resume retries\n"
+      "                               it. Resuming with other parameters is an error naming\n"
+      "                               them (study.parameters.json records them).\n"
       "  --format ply|pcd             format of the scanned clouds in OUT/runs (default ply)\n"
       "  --shard I/N                  make only the runs k with k mod N = I (default 0/1)\n"
       "  --out DIR                    study.csv, study.md, study.svg, study.json, runs/\n"
@@ -125,9 +131,11 @@ std::string figure(const std::optional<double>& value) {
 
 void print_human(const StudyReport& report) {
   if (report.job == "study") {
-    std::printf("occlusion study: %zu runs made, %zu already in study.csv (shard %s of %zu runs)\n",
-                report.runs_computed, report.runs_skipped, report.request.shard.c_str(),
-                report.runs_total);
+    std::printf(
+        "occlusion study: %zu runs made, %zu already in study.csv (shard %s of %zu runs), %zu "
+        "failed\n",
+        report.runs_computed, report.runs_skipped, report.request.shard.c_str(), report.runs_total,
+        report.runs_failed);
   } else {
     std::printf("occlusion study: %zu runs merged from %zu CSV files\n", report.table.rows.size(),
                 report.inputs.size());
@@ -165,9 +173,23 @@ int run_merge(const std::vector<std::string>& args) {
 int run_study_command(const std::vector<std::string>& args) {
   if (!args.empty() && args.front() == "merge") return run_merge({args.begin() + 1, args.end()});
   const StudyCommand command = parse(args);
-  return run_command<StudyReport>(
+  std::size_t failed = 0;
+  const int status = run_command<StudyReport>(
       command.output, "study", print_help,
-      [&](const Progress& progress) { return run_study(command.request, progress); }, print_human);
+      [&](const Progress& progress) {
+        Progress interruptible = progress;
+        interruptible.cancel = cancel_on_interrupt();
+        StudyReport report = run_study(command.request, interruptible);
+        failed = report.runs_failed;
+        return report;
+      },
+      print_human);
+  // The study goes on past a failed run, but must not look like a success.
+  if (status == 0 && failed > 0) {
+    std::fprintf(stderr, "occlusion: %zu runs failed (status 'failed' in study.csv)\n", failed);
+    return 1;
+  }
+  return status;
 }
 
 }  // namespace occlusion::cli
