@@ -149,6 +149,13 @@ void print_human(const StudyReport& report) {
   for (const auto& path : report.outputs) std::printf("  wrote %s\n", path.c_str());
 }
 
+// The study goes on past a failed run, but must not look like a success.
+int failed_status(int status, std::size_t failed) {
+  if (status != 0 || failed == 0) return status;
+  std::fprintf(stderr, "occlusion: %zu runs failed (status 'failed' in study.csv)\n", failed);
+  return 1;
+}
+
 int run_merge(const std::vector<std::string>& args) {
   OutputOptions output;
   OptionTable table("study merge");
@@ -160,12 +167,17 @@ int run_merge(const std::vector<std::string>& args) {
   if (!output.help && positional.size() < 2) {
     throw UsageError("usage: occlusion study merge OUT A.csv [B.csv ...]");
   }
-  return run_command<StudyReport>(
+  std::size_t failed = 0;
+  const int status = run_command<StudyReport>(
       output, "study", print_help,
       [&](const Progress&) {
-        return run_study_merge({positional.begin() + 1, positional.end()}, positional.front());
+        StudyReport report =
+            run_study_merge({positional.begin() + 1, positional.end()}, positional.front());
+        failed = report.runs_failed;
+        return report;
       },
       print_human);
+  return failed_status(status, failed);
 }
 
 }  // namespace
@@ -184,12 +196,7 @@ int run_study_command(const std::vector<std::string>& args) {
         return report;
       },
       print_human);
-  // The study goes on past a failed run, but must not look like a success.
-  if (status == 0 && failed > 0) {
-    std::fprintf(stderr, "occlusion: %zu runs failed (status 'failed' in study.csv)\n", failed);
-    return 1;
-  }
-  return status;
+  return failed_status(status, failed);
 }
 
 }  // namespace occlusion::cli
