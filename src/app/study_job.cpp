@@ -100,8 +100,10 @@ void check_fingerprints(const CsvTable& table, const std::map<std::string, std::
     keys = job::describe_differences(job::row_parameters_of(*before), job::row_parameters_of(now));
     // The configurations' viewpoints are in the fingerprint too.
     for (const auto& name : configurations) {
-      const auto was = job::configuration_of(*before, name), is = job::configuration_of(now, name);
-      if (was != is) keys += std::string(keys.empty() ? "" : ", ") + "configuration '" + name + "'";
+      const Json::Value was = job::configuration_of(*before, name),
+                        is = job::configuration_of(now, name);
+      if (!job::differing_keys(was, is).empty() || was.isNull() != is.isNull())
+        keys += std::string(keys.empty() ? "" : ", ") + "configuration '" + name + "'";
     }
     if (keys.empty()) keys = "none that " + path + " records (was it edited?)";
   } else {
@@ -129,7 +131,7 @@ Json::Value merged_parameters(const std::vector<std::string>& inputs,
     if (!first) {
       first = parameters;
       first_path = path;
-    } else if (*parameters != *first) {
+    } else if (!job::differing_keys(*first, *parameters).empty()) {
       throw UsageError("study merge: " + path + " and " + first_path +
                        " differ: " + job::describe_differences(*first, *parameters) +
                        "; only shards of one study merge");
@@ -247,7 +249,8 @@ StudyReport run_study(const StudyRequest& request, const Progress& progress) {
   const StudyShard shard = parse_shard(request.shard);
   job::StudyContext context{request, resolve_mapping(request.mapping_path, request.ignored_classes),
                             read_openings(request.tracing.polygon_path),
-                            (fs::path(request.out) / "runs").string(), job::row_parameters(request)};
+                            (fs::path(request.out) / "runs").string(),
+                            job::row_parameters(request)};
   ensure_directory(context.runs_dir);
   const std::string csv_path = (fs::path(request.out) / "study.csv").string();
   StudyReport report;
@@ -301,8 +304,8 @@ StudyReport run_study(const StudyRequest& request, const Progress& progress) {
     const auto [s, c] = todo[i];
     const NamedViewpointChoice& configuration = request.configurations[c];
     const double elapsed = job::seconds_since(runs_start);
-    const Progress run_steps = run_progress(progress, names[s] + " " + configuration.name, i + 1,
-                                            todo.size(), elapsed);
+    const Progress run_steps =
+        run_progress(progress, names[s] + " " + configuration.name, i + 1, todo.size(), elapsed);
     if (loaded != s) {
       scene.reset();
       run_steps("loading the scene", 0.0);
@@ -315,8 +318,8 @@ StudyReport run_study(const StudyRequest& request, const Progress& progress) {
                                   " points (NaN or bad lines)");
       }
     }
-    const job::StudyRunInput run{s * configurations + c, names[s], request.scenes[s],
-                                 &scene->cloud, &configuration};
+    const job::StudyRunInput run{s * configurations + c, names[s], request.scenes[s], &scene->cloud,
+                                 &configuration};
     const job::StudyRow row = job::run_study_once(context, run, run_steps, report.warnings);
     report.table.rows.push_back(job::study_cells(row, context.mapping));
     job::sort_by_run(report.table);

@@ -23,11 +23,18 @@ namespace {
 
 // One line, keys sorted (jsoncpp's objects are ordered maps): the same
 // parameters give the same text on every machine.
-std::string canonical(const Json::Value& json) {
+// 17 digits tell every double apart; 15 show 0.06 as 0.06, for people.
+std::string canonical(const Json::Value& json, int digits = 17) {
   Json::StreamWriterBuilder builder;
   builder["indentation"] = "";
-  builder["precision"] = 17;
+  builder["precision"] = digits;
   return Json::writeString(builder, json);
+}
+
+// By text, not Json::Value's ==: a count read back from a file is an Int
+// where the request's was a UInt.
+bool same(const Json::Value& a, const Json::Value& b) {
+  return canonical(a) == canonical(b);
 }
 
 // FNV-1a, 64 bits: stable across compilers and machines, unlike std::hash.
@@ -108,7 +115,7 @@ std::string row_fingerprint(const Json::Value& row_parameters,
 std::vector<std::string> differing_keys(const Json::Value& before, const Json::Value& now) {
   std::vector<std::string> keys;
   for (const auto& key : now.getMemberNames()) {
-    if (!before.isMember(key) || before[key] != now[key]) keys.push_back(key);
+    if (!before.isMember(key) || !same(before[key], now[key])) keys.push_back(key);
   }
   for (const auto& key : before.getMemberNames()) {
     if (!now.isMember(key)) keys.push_back(key);
@@ -120,8 +127,8 @@ std::string describe_differences(const Json::Value& before, const Json::Value& n
   std::string text;
   for (const auto& key : differing_keys(before, now)) {
     text += (text.empty() ? "" : ", ") + key + " (was " +
-            (before.isMember(key) ? canonical(before[key]) : "absent") + ", now " +
-            (now.isMember(key) ? canonical(now[key]) : "absent") + ")";
+            (before.isMember(key) ? canonical(before[key], 15) : "absent") + ", now " +
+            (now.isMember(key) ? canonical(now[key], 15) : "absent") + ")";
   }
   return text;
 }

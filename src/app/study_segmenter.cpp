@@ -80,8 +80,8 @@ std::string one_line(std::string text) {
 }
 
 Prediction external(const StudyContext& context, const std::string& scanned_path,
-                    const std::string& stem, const Progress& progress,
-                    std::string& prediction_path, std::string& output_tail) {
+                    const std::string& stem, const Progress& progress, std::string& prediction_path,
+                    std::string& output_tail) {
   const StudyRequest& request = context.request;
   prediction_path =
       (std::filesystem::path(context.runs_dir) / (stem + ".prediction." + request.segmenter_output))

@@ -57,8 +57,7 @@ std::vector<std::string> segmenters(const CsvTable& table) {
 }
 
 bool constant(const std::vector<double>& values) {
-  return std::all_of(values.begin(), values.end(),
-                     [&](double v) { return v == values.front(); });
+  return std::all_of(values.begin(), values.end(), [&](double v) { return v == values.front(); });
 }
 
 std::string joined(const Json::Value& list) {
@@ -71,14 +70,14 @@ std::string joined(const Json::Value& list) {
 // from where, and which classes block the exterior rays).
 std::string panel_title(const Measure& measure, const Json::Value& parameters) {
   const std::string column = measure.column;
-  if (column == "visible_fraction" || !parameters.isMember("occlusion_num_vp")) return measure.label;
+  if (column == "visible_fraction" || !parameters.isMember("occlusion_num_vp"))
+    return measure.label;
   const unsigned grid = parameters["occlusion_num_vp"].asUInt();
-  const std::string from =
-      grid == 0 ? "from each configuration's viewpoints"
-                : "from " + std::to_string(grid) + " grid viewpoints";
+  const std::string from = grid == 0 ? "from each configuration's viewpoints"
+                                     : "from " + std::to_string(grid) + " grid viewpoints";
   if (column == "exterior_occlusion_level") {
-    return "exterior occlusion level (-poc " + from + "; blocking: " +
-           joined(parameters["exterior_classes"]) + ")";
+    return "exterior occlusion level (-poc " + from +
+           "; blocking: " + joined(parameters["exterior_classes"]) + ")";
   }
   return "occlusion level (-poc " + from + ")";
 }
@@ -131,10 +130,9 @@ void write_markdown(std::ostream& out, const StudyReport& report, const std::str
   }
   out << table.rows.size() << " runs";
   if (report.job == "study") {
-    out << " (" << report.runs_failed << " failed; " << report.runs_computed
-        << " computed now, " << report.runs_skipped
-        << " already in study.csv; shard " << report.request.shard << " of " << report.runs_total
-        << " runs in all)";
+    out << " (" << report.runs_failed << " failed; " << report.runs_computed << " computed now, "
+        << report.runs_skipped << " already in study.csv; shard " << report.request.shard << " of "
+        << report.runs_total << " runs in all)";
   } else {
     out << " (" << report.runs_failed << " failed), merged from " << report.inputs.size()
         << " CSV files";
@@ -167,10 +165,10 @@ void write_markdown(std::ostream& out, const StudyReport& report, const std::str
   for (const auto& row : table.rows) {
     out << "| " << markdown_cell(cell(row, "scene")) << " | "
         << markdown_cell(cell(row, "configuration")) << " | " << cell(row, "status") << " | "
-        << cell(row, "viewpoints") << " | "
-        << fixed(cell(row, "visible_fraction")) << " | " << fixed(cell(row, "occlusion_level"))
-        << " | " << fixed(cell(row, "exterior_occlusion_level")) << " | "
-        << fixed(cell(row, "miou")) << " | " << fixed(cell(row, "overall_accuracy")) << " |\n";
+        << cell(row, "viewpoints") << " | " << fixed(cell(row, "visible_fraction")) << " | "
+        << fixed(cell(row, "occlusion_level")) << " | "
+        << fixed(cell(row, "exterior_occlusion_level")) << " | " << fixed(cell(row, "miou"))
+        << " | " << fixed(cell(row, "overall_accuracy")) << " |\n";
   }
   if (report.runs_failed > 0) {
     out << "\n## Failed runs\n\nThey have no mIoU and stay out of the correlations; a resume "

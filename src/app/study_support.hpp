@@ -23,8 +23,8 @@ struct StudyContext {
   const StudyRequest& request;
   ClassMapping mapping;
   std::vector<PlanarPolygon> openings;
-  std::string runs_dir;           // OUT/runs: scanned clouds and predictions
-  Json::Value row_parameters;     // row_parameters(request), for the fingerprints
+  std::string runs_dir;        // OUT/runs: scanned clouds and predictions
+  Json::Value row_parameters;  // row_parameters(request), for the fingerprints
 };
 
 // Why one run failed on its own (the segmenter crashed, timed out or wrote a

@@ -3,8 +3,8 @@
 
 #include "arguments.hpp"
 #include "commands.hpp"
-#include "interrupt.hpp"
 #include "common_options.hpp"
+#include "interrupt.hpp"
 #include "job_options.hpp"
 #include "occlusion/app/errors.hpp"
 #include "occlusion/app/study_job.hpp"

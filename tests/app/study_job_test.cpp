@@ -372,8 +372,7 @@ TEST(StudyJob, AConstantMeasureHasNoCorrelation) {
            w.find("undefined") != std::string::npos;
   });
   EXPECT_TRUE(warned);
-  EXPECT_NE(read_bytes(dir.file("study/study.json")).find("\"pearson\" : null"),
-            std::string::npos);
+  EXPECT_NE(read_bytes(dir.file("study/study.json")).find("\"pearson\" : null"), std::string::npos);
 }
 
 TEST(StudyJob, MeanOverChoosesTheClassesMiouAverages) {

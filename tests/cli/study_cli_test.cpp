@@ -97,15 +97,16 @@ TEST(StudyCli, SigtermKeepsTheFinishedRowsAndStopsTheSegmenter) {
   const TempDir dir;
   const std::string started = dir.file("started");
   // pattern_7 is made; pattern_4's segmenter hangs until the signal.
-  const std::string study =
-      "'" + std::string(OCCLUSION_CLI_PATH) + "' " + kConfig +
-      " --pattern 7 --pattern 4 --num-rays-per-vp 300 --out '" + dir.file("study") +
-      "' --segmenter 'case {input} in *pattern_4*) touch " + started +
-      "; exec sleep 31.25;; esac; " + kAllWall + "' -q";
-  const std::string script = study + " >'" + dir.file("out") + "' 2>'" + dir.file("err") +
-                             "' & pid=$!; for i in $(seq 1 600); do [ -e '" + started +
-                             "' ] && break; sleep 0.1; done; kill -TERM $pid; wait $pid; echo $? >'" +
-                             dir.file("status") + "'";
+  const std::string study = "'" + std::string(OCCLUSION_CLI_PATH) + "' " + kConfig +
+                            " --pattern 7 --pattern 4 --num-rays-per-vp 300 --out '" +
+                            dir.file("study") +
+                            "' --segmenter 'case {input} in *pattern_4*) touch " + started +
+                            "; exec sleep 31.25;; esac; " + kAllWall + "' -q";
+  const std::string script =
+      study + " >'" + dir.file("out") + "' 2>'" + dir.file("err") +
+      "' & pid=$!; for i in $(seq 1 600); do [ -e '" + started +
+      "' ] && break; sleep 0.1; done; kill -TERM $pid; wait $pid; echo $? >'" + dir.file("status") +
+      "'";
   const auto start = std::chrono::steady_clock::now();
   dir.write("run.sh", script);
   ASSERT_EQ(std::system(("sh '" + dir.file("run.sh") + "'").c_str()), 0);
@@ -117,7 +118,8 @@ TEST(StudyCli, SigtermKeepsTheFinishedRowsAndStopsTheSegmenter) {
   for (const char c : csv) lines += c == '\n' ? 1 : 0;
   EXPECT_EQ(lines, 2u) << csv;  // the header and pattern_7's row
   EXPECT_NE(csv.find("pattern_7"), std::string::npos);
-  EXPECT_NE(std::system("pgrep -f 'sleep 31.25' >/dev/null"), 0) << "the segmenter was left running";
+  EXPECT_NE(std::system("pgrep -f 'sleep 31.25' >/dev/null"), 0)
+      << "the segmenter was left running";
 }
 
 }  // namespace

@@ -122,10 +122,10 @@ struct SegmentationMetrics {
   std::optional<double> mean_class_accuracy;
   std::size_t classes_with_support = 0;
   std::size_t classes_averaged = 0;  // how many classes the means are over
-  std::uint64_t points = 0;   // counted in the matrix (ConfusionMatrix::total)
-  std::uint64_t correct = 0;  // Σ tp
-  std::uint64_t other = 0;    // predictions outside the classes (all misses)
-  std::uint64_t skipped = 0;  // ground truth outside the classes
+  std::uint64_t points = 0;          // counted in the matrix (ConfusionMatrix::total)
+  std::uint64_t correct = 0;         // Σ tp
+  std::uint64_t other = 0;           // predictions outside the classes (all misses)
+  std::uint64_t skipped = 0;         // ground truth outside the classes
 };
 
 SegmentationMetrics compute_metrics(const ConfusionMatrix& matrix,

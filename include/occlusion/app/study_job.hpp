@@ -66,7 +66,7 @@ struct StudyRequest {
   RegionGrowingOptions estimation = default_study_estimation();  // the baseline's planes
   std::string mapping_path;  // as -eval; "" = the seed's table 3.1
   std::vector<std::string> ignored_classes;
-  double max_distance = 0.05;  // as -eval, for predictions on other points
+  double max_distance = 0.05;              // as -eval, for predictions on other points
   MeanOver mean_over = MeanOver::support;  // as -eval: which classes mIoU averages
   std::string shard = "0/1";               // "i/n"
   std::string out;                         // required
@@ -91,8 +91,8 @@ struct MeasureCorrelation {
 };
 
 struct StudyReport {
-  std::string job = "study";        // or "study_merge"
-  StudyRequest request;             // as run (merge: out only)
+  std::string job = "study";  // or "study_merge"
+  StudyRequest request;       // as run (merge: out only)
   // Every parameter of the rows (app/study_parameters): the request's, or for
   // a merge the shards' study.parameters.json (empty when none has one).
   Json::Value parameters{Json::objectValue};
@@ -102,7 +102,7 @@ struct StudyReport {
   std::size_t runs_skipped = 0;  // in the shard, already in study.csv
   std::size_t runs_computed = 0;
   std::size_t runs_failed = 0;  // rows of the table whose status is failed
-  CsvTable table;  // every row of study.csv, in run order
+  CsvTable table;               // every row of study.csv, in run order
   std::vector<MeasureCorrelation> correlations;
   std::vector<std::string> outputs;
   std::vector<std::string> warnings;
