@@ -8,7 +8,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 
 #include "job_support.hpp"
 #include "occlusion/app/errors.hpp"
