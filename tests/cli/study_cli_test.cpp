@@ -118,7 +118,7 @@ TEST(StudyCli, SigtermKeepsTheFinishedRowsAndStopsTheSegmenter) {
   for (const char c : csv) lines += c == '\n' ? 1 : 0;
   EXPECT_EQ(lines, 2u) << csv;  // the header and pattern_7's row
   EXPECT_NE(csv.find("pattern_7"), std::string::npos);
-  EXPECT_NE(std::system("pgrep -f 'sleep 31.25' >/dev/null"), 0)
+  EXPECT_NE(std::system("pgrep -f 'sleep 31[.]25' >/dev/null"), 0)
       << "the segmenter was left running";
 }
 
