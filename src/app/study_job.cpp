@@ -131,10 +131,15 @@ Json::Value merged_parameters(const std::vector<std::string>& inputs,
     if (!first) {
       first = parameters;
       first_path = path;
-    } else if (!job::differing_keys(*first, *parameters).empty()) {
-      throw UsageError("study merge: " + path + " and " + first_path +
-                       " differ: " + job::describe_differences(*first, *parameters) +
-                       "; only shards of one study merge");
+    } else {
+      // Where the scenes and files are may differ from machine to machine.
+      Json::Value a = job::row_parameters_of(*first), b = job::row_parameters_of(*parameters);
+      a["configurations"] = (*first)["configurations"];
+      b["configurations"] = (*parameters)["configurations"];
+      if (!job::differing_keys(a, b).empty()) {
+        throw UsageError("study merge: " + path + " and " + first_path + " differ: " +
+                         job::describe_differences(a, b) + "; only shards of one study merge");
+      }
     }
   }
   return first.value_or(Json::Value(Json::objectValue));

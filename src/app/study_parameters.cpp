@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 
 #include "job_support.hpp"
 #include "occlusion/app/errors.hpp"
@@ -46,6 +47,23 @@ std::uint64_t fnv1a(const std::string& text) {
   return hash;
 }
 
+std::string hex(std::uint64_t value) {
+  char text[17];
+  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(value));
+  return text;
+}
+
+// What a file holds, not where it is: shards on machines that mount the data
+// elsewhere, and the server (which resolves paths), make the same rows.
+// Empty for no file; a file that cannot be read is reported where it is read.
+std::string content_digest(const std::string& path) {
+  if (path.empty()) return "";
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return "unreadable";
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  return hex(fnv1a(text));
+}
+
 }  // namespace
 
 Json::Value row_parameters(const StudyRequest& q) {
@@ -53,7 +71,7 @@ Json::Value row_parameters(const StudyRequest& q) {
   Json::Value p(Json::objectValue);
   p["point_radius"] = t.point_radius;
   p["num_rays_per_vp"] = Json::UInt64(t.num_rays_per_vp);
-  p["polygon_path"] = t.polygon_path;
+  p["polygon_file"] = content_digest(t.polygon_path);
   p["octree_resolution"] = t.octree_resolution;
   p["enable_acceleration"] = t.enable_acceleration;
   p["sampling"] = t.sampling;
@@ -68,7 +86,7 @@ Json::Value row_parameters(const StudyRequest& q) {
   p["segmenter"] = segmenter_name(q.segmenter);
   p["segmenter_output"] = q.segmenter_output;
   add_estimation_parameters(q.estimation, p);
-  p["mapping_path"] = q.mapping_path;
+  p["mapping_file"] = content_digest(q.mapping_path);
   p["ignored_classes"] = to_json(q.ignored_classes);
   p["max_distance"] = q.max_distance;
   p["mean_over"] = to_string(q.mean_over);
@@ -77,6 +95,8 @@ Json::Value row_parameters(const StudyRequest& q) {
 
 Json::Value study_parameters(const StudyRequest& q) {
   Json::Value p = row_parameters(q);
+  p["polygon_path"] = q.tracing.polygon_path;
+  p["mapping_path"] = q.mapping_path;
   p["scenes"] = to_json(q.scenes);
   Json::Value configurations(Json::arrayValue);
   for (const auto& configuration : q.configurations) {
@@ -90,8 +110,9 @@ Json::Value study_parameters(const StudyRequest& q) {
 
 Json::Value row_parameters_of(const Json::Value& study_parameters) {
   Json::Value p = study_parameters;
-  p.removeMember("scenes");
-  p.removeMember("configurations");
+  for (const char* key : {"scenes", "configurations", "polygon_path", "mapping_path"}) {
+    p.removeMember(key);
+  }
   return p;
 }
 
@@ -104,11 +125,7 @@ Json::Value configuration_of(const Json::Value& study_parameters, const std::str
 
 std::string row_fingerprint(const Json::Value& row_parameters,
                             const NamedViewpointChoice& configuration) {
-  const std::string text =
-      canonical(row_parameters) + '\n' + canonical(configuration.choice.to_json());
-  char hex[17];
-  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(fnv1a(text)));
-  return hex;
+  return hex(fnv1a(canonical(row_parameters) + '\n' + canonical(configuration.choice.to_json())));
 }
 
 std::vector<std::string> differing_keys(const Json::Value& before, const Json::Value& now) {

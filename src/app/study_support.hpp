@@ -87,12 +87,14 @@ Prediction segment_scanned_cloud(const StudyContext& context, const PointCloud& 
 void validate_segmenter(const StudyRequest& request);
 
 // Every parameter that changes a row's figures (not the scenes, the
-// configurations, the shard, the threads or the output folder), by key.
+// configurations, the shard, the threads or the output folder), by key; the
+// openings and mapping files by a digest of their contents (polygon_file,
+// mapping_file), so that the rows do not depend on where the files are.
 Json::Value row_parameters(const StudyRequest& request);
-// row_parameters with the scenes and configurations: study.json's list and
-// study.parameters.json's content.
+// row_parameters with the scenes, configurations, polygon_path and
+// mapping_path: study.json's list and study.parameters.json's content.
 Json::Value study_parameters(const StudyRequest& request);
-// study_parameters without the scenes and configurations.
+// study_parameters without the scenes, configurations and paths: the row parameters.
 Json::Value row_parameters_of(const Json::Value& study_parameters);
 // The entry of study_parameters' configurations called `name`; null when none is.
 Json::Value configuration_of(const Json::Value& study_parameters, const std::string& name);

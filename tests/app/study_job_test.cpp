@@ -329,10 +329,21 @@ TEST(StudyJob, ResumingWithOtherParametersIsRefusedNamingThem) {
     EXPECT_NE(std::string(e.what()).find("configuration 'pattern_1'"), std::string::npos)
         << e.what();
   }
-  // Threads do not change the figures: the same study.
+  // Threads do not change the figures, nor where the openings file is: the same study.
   StudyRequest threads = request;
   threads.tracing.threads = 1;
+  fs::copy_file(request.tracing.polygon_path, dir.file("openings_copy.txt"));
+  threads.tracing.polygon_path = dir.file("openings_copy.txt");
   EXPECT_EQ(run_study(threads).runs_skipped, 3u);
+  // But what it holds does.
+  write_text(dir.file("one_opening.txt"), "2 5 0.9\n3.6 5 0.9\n3.6 5 2.2\n2 5 2.2\n");
+  threads.tracing.polygon_path = dir.file("one_opening.txt");
+  try {
+    run_study(threads);
+    FAIL() << "no error";
+  } catch (const UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find("polygon_file"), std::string::npos) << e.what();
+  }
 
   changed.fresh = true;
   const StudyReport fresh = run_study(changed);
