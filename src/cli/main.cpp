@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "interrupt.hpp"
 #include "occlusion/analysis/progress.hpp"
 #include "occlusion/app/errors.hpp"
 #include "occlusion/io/input_error.hpp"
@@ -90,6 +91,8 @@ int main(int argc, char** argv) {
     return kExitInput;
   } catch (const occlusion::Cancelled&) {
     std::fprintf(stderr, "occlusion: cancelled\n");
+    // Temporary files are gone by now (the job unwound); die as signalled.
+    occlusion::cli::reraise_interrupt();
     return kExitFailure;
   } catch (const std::bad_alloc&) {
     std::fprintf(stderr, "occlusion: out of memory\n");

@@ -6,6 +6,7 @@
 #include <functional>
 
 #include "common_options.hpp"
+#include "interrupt.hpp"
 #include "progress_printer.hpp"
 
 namespace occlusion::cli {
@@ -19,7 +20,9 @@ int run_command(const OutputOptions& output, const std::string& job,
     print_help();
     return 0;
   }
-  const Report report = run(make_progress_printer(job, output.quiet));
+  Progress progress = make_progress_printer(job, output.quiet);
+  progress.cancel = &interrupt_flag();
+  const Report report = run(progress);
   print_warnings(report.warnings);
   if (output.json) {
     print_json(to_json(report));

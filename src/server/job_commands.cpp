@@ -3,6 +3,8 @@
 
 #include <json/value.h>
 
+#include <cstdint>
+#include <type_traits>
 #include <utility>
 
 #include "command_table.hpp"
@@ -23,6 +25,21 @@ namespace occlusion::server {
 
 namespace {
 
+template <class Request, class = void>
+struct HasMemoryBudget : std::false_type {};
+template <class Request>
+struct HasMemoryBudget<Request, std::void_t<decltype(Request::max_memory_mb)>> : std::true_type {};
+
+// A job's memory budget on the server is the server's; a request may lower it.
+template <class Request>
+void apply_memory_budget(Request& request, std::uint64_t server_mb) {
+  if constexpr (HasMemoryBudget<Request>::value) {
+    if (request.max_memory_mb == 0 || request.max_memory_mb > server_mb) {
+      request.max_memory_mb = server_mb;
+    }
+  }
+}
+
 template <class Request, class Report>
 Command job_command(const std::string& name, const JobParams& spec,
                     Report (*run)(const Request&, const Progress&),
@@ -30,6 +47,7 @@ Command job_command(const std::string& name, const JobParams& spec,
   return Command{name, Where::kWorker, [=](CommandContext& context) {
                    Request request;
                    apply_config(job_config(context.params, spec, context.server.root), request);
+                   apply_memory_budget(request, context.server.limits.max_memory_mb);
                    const Report report = run(request, context.progress());
                    context.progress().check_cancel();
                    if (send_frames != nullptr) send_frames(context, report);
