@@ -54,8 +54,8 @@ inline void check_float_precision(const Eigen::Vector3f& cloud_lo, const Eigen::
         std::to_string(point_radius) + "; keep everything within " + std::to_string(limit) +
         " units of the origin (shift the scene and viewpoints)");
   };
-  const double cloud_extent =
-      std::max(cloud_lo.cast<double>().cwiseAbs().maxCoeff(), cloud_hi.cast<double>().cwiseAbs().maxCoeff());
+  const double cloud_extent = std::max(cloud_lo.cast<double>().cwiseAbs().maxCoeff(),
+                                       cloud_hi.cast<double>().cwiseAbs().maxCoeff());
   if (cloud_extent > limit) refuse("the cloud reaches", cloud_extent);
   for (const auto& viewpoint : viewpoints) {
     const double distance = viewpoint.cwiseAbs().maxCoeff();

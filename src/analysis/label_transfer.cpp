@@ -10,8 +10,8 @@
 #include <string>
 
 #include "analysis_support.hpp"
-#include "pcl_frame.hpp"
 #include "occlusion/core/parallel.hpp"
+#include "pcl_frame.hpp"
 
 namespace occlusion {
 

@@ -81,7 +81,8 @@ MeshOcclusionResult compute_mesh_occlusion(const TriangleMesh& mesh,
 
   auto start = Clock::now();
   progress("sampling", 0.0);
-  const MeshSamples samples = sample_mesh(mesh, options.samples_per_unit_area, options.seed, progress);
+  const MeshSamples samples =
+      sample_mesh(mesh, options.samples_per_unit_area, options.seed, progress);
   result.timings.sampling_seconds = seconds_since(start);
   progress.check_cancel();
 

@@ -38,9 +38,10 @@ inline Eigen::Vector3f to_local(const Eigen::Vector3f& p, const Eigen::Vector3d&
   const Eigen::Vector3d local = p.cast<double>() - centre;
   if (!(local.cwiseAbs().maxCoeff() <= kMaxLocalCoordinate)) {
     throw std::invalid_argument(
-        analysis + ": a point is not finite or lies more than 1e15 units from the points' "
-                   "centre, beyond what PCL's float kd-tree can search; remove the stray far "
-                   "points (or fix the unit) first");
+        analysis +
+        ": a point is not finite or lies more than 1e15 units from the points' "
+        "centre, beyond what PCL's float kd-tree can search; remove the stray far "
+        "points (or fix the unit) first");
   }
   return local.cast<float>();
 }

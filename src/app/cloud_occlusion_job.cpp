@@ -150,10 +150,10 @@ CloudOcclusionReport run_cloud_occlusion_on(const PointCloud& cloud,
   report.request = request;
   report.viewpoint_names = viewpoints.names;
   report.openings = openings.size();
-  check_memory_budget(cloud_occlusion_memory(cloud.size(), viewpoints.positions.size(),
-                                             request.num_rays_per_vp,
-                                             request.escape_directions || !request.out.empty()),
-                      request.max_memory_mb);
+  check_memory_budget(
+      cloud_occlusion_memory(cloud.size(), viewpoints.positions.size(), request.num_rays_per_vp,
+                             request.escape_directions || !request.out.empty()),
+      request.max_memory_mb);
 
   CloudOcclusionOptions options;
   options.point_radius = request.point_radius;

@@ -272,9 +272,14 @@ Config load_config(const std::string& path) {
   builder["rejectDupKeys"] = true;
   const std::unique_ptr<Json::CharReader> reader(builder.newCharReader());
   std::string errors;
-  if (!reader->parse(body.data(), body.data() + body.size(), &config.root, &errors)) {
-    throw UsageError(path + ": not valid JSON: " + errors);
+  bool parsed = false;
+  try {
+    parsed = reader->parse(body.data(), body.data() + body.size(), &config.root, &errors);
+  } catch (const Json::Exception& e) {
+    // JsonCpp throws rather than reports for input nested beyond its stack limit.
+    errors = e.what();
   }
+  if (!parsed) throw UsageError(path + ": not valid JSON: " + errors);
   config.directory = std::filesystem::path(path).parent_path().string();
   check(config);
   return config;

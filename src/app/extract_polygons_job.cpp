@@ -33,9 +33,9 @@ ExtractPolygonsReport run_extract_polygons(const ExtractPolygonsRequest& request
   ExtractPolygonsReport report;
   report.request = request;
 
-  job::CloudEstimate input = job::load_and_estimate(request.path, request.skip_bad_lines,
-                                                    request.estimation, request.threads,
-                                                    request.max_memory_mb, progress);
+  job::CloudEstimate input =
+      job::load_and_estimate(request.path, request.skip_bad_lines, request.estimation,
+                             request.threads, request.max_memory_mb, progress);
   job::take_estimate(input, report);
 
   if (!request.out.empty()) {

@@ -46,8 +46,8 @@ constexpr std::uint64_t kSphereOctreeBytes = 64;
 
 void check_memory_budget(const MemoryEstimate& estimate, std::uint64_t max_memory_mb) {
   if (max_memory_mb == 0 || estimate.bytes <= times(max_memory_mb, kMegabyte)) return;
-  throw UsageError("this work needs about " + megabytes(estimate.bytes) + " (" +
-                   estimate.made_of + "), more than max_memory_mb = " + count(max_memory_mb) +
+  throw UsageError("this work needs about " + megabytes(estimate.bytes) + " (" + estimate.made_of +
+                   "), more than max_memory_mb = " + count(max_memory_mb) +
                    ": ask for less, or raise max_memory_mb where the machine has the memory");
 }
 

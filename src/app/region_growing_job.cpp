@@ -4,8 +4,8 @@
 
 #include "job_support.hpp"
 #include "occlusion/app/errors.hpp"
-#include "occlusion/app/memory_budget.hpp"
 #include "occlusion/app/json_output.hpp"
+#include "occlusion/app/memory_budget.hpp"
 #include "occlusion/io/atomic_file.hpp"
 #include "occlusion/io/cloud_io.hpp"
 #include "occlusion/io/obj_writer.hpp"
@@ -79,9 +79,9 @@ RegionGrowingReport run_region_growing_occlusion(const RegionGrowingRequest& req
   RegionGrowingReport report;
   report.request = request;
 
-  job::CloudEstimate input = job::load_and_estimate(request.path, request.skip_bad_lines,
-                                                    request.estimation, request.threads,
-                                                    request.max_memory_mb, progress);
+  job::CloudEstimate input =
+      job::load_and_estimate(request.path, request.skip_bad_lines, request.estimation,
+                             request.threads, request.max_memory_mb, progress);
   job::take_estimate(input, report);
   const PointCloud& cloud = input.loaded.cloud;
 

@@ -4,8 +4,8 @@
 
 #include "job_support.hpp"
 #include "occlusion/app/errors.hpp"
-#include "occlusion/app/memory_budget.hpp"
 #include "occlusion/app/json_output.hpp"
+#include "occlusion/app/memory_budget.hpp"
 #include "occlusion/io/input_error.hpp"
 
 namespace occlusion::job {

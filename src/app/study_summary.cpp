@@ -162,7 +162,8 @@ void write_study_summary(StudyReport& report, const std::string& out) {
   // study.csv is the resumable table, written row by row as runs finish; the
   // summary files appear together.
   OutputSet outputs;
-  write_file_atomically(outputs.add(path("study.svg")), [&](std::ostream& stream) { stream << svg; });
+  write_file_atomically(outputs.add(path("study.svg")),
+                        [&](std::ostream& stream) { stream << svg; });
   write_file_atomically(outputs.add(path("study.md")),
                         [&](std::ostream& stream) { write_markdown(stream, report, "study.svg"); });
   report.outputs = {path("study.json"), path("study.csv"), path("study.svg"), path("study.md")};

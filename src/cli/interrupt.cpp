@@ -1,5 +1,7 @@
 #include "interrupt.hpp"
 
+#include <signal.h>
+
 #include <csignal>
 
 namespace occlusion::cli {

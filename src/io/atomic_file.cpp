@@ -20,8 +20,7 @@ namespace {
 fs::path temporary_path_beside(const fs::path& target) {
   static std::atomic<unsigned long> counter{0};
   const std::string name = ".tmp-" + std::to_string(static_cast<long>(::getpid())) + "-" +
-                           std::to_string(counter.fetch_add(1)) + "-" +
-                           target.filename().string();
+                           std::to_string(counter.fetch_add(1)) + "-" + target.filename().string();
   return target.parent_path() / name;
 }
 

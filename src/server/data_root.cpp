@@ -57,7 +57,7 @@ fs::path DataRoot::resolve(const std::string& relative, bool must_exist) const {
   }
   // A folder read as a scene (an S3DIS room or Area) is read file by file: a
   // link inside it must not lead out either.
-  if (must_exist && fs::is_directory(resolved, error)) {
+  if (must_exist && resolved != root_ && fs::is_directory(resolved, error)) {
     std::size_t seen = 0;
     check_nested(resolved, relative, kNestedDepth, seen);
   }
@@ -73,7 +73,8 @@ void DataRoot::check_nested(const fs::path& dir, const std::string& relative, in
                                                  std::to_string(kMaxNestedEntries) +
                                                  " entries; name a smaller folder");
     }
-    const std::string name = relative + "/" + it->path().filename().string();
+    const std::string name =
+        (relative.empty() ? "" : relative + "/") + it->path().filename().string();
     std::error_code status;
     if (it->is_symlink(status)) {
       const fs::path target = fs::weakly_canonical(it->path(), status);

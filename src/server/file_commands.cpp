@@ -184,15 +184,17 @@ void check_openings_target(const DataRoot& root, const std::string& path,
   for (fs::path dir = resolved.parent_path(); dir != root.path() && dir.has_relative_path();
        dir = dir.parent_path()) {
     if (is_s3dis_room(dir) || dir.filename() == "Annotations") {
-      refuse("is inside a scene folder, whose .txt files are read as the scene; save it beside "
-             "the scene instead");
+      refuse(
+          "is inside a scene folder, whose .txt files are read as the scene; save it beside "
+          "the scene instead");
     }
   }
   std::error_code status;
   if (fs::exists(fs::symlink_status(resolved, status))) {
     if (!fs::is_regular_file(resolved, status) || !starts_with_openings_header(resolved)) {
-      refuse("exists and is not an openings file (its first line is not '# openings'); choose "
-             "another name");
+      refuse(
+          "exists and is not an openings file (its first line is not '# openings'); choose "
+          "another name");
     }
   }
 }

@@ -41,7 +41,7 @@ TEST(ThirdPartyInputs, FortyThousandThreadsEstimateTheSameMesh) {
 }
 
 TEST(ThirdPartyInputs, PointsNearFloatMaxAreRefusedNotAborted) {
-  for (const float far : {3e38f, -3e38f, 2e15f}) {
+  for (const float far : {3e38f, -3e38f, 1e16f}) {
     PointCloud cloud = box_room_cloud(Eigen::Vector3d::Zero());
     cloud.positions.push_back(Eigen::Vector3f(far, 0.5f, -far));  // made FLANN abort
     try {
@@ -53,26 +53,51 @@ TEST(ThirdPartyInputs, PointsNearFloatMaxAreRefusedNotAborted) {
   }
 }
 
+// The surface of the box [shift, shift + (4, 3.5, 2.5)] on a 1/16 grid: every
+// coordinate is exact in float, near the origin and 4096 away alike.
+PointCloud grid_room(const Eigen::Vector3f& shift) {
+  const Eigen::Vector3f size(4, 3.5, 2.5);
+  constexpr float kStep = 1.0f / 16;
+  PointCloud cloud;
+  for (int axis = 0; axis < 3; ++axis) {
+    const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+    for (const float at : {0.0f, size[axis]}) {
+      for (float a = 0; a <= size[u]; a += kStep) {
+        for (float b = 0; b <= size[v]; b += kStep) {
+          Eigen::Vector3f p;
+          p[axis] = at;
+          p[u] = a;
+          p[v] = b;
+          cloud.positions.push_back(p + shift);
+        }
+      }
+    }
+  }
+  return cloud;
+}
+
 // Planes are estimated around the cloud's centre and moved back: a room
 // shifted by an amount float holds exactly gives the same planes, shifted.
 TEST(ThirdPartyInputs, ShiftedRoomGivesTheShiftedPlanes) {
-  const Eigen::Vector3d shift(4096, -2048, 1024);
-  const MeshEstimate here = estimate_mesh(box_room_cloud(Eigen::Vector3d::Zero()), room_options());
-  const MeshEstimate there = estimate_mesh(box_room_cloud(shift), room_options());
+  const Eigen::Vector3f shift(4096, -2048, 1024);
+  const MeshEstimate here = estimate_mesh(grid_room(Eigen::Vector3f::Zero()), room_options());
+  const MeshEstimate there = estimate_mesh(grid_room(shift), room_options());
+  const Eigen::Vector3d offset = shift.cast<double>();
   ASSERT_EQ(here.planes.size(), 6u);
   ASSERT_EQ(there.planes.size(), here.planes.size());
   for (std::size_t p = 0; p < here.planes.size(); ++p) {
     const EstimatedPlane& a = here.planes[p];
     const EstimatedPlane& b = there.planes[p];
-    EXPECT_LT((a.normal - b.normal).norm(), 1e-3) << p;
-    EXPECT_NEAR(b.offset, a.offset - b.normal.dot(shift), 5e-3) << p;
-    EXPECT_LT((b.centroid - (a.centroid + shift)).norm(), 5e-3) << p;
-    EXPECT_NEAR(a.area, b.area, 0.01 * a.area) << p;
+    EXPECT_LT((a.normal - b.normal).norm(), 1e-9) << p;
+    EXPECT_NEAR(b.offset, a.offset - b.normal.dot(offset), 1e-6) << p;
+    EXPECT_LT((b.centroid - (a.centroid + offset)).norm(), 1e-6) << p;
+    EXPECT_NEAR(a.area, b.area, 1e-9) << p;
   }
   ASSERT_EQ(here.mesh.vertices.size(), there.mesh.vertices.size());
   for (std::size_t v = 0; v < here.mesh.vertices.size(); ++v) {
-    EXPECT_LT((there.mesh.vertices[v] - (here.mesh.vertices[v] + shift)).norm(), 5e-3) << v;
+    EXPECT_LT((there.mesh.vertices[v] - (here.mesh.vertices[v] + offset)).norm(), 1e-6) << v;
   }
+  EXPECT_EQ(here.point_cluster, there.point_cluster);
 }
 
 TEST(ThirdPartyInputs, LabelTransferRefusesFarSourcesAndLeavesFarTargetsUnmatched) {

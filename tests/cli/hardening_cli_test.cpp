@@ -91,7 +91,8 @@ TEST(Hardening, ShiftedMeshGivesTheSameLevel) {
   const Json::Value here =
       run_json("-moc '" + dir.file("near.obj") + "' --viewpoint 2,1.5,3" + options);
   const std::string far_viewpoint = " --viewpoint 5000002,5000001.5,3";
-  const Json::Value there = run_json("-moc '" + dir.file("far.obj") + "'" + far_viewpoint + options);
+  const Json::Value there =
+      run_json("-moc '" + dir.file("far.obj") + "'" + far_viewpoint + options);
   // From 3 m up, the 2 m x 1 m table 1 m up shades 3 m x 1.5 m of the 12 m^2
   // floor: 4.5 of the 14 m^2.
   EXPECT_NEAR(here["occlusion_level"].asDouble(), 4.5 / 14.0, 0.01);
@@ -154,13 +155,15 @@ TEST(Hardening, FailedWriteKeepsTheWholeOldSet) {
     if (name != "sample_room.moc.json") old_bytes.push_back(read_text(out + "/" + name));
   }
 
-  const CliRun run = run_cli("-moc " + kRoom + " -q --pattern 2 --samples-per-unit-area 60 --out '" +
-                             out + "'");
+  const CliRun run =
+      run_cli("-moc " + kRoom + " -q --pattern 2 --samples-per-unit-area 60 --out '" + out + "'");
   EXPECT_EQ(run.exit_code, 1) << run.err;
   EXPECT_EQ(entries(out), before);
   std::size_t i = 0;
   for (const auto& name : before) {
-    if (name != "sample_room.moc.json") EXPECT_EQ(read_text(out + "/" + name), old_bytes[i++]);
+    if (name != "sample_room.moc.json") {
+      EXPECT_EQ(read_text(out + "/" + name), old_bytes[i++]) << name;
+    }
   }
 }
 

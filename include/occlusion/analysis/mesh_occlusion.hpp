@@ -9,8 +9,8 @@
 // visible area = sum of w * area; occlusion level = 1 - visible area / total area.
 
 #include <Eigen/Core>
-#include <limits>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
