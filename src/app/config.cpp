@@ -59,13 +59,14 @@ Config load_config(const std::string& path) {
   builder["stackLimit"] = 64;  // a config is a few levels deep; deeper is a mistake or an attack
   const std::unique_ptr<Json::CharReader> reader(builder.newCharReader());
   std::string errors;
+  bool parsed = false;
   try {
-    if (!reader->parse(body.data(), body.data() + body.size(), &config.root, &errors)) {
-      throw UsageError(path + ": not valid JSON: " + errors);
-    }
+    parsed = reader->parse(body.data(), body.data() + body.size(), &config.root, &errors);
   } catch (const Json::Exception& e) {
-    throw UsageError(path + ": not valid JSON: " + e.what());
+    // JsonCpp throws rather than reports for input nested beyond its stack limit.
+    errors = e.what();
   }
+  if (!parsed) throw UsageError(path + ": not valid JSON: " + errors);
   config.directory = std::filesystem::path(path).parent_path().string();
   check(config);
   return config;
