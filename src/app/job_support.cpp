@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <sstream>
 
 #include "occlusion/app/errors.hpp"
 #include "occlusion/app/json_output.hpp"
@@ -18,11 +19,111 @@ std::string output_path(const std::string& out, const std::string& input,
   return (std::filesystem::path(out) / (input_path.stem().string() + suffix)).string();
 }
 
-ViewpointChoice::Resolved resolve_for_cloud(const ViewpointChoice& choice,
-                                            const PointCloud& cloud) {
-  Eigen::Vector3f lo, hi;
-  cloud.bounds(lo, hi);
-  return choice.resolve(lo.cast<double>(), hi.cast<double>());
+FrameKind parse_frame(const std::string& frame) {
+  try {
+    return parse_frame_kind(frame);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--frame: ") + e.what());
+  }
+}
+
+UpAxis parse_up(const std::string& up) {
+  try {
+    return UpAxis::parse(up);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--up: ") + e.what());
+  }
+}
+
+namespace {
+
+Json::Value box_json(const Box& box) {
+  Json::Value json(Json::objectValue);
+  json["min"] = to_json(box.lo);
+  json["max"] = to_json(box.hi);
+  return json;
+}
+
+std::string position_text(const Eigen::Vector3d& p) {
+  std::ostringstream text;
+  text.precision(4);
+  text << '(' << p.x() << ", " << p.y() << ", " << p.z() << ')';
+  return text.str();
+}
+
+}  // namespace
+
+ViewpointChoice::Resolved resolve_for_cloud(const ViewpointChoice& choice, const PointCloud& cloud,
+                                            const std::string& frame, const std::string& up) {
+  const FrameKind kind = parse_frame(frame);
+  const UpAxis up_axis = parse_up(up);
+  const SceneFrame boxes = measure_scene_frame(cloud.positions);
+  const Box& placement = kind == FrameKind::kRobust ? boxes.robust : boxes.bbox;
+  ViewpointChoice::Resolved resolved = choice.resolve(placement.lo, placement.hi, up_axis.axis);
+
+  resolved.frame = Json::Value(Json::objectValue);
+  resolved.frame["frame"] = frame;
+  resolved.frame["up"] = up_axis.name();
+  resolved.frame["bbox"] = box_json(boxes.bbox);
+  resolved.frame["robust"] = box_json(boxes.robust);
+  resolved.frame["robust_quantile"] = kRobustQuantile;
+  for (std::size_t v = 0; v < resolved.positions.size(); ++v) {
+    if (!boxes.robust.contains(resolved.positions[v])) {
+      resolved.warnings.push_back(
+          "viewpoint " + resolved.names[v] + " at " + position_text(resolved.positions[v]) +
+          " lies outside the occupied space (the robust box from " +
+          position_text(boxes.robust.lo) + " to " + position_text(boxes.robust.hi) +
+          "): its rays measure the outside of the scene");
+    }
+  }
+  if (choice.kind == ViewpointChoice::Kind::kGrid) {
+    if (const auto message = check_up_axis(cloud.positions, up_axis)) {
+      resolved.warnings.push_back(*message);
+    }
+  }
+  return resolved;
+}
+
+PointRadius choose_point_radius(const PointCloud& cloud, double requested, const std::string& job,
+                                std::vector<std::string>& warnings) {
+  PointRadius chosen;
+  chosen.spacing = measure_point_spacing(cloud);
+  const double spacing = chosen.spacing.spacing;
+  chosen.automatic = is_auto_radius(requested);
+  chosen.radius = chosen.automatic ? kAutoRadiusPerSpacing * spacing : requested;
+  if (chosen.automatic) return chosen;
+  std::ostringstream message;
+  message << "point_radius " << requested << " is " << requested / spacing
+          << " x the point spacing " << spacing << " (median nearest-neighbour distance): ";
+  if (requested > kHighRadiusPerSpacing * spacing) {
+    message << (job == "-fscan" ? "neighbouring points hide each other, so the visible fraction "
+                                  "is too low"
+                                : "points swell into each other and close real gaps, so the "
+                                  "occlusion level is too low");
+  } else if (requested < kLowRadiusPerSpacing * spacing) {
+    message << (job == "-fscan"
+                    ? "rays pass between the points of a surface, so points behind it count as "
+                      "seen and the visible fraction is too high"
+                    : "rays leak between the points of surfaces, so the occlusion level is too "
+                      "high");
+  } else {
+    return chosen;
+  }
+  message << " (omit point_radius for auto = " << kAutoRadiusPerSpacing << " x spacing)";
+  warnings.push_back(message.str());
+  return chosen;
+}
+
+Json::Value point_radius_json(const PointRadius& radius) {
+  Json::Value json(Json::objectValue);
+  json["point_radius"] = radius.radius;
+  json["automatic"] = radius.automatic;
+  json["spacing"] = radius.spacing.spacing;
+  json["spacing_quantile_10"] = radius.spacing.quantile_10;
+  json["spacing_quantile_90"] = radius.spacing.quantile_90;
+  json["spacing_samples"] = Json::UInt64(radius.spacing.samples);
+  json["duplicate_points_sampled"] = Json::UInt64(radius.spacing.duplicate_hits);
+  return json;
 }
 
 Json::Value viewpoint_json(const std::string& name, const Eigen::Vector3d& position) {

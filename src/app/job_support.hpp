@@ -7,6 +7,9 @@
 #include <string>
 #include <vector>
 
+#include "occlusion/analysis/point_spacing.hpp"
+#include "occlusion/analysis/scene_frame.hpp"
+#include "occlusion/analysis/up_axis.hpp"
 #include "occlusion/app/viewpoint_choice.hpp"
 #include "occlusion/core/point_cloud.hpp"
 
@@ -22,8 +25,26 @@ inline double seconds_since(Clock::time_point start) {
 std::string output_path(const std::string& out, const std::string& input,
                         const std::string& suffix);
 
-// Viewpoints for a cloud, from its bounding box.
-ViewpointChoice::Resolved resolve_for_cloud(const ViewpointChoice& choice, const PointCloud& cloud);
+// Viewpoints for a cloud, placed on its robust frame or its bounding box
+// (`frame`: robust|bbox, scene_frame.hpp) with `up` a signed axis
+// (up_axis.hpp). Resolved::frame reports both boxes and the up axis; warnings
+// name each viewpoint outside the occupied space (the robust box) and, for a
+// grid (whose mid-height follows up), data that disagree with up. UsageError
+// for an unknown frame or up.
+ViewpointChoice::Resolved resolve_for_cloud(const ViewpointChoice& choice, const PointCloud& cloud,
+                                            const std::string& frame = "robust",
+                                            const std::string& up = "+z");
+// The parsed settings, or UsageError naming the option.
+FrameKind parse_frame(const std::string& frame);
+UpAxis parse_up(const std::string& up);
+
+// The point radius a job traces with: the request's, or for kAutoPointRadius
+// kAutoRadiusPerSpacing x the measured spacing. The spacing
+// is measured either way and a radius far from it is warned about, naming the
+// bias (`job` is "-poc" or "-fscan", whose biases differ).
+PointRadius choose_point_radius(const PointCloud& cloud, double requested, const std::string& job,
+                                std::vector<std::string>& warnings);
+Json::Value point_radius_json(const PointRadius& radius);
 
 // [{"name": ..., "position": [x, y, z], <figures>...}, ...] built by the caller.
 Json::Value viewpoint_json(const std::string& name, const Eigen::Vector3d& position);

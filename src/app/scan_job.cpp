@@ -43,7 +43,11 @@ void validate(const ScanRequest& request) {
     throw UsageError("no cloud given (-fscan CLOUD or occlusion.point_cloud.path)");
   }
   request.viewpoints.validate();
-  job::require_positive(request.point_radius, "--point-radius");
+  job::parse_frame(request.frame);
+  job::parse_up(request.up);
+  if (!is_auto_radius(request.point_radius)) {
+    job::require_positive(request.point_radius, "--point-radius");
+  }
   if (!std::isfinite(request.self_tolerance)) {
     throw UsageError("--self-tolerance must be a number (negative: 2 x point radius)");
   }
@@ -72,10 +76,15 @@ ScanReport run_scan_on(const PointCloud& cloud, const ViewpointChoice::Resolved&
   ScanReport report;
   report.request = request;
   report.viewpoint_names = viewpoints.names;
+  report.frame = viewpoints.frame;
+  report.warnings.insert(report.warnings.end(), viewpoints.warnings.begin(),
+                         viewpoints.warnings.end());
   report.viewpoint_positions = viewpoints.positions;
+  report.point_radius =
+      job::choose_point_radius(cloud, request.point_radius, "-fscan", report.warnings);
 
   ScanOptions options;
-  options.point_radius = request.point_radius;
+  options.point_radius = report.point_radius.radius;
   options.self_tolerance = request.self_tolerance;
   options.octree.min_cell_size = static_cast<float>(request.octree_resolution);
   options.octree.enable_acceleration = request.enable_acceleration;
@@ -102,7 +111,7 @@ ScanReport run_scan(const ScanRequest& request, const Progress& progress) {
   progress.check_cancel();
 
   ScanReport report =
-      run_scan_on(cloud, job::resolve_for_cloud(request.viewpoints, cloud), request, progress);
+      run_scan_on(cloud, job::resolve_for_cloud(request.viewpoints, cloud, request.frame, request.up), request, progress);
   report.dropped_nan = loaded.dropped_nan;
   report.skipped_lines = loaded.skipped_lines;
   report.load_seconds = load_seconds;
@@ -166,13 +175,17 @@ Json::Value to_json(const ScanReport& report) {
   json["classes"] = classes;
 
   Json::Value parameters = q.viewpoints.to_json();
-  parameters["point_radius"] = q.point_radius;
-  parameters["self_tolerance"] = q.self_tolerance < 0.0 ? 2.0 * q.point_radius : q.self_tolerance;
+  const double radius = report.point_radius.radius;
+  parameters["point_radius"] = radius;
+  parameters["point_radius_auto"] = report.point_radius.automatic;
+  parameters["self_tolerance"] = q.self_tolerance < 0.0 ? 2.0 * radius : q.self_tolerance;
   parameters["octree_resolution"] = q.octree_resolution;
   parameters["enable_acceleration"] = q.enable_acceleration;
   parameters["format"] = q.format;
   parameters["threads"] = q.threads;
   json["parameters"] = parameters;
+  if (!report.frame.isNull()) json["frame"] = report.frame;
+  json["point_spacing"] = job::point_radius_json(report.point_radius);
 
   Json::Value timings(Json::objectValue);
   timings["load_seconds"] = report.load_seconds;
