@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <sstream>
 
+#include "occlusion/analysis/inside_solid.hpp"
 #include "occlusion/app/errors.hpp"
 #include "occlusion/app/json_output.hpp"
 #include "occlusion/io/atomic_file.hpp"
@@ -68,7 +69,11 @@ ViewpointChoice::Resolved resolve_for_cloud(const ViewpointChoice& choice, const
   resolved.frame["robust"] = box_json(boxes.robust);
   resolved.frame["robust_quantile"] = kRobustQuantile;
   for (std::size_t v = 0; v < resolved.positions.size(); ++v) {
-    if (!boxes.robust.contains(resolved.positions[v])) {
+    // A single-view frame's sensor looks at the scene from outside it, rightly.
+    const bool at_sensor =
+        cloud.sensor.single_view() &&
+        (resolved.positions[v] - cloud.sensor.origin).cwiseAbs().maxCoeff() <= 1e-6;
+    if (!at_sensor && !boxes.robust.contains(resolved.positions[v])) {
       resolved.warnings.push_back(
           "viewpoint " + resolved.names[v] + " at " + position_text(resolved.positions[v]) +
           " lies outside the occupied space (the robust box from " +
@@ -84,13 +89,38 @@ ViewpointChoice::Resolved resolve_for_cloud(const ViewpointChoice& choice, const
   return resolved;
 }
 
+void warn_viewpoints_inside_solids(const TriangleMesh& mesh,
+                                   const ViewpointChoice::Resolved& viewpoints,
+                                   std::vector<std::string>& warnings) {
+  const std::vector<double> shares = back_face_shares(mesh, viewpoints.positions);
+  for (std::size_t v = 0; v < shares.size(); ++v) {
+    if (shares[v] <= kInsideBackFaceShare) continue;
+    std::ostringstream message;
+    message << "viewpoint " << viewpoints.names[v] << " at " << position_text(viewpoints.positions[v])
+            << ": " << static_cast<int>(std::lround(100.0 * shares[v]))
+            << " % of its rays first hit the back of a face, so it is inside a closed solid "
+               "(or the mesh's faces point away from it): move it, or check the face order";
+    warnings.push_back(message.str());
+  }
+}
+
 PointRadius choose_point_radius(const PointCloud& cloud, double requested, const std::string& job,
                                 std::vector<std::string>& warnings) {
   PointRadius chosen;
-  chosen.spacing = measure_point_spacing(cloud);
-  const double spacing = chosen.spacing.spacing;
   chosen.automatic = is_auto_radius(requested);
-  chosen.radius = chosen.automatic ? kAutoRadiusPerSpacing * spacing : requested;
+  try {
+    chosen.spacing = measure_point_spacing(cloud);
+  } catch (const std::invalid_argument& e) {
+    // Too few distinct points for a spacing: fine with an explicit radius.
+    if (!chosen.automatic) {
+      chosen.radius = requested;
+      return chosen;
+    }
+    throw UsageError(std::string("--point-radius auto: ") + e.what() + "; give a radius");
+  }
+  const double spacing = chosen.spacing.spacing;
+  const double factor = job == "-fscan" ? kScanRadiusPerSpacing : kTracingRadiusPerSpacing;
+  chosen.radius = chosen.automatic ? factor * spacing : requested;
   if (chosen.automatic) return chosen;
   std::ostringstream message;
   message << "point_radius " << requested << " is " << requested / spacing
@@ -109,7 +139,7 @@ PointRadius choose_point_radius(const PointCloud& cloud, double requested, const
   } else {
     return chosen;
   }
-  message << " (omit point_radius for auto = " << kAutoRadiusPerSpacing << " x spacing)";
+  message << " (omit point_radius for auto = " << factor << " x spacing)";
   warnings.push_back(message.str());
   return chosen;
 }

@@ -11,6 +11,7 @@
 #include "occlusion/analysis/scene_frame.hpp"
 #include "occlusion/analysis/up_axis.hpp"
 #include "occlusion/app/viewpoint_choice.hpp"
+#include "occlusion/core/mesh.hpp"
 #include "occlusion/core/point_cloud.hpp"
 
 namespace occlusion::job {
@@ -34,14 +35,20 @@ std::string output_path(const std::string& out, const std::string& input,
 ViewpointChoice::Resolved resolve_for_cloud(const ViewpointChoice& choice, const PointCloud& cloud,
                                             const std::string& frame = "robust",
                                             const std::string& up = "+z");
+// Meshes keep their bounding box (scene_frame.hpp says why); this warns for
+// each viewpoint that is inside a closed solid (inside_solid.hpp).
+void warn_viewpoints_inside_solids(const TriangleMesh& mesh,
+                                   const ViewpointChoice::Resolved& viewpoints,
+                                   std::vector<std::string>& warnings);
+
 // The parsed settings, or UsageError naming the option.
 FrameKind parse_frame(const std::string& frame);
 UpAxis parse_up(const std::string& up);
 
 // The point radius a job traces with: the request's, or for kAutoPointRadius
-// kAutoRadiusPerSpacing x the measured spacing. The spacing
-// is measured either way and a radius far from it is warned about, naming the
-// bias (`job` is "-poc" or "-fscan", whose biases differ).
+// the measured spacing times kScanRadiusPerSpacing (`job` "-fscan") or
+// kTracingRadiusPerSpacing ("-poc"). The spacing is measured either way and a
+// radius far from it is warned about, naming the bias, which differs by job.
 PointRadius choose_point_radius(const PointCloud& cloud, double requested, const std::string& job,
                                 std::vector<std::string>& warnings);
 Json::Value point_radius_json(const PointRadius& radius);

@@ -68,6 +68,7 @@ MeshOcclusionReport run_mesh_occlusion(const MeshOcclusionRequest& request,
   mesh.bounds(lo, hi);
   ViewpointChoice::Resolved viewpoints = request.viewpoints.resolve(lo, hi);
   report.viewpoint_names = viewpoints.names;
+  job::warn_viewpoints_inside_solids(mesh, viewpoints, report.warnings);
   const double half_extent = 0.5 * (hi - lo).maxCoeff();
   if (request.enable_acceleration && request.octree_resolution >= half_extent) {
     report.warnings.push_back("octree_resolution " + std::to_string(request.octree_resolution) +

@@ -65,7 +65,7 @@ TEST(PointSpacing, AutoRadiusKeepsAKinectFrameSeenFromItsSensor) {
     const PointCloud frame = testing::kinect_like_frame(320, 240, 57.0, depth_step);
     const PointSpacing spacing = measure_point_spacing(frame);
     ScanOptions options;
-    options.point_radius = kAutoRadiusPerSpacing * spacing.spacing;
+    options.point_radius = kScanRadiusPerSpacing * spacing.spacing;
     const ScanResult result = scan_cloud(frame, {Eigen::Vector3d::Zero()}, options);
     EXPECT_GE(result.visible_fraction, 0.99) << "depth step " << depth_step;
     options.point_radius = 0.01;

@@ -51,7 +51,8 @@ TEST(RealScanJobs, ScanOfAKinectFrameFromItsSensorKeepsItWithDefaults) {
   const ScanReport report = run_scan_on(frame, at_sensor(), request);
   EXPECT_GE(report.result.visible_fraction, 0.99);
   EXPECT_TRUE(report.point_radius.automatic);
-  EXPECT_DOUBLE_EQ(report.point_radius.radius, 0.5 * report.point_radius.spacing.spacing);
+  EXPECT_DOUBLE_EQ(report.point_radius.radius,
+                   kScanRadiusPerSpacing * report.point_radius.spacing.spacing);
   EXPECT_TRUE(report.warnings.empty());
   const Json::Value json = to_json(report);
   EXPECT_DOUBLE_EQ(json["parameters"]["point_radius"].asDouble(), report.point_radius.radius);

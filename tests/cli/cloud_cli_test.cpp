@@ -90,7 +90,10 @@ TEST(CloudCli, ExteriorVariantAndRatio) {
 
 TEST(CloudCli, ScanWritesSeenAndFullClouds) {
   const TempDir dir;
-  const Json::Value json = run_json("-fscan " + kRoom + " --pattern 1 --out '" + dir.path() + "'");
+  // The radius the point-radius default was before it became auto.
+  const std::string radius = " --point-radius 0.01";
+  const Json::Value json =
+      run_json("-fscan " + kRoom + radius + " --pattern 1 --out '" + dir.path() + "'");
   const double fraction = json["visible_fraction"].asDouble();
   EXPECT_GT(fraction, 0.3);
   EXPECT_LT(fraction, 1.0);
@@ -100,7 +103,8 @@ TEST(CloudCli, ScanWritesSeenAndFullClouds) {
             std::string::npos);
   // The scanned cloud has only points the viewpoint saw, and fewer blockers
   // than the full one: scanned again from the same viewpoint, all are seen.
-  const Json::Value again = run_json("-fscan '" + dir.file("office_1.scan.ply") + "' --viewpoint " +
+  const Json::Value again = run_json("-fscan '" + dir.file("office_1.scan.ply") + "'" + radius +
+                                     " --viewpoint " +
                                      json["viewpoints"][0]["position"][0].asString() + "," +
                                      json["viewpoints"][0]["position"][1].asString() + "," +
                                      json["viewpoints"][0]["position"][2].asString());

@@ -1,15 +1,16 @@
 #pragma once
 // The spacing of a point cloud, from which the point radius is chosen
-// ("auto"). Spacing = the median, over a fixed stride sample of at most
-// kSpacingSamples points, of each sampled point's distance to its nearest
-// neighbour at a distinct position. Why these choices:
+// ("auto"). Spacing = the median, over a fixed stride sample of the points,
+// of each sampled point's distance to its nearest neighbour at a distinct
+// position. Why:
 // - distinct positions: real scans often store every point twice (two passes,
 //   merged frames); a zero distance says nothing about the gaps rays see.
 // - the median: spacing grows with the distance from the scanner, and stray
 //   points far outside the room have huge gaps; the median is the gap of the
 //   typical point and ignores both tails.
-// - a stride sample (every k-th point): deterministic without a seed, and the
-//   cost is one kd-tree build plus kSpacingSamples queries.
+// - a stride sample (every k-th point, k = max(1, points / kSpacingSamples),
+//   so up to 2 x kSpacingSamples queries): deterministic without a seed, and
+//   the cost is one kd-tree build plus those queries.
 
 #include <cmath>
 #include <cstddef>
@@ -41,11 +42,16 @@ namespace occlusion {
 inline constexpr double kAutoPointRadius = std::numeric_limits<double>::quiet_NaN();
 inline bool is_auto_radius(double radius) { return std::isnan(radius); }
 
-// point_radius "auto" = this x spacing. Half the spacing: neighbouring spheres
-// just touch, so a sensor's neighbouring pixels never hide each other (a scan
-// from the sensor keeps its frame), while rays through a surface sampled on a
-// square grid of that spacing are stopped with probability pi / 4.
-inline constexpr double kAutoRadiusPerSpacing = 0.5;
+// point_radius "auto" = a factor x spacing, by what the radius must do.
+// A scan (-fscan) must not let neighbours hide each other: half the spacing,
+// where neighbouring spheres just touch, so a sensor's neighbouring pixels
+// never block each other's rays.
+inline constexpr double kScanRadiusPerSpacing = 0.5;
+// Light-source rays (-poc) must not slip between the points of a surface:
+// spacing / sqrt(2) closes a surface sampled on a square grid of that spacing
+// (half the grid's diagonal); surfaces sampled more sparsely than the median
+// (far from a scanner) can still let rays through.
+inline constexpr double kTracingRadiusPerSpacing = 0.70710678118654752;
 
 // An explicit radius outside [kLowRadiusPerSpacing, kHighRadiusPerSpacing] x
 // spacing is far from the cloud's spacing (warned about by the jobs).
@@ -56,7 +62,7 @@ inline constexpr double kHighRadiusPerSpacing = 2.0;
 struct PointRadius {
   double radius = 0.0;
   bool automatic = false;  // chosen from the spacing
-  PointSpacing spacing;
+  PointSpacing spacing;  // all zero when the cloud has too few distinct points
 };
 
 }  // namespace occlusion

@@ -21,7 +21,7 @@ struct CloudOcclusionRequest {
   std::string path;
   ViewpointChoice viewpoints = ViewpointChoice::from_grid(9);
   std::uint64_t num_rays_per_vp = 30000;
-  // kAutoPointRadius: kAutoRadiusPerSpacing x the measured point spacing.
+  // kAutoPointRadius: from the measured point spacing (job_support.hpp).
   double point_radius = kAutoPointRadius;
   std::string polygon_path;  // openings file; empty = none
   double octree_resolution = 0.0;

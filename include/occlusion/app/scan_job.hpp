@@ -17,7 +17,7 @@ namespace occlusion {
 struct ScanRequest {
   std::string path;
   ViewpointChoice viewpoints = ViewpointChoice::from_pattern(7);
-  // kAutoPointRadius: kAutoRadiusPerSpacing x the measured point spacing.
+  // kAutoPointRadius: from the measured point spacing (job_support.hpp).
   double point_radius = kAutoPointRadius;
   double self_tolerance = -1.0;  // negative: 2 * point_radius (the radius in use)
   double octree_resolution = 0.0;
