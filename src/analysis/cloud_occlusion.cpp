@@ -164,8 +164,9 @@ CloudOcclusionResult compute_cloud_occlusion(const PointCloud& cloud,
   result.trace_seconds = seconds_since(start);
 
   const auto level = [](std::size_t occlusion_rays, std::size_t inside_view) {
-    return inside_view == 0 ? 0.0
-                            : static_cast<double>(occlusion_rays) / static_cast<double>(inside_view);
+    return inside_view == 0
+               ? 0.0
+               : static_cast<double>(occlusion_rays) / static_cast<double>(inside_view);
   };
   for (ViewpointRays& view : result.viewpoints) {
     view.rays = per_view;

@@ -10,7 +10,9 @@ namespace occlusion {
 
 namespace {
 
-double degrees(double radians) { return radians * 180.0 / M_PI; }
+double degrees(double radians) {
+  return radians * 180.0 / M_PI;
+}
 
 }  // namespace
 
@@ -25,7 +27,9 @@ double FieldOfView::horizontal_degrees() const {
   return degrees(std::atan(x_hi) - std::atan(x_lo));
 }
 
-double FieldOfView::vertical_degrees() const { return degrees(std::atan(y_hi) - std::atan(y_lo)); }
+double FieldOfView::vertical_degrees() const {
+  return degrees(std::atan(y_hi) - std::atan(y_lo));
+}
 
 FieldOfView measure_field_of_view(const PointCloud& cloud) {
   if (cloud.size() == 0) throw std::invalid_argument("field of view: no points");

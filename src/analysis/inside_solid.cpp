@@ -25,8 +25,7 @@ std::vector<double> back_face_shares(const TriangleMesh& mesh,
       const double r = std::sqrt(1.0 - z * z);
       const double phi = golden * static_cast<double>(k);
       const Eigen::Vector3f direction(static_cast<float>(r * std::cos(phi)),
-                                      static_cast<float>(r * std::sin(phi)),
-                                      static_cast<float>(z));
+                                      static_cast<float>(r * std::sin(phi)), static_cast<float>(z));
       Ray ray;
       ray.origin = viewpoint.cast<float>();
       ray.direction = direction;

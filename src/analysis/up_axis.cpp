@@ -41,14 +41,16 @@ UpAxis UpAxis::parse(const std::string& text) {
     s.erase(0, 1);
   }
   if (s.size() != 1 || s[0] < 'x' || s[0] > 'z') {
-    throw std::invalid_argument("up must be a signed axis (+x, -x, +y, -y, +z, -z), got '" +
-                                text + "'");
+    throw std::invalid_argument("up must be a signed axis (+x, -x, +y, -y, +z, -z), got '" + text +
+                                "'");
   }
   up.axis = s[0] - 'x';
   return up;
 }
 
-std::string UpAxis::name() const { return std::string(sign < 0 ? "-" : "+") + kAxisNames[axis]; }
+std::string UpAxis::name() const {
+  return std::string(sign < 0 ? "-" : "+") + kAxisNames[axis];
+}
 
 Eigen::Vector3d UpAxis::vector() const {
   Eigen::Vector3d v = Eigen::Vector3d::Zero();
@@ -70,8 +72,8 @@ std::optional<std::string> check_up_axis(const std::vector<Eigen::Vector3f>& poi
   message.precision(3);
   message << "up is " << up.name() << ", but the largest flat structure is perpendicular to "
           << kAxisNames[strongest] << " (" << 100.0 * share[strongest]
-          << " % of the points lie in one thin slab across " << kAxisNames[strongest]
-          << ", only " << 100.0 * share[up.axis] << " % across " << kAxisNames[up.axis]
+          << " % of the points lie in one thin slab across " << kAxisNames[strongest] << ", only "
+          << 100.0 * share[up.axis] << " % across " << kAxisNames[up.axis]
           << "): is the floor perpendicular to " << kAxisNames[strongest]
           << "? Camera-frame data (Kinect: +y down) needs up -y";
   return message.str();

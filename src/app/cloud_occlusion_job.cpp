@@ -75,10 +75,10 @@ std::optional<FieldOfView> single_view_field(const PointCloud& cloud,
     return field_of_view_from_angles(sensor, request.field_of_view[0], request.field_of_view[1]);
   }
   if (!sensor.single_view()) return std::nullopt;
-  report.field_of_view_source =
-      sensor.organised() ? "organised frame " + std::to_string(sensor.width) + " x " +
-                               std::to_string(sensor.height)
-                         : std::string("VIEWPOINT header");
+  report.field_of_view_source = sensor.organised()
+                                    ? "organised frame " + std::to_string(sensor.width) + " x " +
+                                          std::to_string(sensor.height)
+                                    : std::string("VIEWPOINT header");
   try {
     return measure_field_of_view(cloud);
   } catch (const std::invalid_argument& e) {
@@ -252,9 +252,10 @@ CloudOcclusionReport run_cloud_occlusion(const CloudOcclusionRequest& request,
   const double load_seconds = job::seconds_since(start);
   progress.check_cancel();
 
-  CloudOcclusionReport report =
-      run_cloud_occlusion_on(loaded.cloud, job::resolve_for_cloud(request.viewpoints, loaded.cloud, request.frame, request.up),
-                             openings, request, progress);
+  CloudOcclusionReport report = run_cloud_occlusion_on(
+      loaded.cloud,
+      job::resolve_for_cloud(request.viewpoints, loaded.cloud, request.frame, request.up), openings,
+      request, progress);
   report.dropped_nan = loaded.dropped_nan;
   report.skipped_lines = loaded.skipped_lines;
   report.load_seconds = load_seconds;
@@ -280,9 +281,9 @@ Json::Value to_json(const CloudOcclusionReport& report) {
   json["input"] = q.path;
   json["points"] = Json::UInt64(report.result.points);
   json["openings"] = Json::UInt64(report.openings);
-  json["field_of_view"] = report.field_of_view ? field_of_view_json(*report.field_of_view,
-                                                                    report.field_of_view_source)
-                                               : Json::Value();
+  json["field_of_view"] =
+      report.field_of_view ? field_of_view_json(*report.field_of_view, report.field_of_view_source)
+                           : Json::Value();
   json["dropped_nan_points"] = Json::UInt64(report.dropped_nan);
   json["skipped_lines"] = Json::UInt64(report.skipped_lines);
   if (report.exterior) {

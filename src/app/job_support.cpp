@@ -96,8 +96,9 @@ void warn_viewpoints_inside_solids(const TriangleMesh& mesh,
   for (std::size_t v = 0; v < shares.size(); ++v) {
     if (shares[v] <= kInsideBackFaceShare) continue;
     std::ostringstream message;
-    message << "viewpoint " << viewpoints.names[v] << " at " << position_text(viewpoints.positions[v])
-            << ": " << static_cast<int>(std::lround(100.0 * shares[v]))
+    message << "viewpoint " << viewpoints.names[v] << " at "
+            << position_text(viewpoints.positions[v]) << ": "
+            << static_cast<int>(std::lround(100.0 * shares[v]))
             << " % of its rays first hit the back of a face, so it is inside a closed solid "
                "(or the mesh's faces point away from it): move it, or check the face order";
     warnings.push_back(message.str());

@@ -110,8 +110,9 @@ ScanReport run_scan(const ScanRequest& request, const Progress& progress) {
   const double load_seconds = job::seconds_since(start);
   progress.check_cancel();
 
-  ScanReport report =
-      run_scan_on(cloud, job::resolve_for_cloud(request.viewpoints, cloud, request.frame, request.up), request, progress);
+  ScanReport report = run_scan_on(
+      cloud, job::resolve_for_cloud(request.viewpoints, cloud, request.frame, request.up), request,
+      progress);
   report.dropped_nan = loaded.dropped_nan;
   report.skipped_lines = loaded.skipped_lines;
   report.load_seconds = load_seconds;

@@ -49,8 +49,7 @@ void ViewpointChoice::validate() const {
 }
 
 ViewpointChoice::Resolved ViewpointChoice::resolve(const Eigen::Vector3d& lo,
-                                                   const Eigen::Vector3d& hi,
-                                                   int up_axis) const {
+                                                   const Eigen::Vector3d& hi, int up_axis) const {
   validate();
   Resolved resolved;
   switch (kind) {

@@ -35,7 +35,7 @@ void add_oriented_box(TriangleMesh& mesh, const Eigen::Vector3d& lo, const Eigen
 
 TEST(InsideSolid, ViewpointInsideAClosedSolidSeesOnlyBackFaces) {
   TriangleMesh mesh;
-  add_oriented_box(mesh, Eigen::Vector3d::Zero(), Eigen::Vector3d(6, 5, 3), true);  // the room
+  add_oriented_box(mesh, Eigen::Vector3d::Zero(), Eigen::Vector3d(6, 5, 3), true);    // the room
   add_oriented_box(mesh, Eigen::Vector3d(1, 1, 0), Eigen::Vector3d(2, 2, 1), false);  // a cupboard
   const std::vector<double> shares =
       back_face_shares(mesh, {Eigen::Vector3d(4, 3, 1.5), Eigen::Vector3d(1.5, 1.5, 0.5)});

@@ -15,8 +15,8 @@ using testing::add_grid;
 
 PointCloud plane_grid(int n, double step) {
   PointCloud cloud;
-  add_grid(cloud, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(), n,
-           n, step);
+  add_grid(cloud, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(), n, n,
+           step);
   return cloud;
 }
 

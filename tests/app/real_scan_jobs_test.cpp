@@ -2,10 +2,10 @@
 // axis and single-view frames, on scenes whose answer is known.
 #include <gtest/gtest.h>
 
+#include "io/scratch_directory.hpp"
 #include "occlusion/app/cloud_occlusion_job.hpp"
 #include "occlusion/app/errors.hpp"
 #include "occlusion/app/scan_job.hpp"
-#include "io/scratch_directory.hpp"
 #include "occlusion/core/random.hpp"
 #include "occlusion/io/cloud_io.hpp"
 #include "support/cloud_scenes.hpp"
@@ -67,8 +67,7 @@ TEST(RealScanJobs, ScanOfAKinectFrameFromItsSensorKeepsItWithDefaults) {
   EXPECT_LT(fixed.result.visible_fraction, 0.99);
   EXPECT_TRUE(any_warning_has(fixed.warnings, "visible fraction is too low"));
   request.point_radius = 1e-5;
-  EXPECT_TRUE(
-      any_warning_has(run_scan_on(frame, at_sensor(), request).warnings, "is too high"));
+  EXPECT_TRUE(any_warning_has(run_scan_on(frame, at_sensor(), request).warnings, "is too high"));
 }
 
 TEST(RealScanJobs, OcclusionOfAFrameIsTakenOverItsFieldOfView) {
@@ -160,8 +159,9 @@ TEST(RealScanJobs, GridFollowsUpAndWarnsWhenTheDataDisagree) {
   request.up = "+z";  // the default, wrong for this frame
   const ScanReport wrong = run_scan(request);
   for (const auto& p : wrong.viewpoint_positions) EXPECT_DOUBLE_EQ(p.z(), 1.5);
-  EXPECT_TRUE(any_warning_has(wrong.warnings, "up is +z, but the largest flat structure is "
-                                              "perpendicular to y"));
+  EXPECT_TRUE(any_warning_has(wrong.warnings,
+                              "up is +z, but the largest flat structure is "
+                              "perpendicular to y"));
 }
 
 TEST(RealScanJobs, RefusesUnknownFrameUpAndFieldOfView) {

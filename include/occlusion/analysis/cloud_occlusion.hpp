@@ -55,9 +55,9 @@ struct CloudOcclusionOptions {
 struct ViewpointRays {
   Eigen::Vector3d position;
   std::size_t rays = 0;
-  std::size_t hits = 0;              // stopped by a point
-  std::size_t through_openings = 0;  // left through an opening (and hit no point first)
-  std::size_t occlusion_rays = 0;    // neither
+  std::size_t hits = 0;               // stopped by a point
+  std::size_t through_openings = 0;   // left through an opening (and hit no point first)
+  std::size_t occlusion_rays = 0;     // neither
   std::size_t outside_view_rays = 0;  // outside the field of view (when set): not traced
   // occlusion_rays / (rays - outside_view_rays); 0 when every ray is outside the view
   double occlusion_level = 0.0;

@@ -40,7 +40,9 @@ namespace occlusion {
 // A request's point_radius "auto" (the default): NaN, since every number a
 // user can give (0, negative) must stay an error; test it with is_auto_radius.
 inline constexpr double kAutoPointRadius = std::numeric_limits<double>::quiet_NaN();
-inline bool is_auto_radius(double radius) { return std::isnan(radius); }
+inline bool is_auto_radius(double radius) {
+  return std::isnan(radius);
+}
 
 // point_radius "auto" = a factor x spacing, by what the radius must do.
 // A scan (-fscan) must not let neighbours hide each other: half the spacing,
@@ -62,7 +64,7 @@ inline constexpr double kHighRadiusPerSpacing = 2.0;
 struct PointRadius {
   double radius = 0.0;
   bool automatic = false;  // chosen from the spacing
-  PointSpacing spacing;  // all zero when the cloud has too few distinct points
+  PointSpacing spacing;    // all zero when the cloud has too few distinct points
 };
 
 }  // namespace occlusion

@@ -57,7 +57,7 @@ struct ExteriorReport {
 struct CloudOcclusionReport {
   CloudOcclusionRequest request;
   CloudOcclusionResult result;
-  PointRadius point_radius;  // as traced, with the measured spacing
+  PointRadius point_radius;                  // as traced, with the measured spacing
   std::optional<FieldOfView> field_of_view;  // set for a single-view frame
   std::string field_of_view_source;          // why the cloud was taken as one
   std::optional<ExteriorReport> exterior;
