@@ -84,11 +84,13 @@ TEST(FieldOfView, CloudOcclusionCountsRaysOutsideTheViewApart) {
   EXPECT_EQ(result.occlusion_rays, 0u);
   EXPECT_EQ(result.occlusion_level, 0.0);
 
-  // Without the view every ray outside it is an occlusion ray: the old answer.
+  // Without the view the rays outside it are occlusion rays (the old answer),
+  // but for the few that graze the spheres of the frame's border points.
   options.field_of_view.reset();
   const CloudOcclusionResult all = compute_cloud_occlusion(frame, sensor, {}, options);
-  EXPECT_EQ(all.occlusion_rays, outside);
-  EXPECT_NEAR(all.occlusion_level, static_cast<double>(outside) / 20000.0, 1e-12);
+  EXPECT_EQ(all.hits, result.hits + (outside - all.occlusion_rays));
+  EXPECT_LE(all.occlusion_rays, outside);
+  EXPECT_GT(all.occlusion_rays, outside * 99 / 100);
 }
 
 }  // namespace

@@ -35,10 +35,11 @@ void add_oriented_box(TriangleMesh& mesh, const Eigen::Vector3d& lo, const Eigen
 
 TEST(InsideSolid, ViewpointInsideAClosedSolidSeesOnlyBackFaces) {
   TriangleMesh mesh;
-  add_oriented_box(mesh, Eigen::Vector3d::Zero(), Eigen::Vector3d(6, 5, 3), true);    // the room
-  add_oriented_box(mesh, Eigen::Vector3d(1, 1, 0), Eigen::Vector3d(2, 2, 1), false);  // a cupboard
+  add_oriented_box(mesh, Eigen::Vector3d::Zero(), Eigen::Vector3d(6, 5, 3), true);  // the room
+  // A cupboard off the floor (a face on the floor would tie with it).
+  add_oriented_box(mesh, Eigen::Vector3d(1, 1, 0.5), Eigen::Vector3d(2, 2, 1.5), false);
   const std::vector<double> shares =
-      back_face_shares(mesh, {Eigen::Vector3d(4, 3, 1.5), Eigen::Vector3d(1.5, 1.5, 0.5)});
+      back_face_shares(mesh, {Eigen::Vector3d(4, 3, 1.5), Eigen::Vector3d(1.5, 1.5, 1.0)});
   ASSERT_EQ(shares.size(), 2u);
   EXPECT_EQ(shares[0], 0.0);  // in the room: every first hit is a front face
   EXPECT_EQ(shares[1], 1.0);  // in the cupboard: every ray hits its inside

@@ -61,8 +61,8 @@ TEST(RealScanJobs, ScanOfAKinectFrameFromItsSensorKeepsItWithDefaults) {
   EXPECT_DOUBLE_EQ(json["point_spacing"]["spacing"].asDouble(),
                    report.point_radius.spacing.spacing);
 
-  // The old default, 6 x this frame's spacing, hides points: the warning says so.
-  request.point_radius = 0.01;
+  // A radius of several spacings hides points: the warning says so.
+  request.point_radius = 0.03;
   const ScanReport fixed = run_scan_on(frame, at_sensor(), request);
   EXPECT_LT(fixed.result.visible_fraction, 0.99);
   EXPECT_TRUE(any_warning_has(fixed.warnings, "visible fraction is too low"));

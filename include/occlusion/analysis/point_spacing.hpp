@@ -45,10 +45,14 @@ inline bool is_auto_radius(double radius) {
 }
 
 // point_radius "auto" = a factor x spacing, by what the radius must do.
-// A scan (-fscan) must not let neighbours hide each other: half the spacing,
-// where neighbouring spheres just touch, so a sensor's neighbouring pixels
-// never block each other's rays.
-inline constexpr double kScanRadiusPerSpacing = 0.5;
+// A scan (-fscan) must not let neighbours hide each other. Seen from a
+// sensor, the ray to a pixel's point passes a neighbouring pixel's point at
+// (its depth) x (the pixel angle), and the spacing grows the same way with
+// depth, so the median spacing is about (median depth) x (pixel angle). A
+// radius of a quarter of it keeps every point closer than a quarter of the
+// median depth from hiding its neighbours (a Kinect frame: from 0.5 m when
+// the median is 2 m), and rays still meet the surface in their own pixel.
+inline constexpr double kScanRadiusPerSpacing = 0.25;
 // Light-source rays (-poc) must not slip between the points of a surface:
 // spacing / sqrt(2) closes a surface sampled on a square grid of that spacing
 // (half the grid's diagonal); surfaces sampled more sparsely than the median
