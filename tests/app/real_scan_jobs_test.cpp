@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "io/scratch_directory.hpp"
+#include "occlusion/analysis/scene_frame.hpp"
 #include "occlusion/app/cloud_occlusion_job.hpp"
 #include "occlusion/app/errors.hpp"
 #include "occlusion/app/scan_job.hpp"
