@@ -94,7 +94,10 @@ TEST(RealScanJobs, OcclusionOfAFrameIsTakenOverItsFieldOfView) {
   const CloudOcclusionReport all = run_cloud_occlusion_on(unorganised, at_sensor(), {}, request);
   EXPECT_FALSE(all.field_of_view);
   EXPECT_EQ(all.result.outside_view_rays, 0u);
-  EXPECT_EQ(all.result.occlusion_rays, report.result.outside_view_rays);
+  // The rays outside the view become occlusion rays, but for the few that
+  // graze the spheres of the frame's border points.
+  EXPECT_LE(all.result.occlusion_rays, report.result.outside_view_rays);
+  EXPECT_GT(all.result.occlusion_rays, report.result.outside_view_rays * 99 / 100);
   // ... unless a field of view is given.
   request.field_of_view = {57.0, 44.6};
   const CloudOcclusionReport given = run_cloud_occlusion_on(unorganised, at_sensor(), {}, request);
