@@ -60,6 +60,47 @@ void write_escapes(const std::string& path, const CloudOcclusionResult& result) 
   });
 }
 
+Json::Value numbers_json(const std::vector<double>& numbers) {
+  Json::Value json(Json::arrayValue);
+  for (const double x : numbers) json.append(x);
+  return json;
+}
+
+// The frame's field of view, when the cloud is a single-view frame, with why it is one.
+std::optional<FieldOfView> single_view_field(const PointCloud& cloud,
+                                             const CloudOcclusionRequest& request,
+                                             CloudOcclusionReport& report) {
+  const SensorFrame& sensor = cloud.sensor;
+  if (!request.field_of_view.empty()) {
+    report.field_of_view_source = "field_of_view setting";
+    return field_of_view_from_angles(sensor, request.field_of_view[0], request.field_of_view[1]);
+  }
+  if (!sensor.single_view()) return std::nullopt;
+  report.field_of_view_source = sensor.organised()
+                                    ? "organised frame " + std::to_string(sensor.width) + " x " +
+                                          std::to_string(sensor.height)
+                                    : std::string("VIEWPOINT header");
+  try {
+    return measure_field_of_view(cloud);
+  } catch (const std::invalid_argument& e) {
+    report.warnings.push_back(request.path + " looks like a single-view frame (" +
+                              report.field_of_view_source + ") but " + e.what() +
+                              "; all rays are counted (set field_of_view to override)");
+    report.field_of_view_source.clear();
+    return std::nullopt;
+  }
+}
+
+Json::Value field_of_view_json(const FieldOfView& view, const std::string& source) {
+  Json::Value json(Json::objectValue);
+  json["source"] = source;
+  json["horizontal_degrees"] = view.horizontal_degrees();
+  json["vertical_degrees"] = view.vertical_degrees();
+  json["tan_x"] = numbers_json({view.x_lo, view.x_hi});
+  json["tan_y"] = numbers_json({view.y_lo, view.y_hi});
+  return json;
+}
+
 Json::Value result_json(const CloudOcclusionResult& r, const std::vector<std::string>& names) {
   Json::Value json(Json::objectValue);
   json["occlusion_level"] = r.occlusion_level;
@@ -67,6 +108,7 @@ Json::Value result_json(const CloudOcclusionResult& r, const std::vector<std::st
   json["hits"] = Json::UInt64(r.hits);
   json["through_openings"] = Json::UInt64(r.through_openings);
   json["occlusion_rays"] = Json::UInt64(r.occlusion_rays);
+  json["outside_view_rays"] = Json::UInt64(r.outside_view_rays);
   json["blocking_points"] = Json::UInt64(r.blocking_points);
   Json::Value viewpoints(Json::arrayValue);
   for (std::size_t v = 0; v < r.viewpoints.size(); ++v) {
@@ -77,6 +119,7 @@ Json::Value result_json(const CloudOcclusionResult& r, const std::vector<std::st
     entry["hits"] = Json::UInt64(vp.hits);
     entry["through_openings"] = Json::UInt64(vp.through_openings);
     entry["occlusion_rays"] = Json::UInt64(vp.occlusion_rays);
+    entry["outside_view_rays"] = Json::UInt64(vp.outside_view_rays);
     viewpoints.append(entry);
   }
   json["viewpoints"] = viewpoints;
@@ -91,7 +134,12 @@ void validate(const CloudOcclusionRequest& request) {
   }
   check_keys(cloud_occlusion_keys(), request);
   request.viewpoints.validate();
+  job::parse_frame(request.frame);
+  job::parse_up(request.up);
   parse_sampling(request.sampling);
+  if (!request.field_of_view.empty() && request.field_of_view.size() != 2) {
+    throw KeyError("field_of_view", "takes two angles (horizontal, vertical) in degrees");
+  }
   if (request.exterior && request.exterior_classes.empty()) {
     throw KeyError("exterior_classes", "must name at least one class");
   }
@@ -121,14 +169,19 @@ CloudOcclusionReport run_cloud_occlusion_on(const PointCloud& cloud,
   CloudOcclusionReport report;
   report.request = request;
   report.viewpoint_names = viewpoints.names;
+  report.frame = viewpoints.frame;
+  report.warnings.insert(report.warnings.end(), viewpoints.warnings.begin(),
+                         viewpoints.warnings.end());
   report.openings = openings.size();
   check_memory_budget(
       cloud_occlusion_memory(cloud.size(), viewpoints.positions.size(), request.num_rays_per_vp,
                              request.escape_directions || !request.out.empty()),
       request.max_memory_mb);
+  report.point_radius =
+      job::choose_point_radius(cloud, request.point_radius, "-poc", report.warnings);
 
   CloudOcclusionOptions options;
-  options.point_radius = request.point_radius;
+  options.point_radius = report.point_radius.radius;
   options.num_rays_per_vp = static_cast<std::size_t>(request.num_rays_per_vp);
   options.sampling = parse_sampling(request.sampling);
   options.light_radius = request.light_radius;
@@ -137,6 +190,8 @@ CloudOcclusionReport run_cloud_occlusion_on(const PointCloud& cloud,
   options.seed = request.seed;
   options.threads = request.threads;
   options.keep_escape_directions = request.escape_directions || !request.out.empty();
+  report.field_of_view = single_view_field(cloud, request, report);
+  options.field_of_view = report.field_of_view;
   report.result = compute_cloud_occlusion(cloud, viewpoints.positions, openings, options, progress);
 
   if (request.exterior) {
@@ -165,9 +220,10 @@ CloudOcclusionReport run_cloud_occlusion(const CloudOcclusionRequest& request,
   const double load_seconds = job::seconds_since(start);
   progress.check_cancel();
 
-  CloudOcclusionReport report =
-      run_cloud_occlusion_on(loaded.cloud, job::resolve_for_cloud(request.viewpoints, loaded.cloud),
-                             openings, request, progress);
+  CloudOcclusionReport report = run_cloud_occlusion_on(
+      loaded.cloud,
+      job::resolve_for_cloud(request.viewpoints, loaded.cloud, request.frame, request.up), openings,
+      request, progress);
   report.dropped_nan = loaded.dropped_nan;
   report.skipped_lines = loaded.skipped_lines;
   report.load_seconds = load_seconds;
@@ -195,6 +251,9 @@ Json::Value to_json(const CloudOcclusionReport& report) {
   json["input"] = q.path;
   json["points"] = Json::UInt64(report.result.points);
   json["openings"] = Json::UInt64(report.openings);
+  json["field_of_view"] =
+      report.field_of_view ? field_of_view_json(*report.field_of_view, report.field_of_view_source)
+                           : Json::Value();
   json["dropped_nan_points"] = Json::UInt64(report.dropped_nan);
   json["skipped_lines"] = Json::UInt64(report.skipped_lines);
   if (report.exterior) {
@@ -208,7 +267,13 @@ Json::Value to_json(const CloudOcclusionReport& report) {
     json["interior_exterior_ratio"] = std::isfinite(ratio) ? Json::Value(ratio) : Json::Value();
   }
 
-  json["parameters"] = parameters_json(cloud_occlusion_keys(), q);
+  Json::Value parameters = parameters_json(cloud_occlusion_keys(), q);
+  // The radius in force (measured when automatic), not the "auto" asked for.
+  parameters["point_radius"] = report.point_radius.radius;
+  parameters["point_radius_auto"] = report.point_radius.automatic;
+  json["parameters"] = parameters;
+  if (!report.frame.isNull()) json["frame"] = report.frame;
+  json["point_spacing"] = job::point_radius_json(report.point_radius);
 
   json["octree"] = to_json(report.result.octree);
 

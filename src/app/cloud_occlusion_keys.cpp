@@ -52,7 +52,16 @@ const Keys<CloudOcclusionRequest>& cloud_occlusion_keys() {
                  "room/Area folder")},
       viewpoint_keys(&R::viewpoints),
       cloud_tracing_keys(),
-      {max_memory_key(&R::max_memory_mb),
+      {frame_key(&R::frame), up_key(&R::up),
+       key("field_of_view", &R::field_of_view)
+           .range(0.5, 179.5)
+           .max_items(2)
+           .unit("degrees")
+           .metavar("H,V")
+           .doc("treat the cloud as one depth frame with this field of view around the sensor's "
+                "+z: rays outside it are counted apart (outside_view_rays); empty: measured "
+                "from an organised or VIEWPOINT PCD"),
+       max_memory_key(&R::max_memory_mb),
        key("escape_directions", &R::escape_directions)
            .doc("keep each occlusion ray's direction in the report (always kept with out)"),
        out_key(&R::out,

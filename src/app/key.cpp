@@ -50,6 +50,8 @@ const char* type_name(ValueType type) {
       return "path_list";
     case ValueType::kIntegerList:
       return "integer_list";
+    case ValueType::kNumberList:
+      return "number_list";
     case ValueType::kPointList:
       return "point_list";
     case ValueType::kViewpointSets:
@@ -68,6 +70,7 @@ std::string kebab(const std::string& name) {
 
 std::string describe_range(const KeyInfo& info, const char* noun) {
   const bool integer = info.type == ValueType::kInteger || info.type == ValueType::kIntegerList;
+  // (a number list's bounds are each item's)
   const bool has_max = info.max && *info.max < 1.8e19;
   std::string text = noun;
   if (info.min && has_max) {
@@ -168,6 +171,14 @@ std::string problem(const KeyInfo& info, const Json::Value& v) {
         if (!range.empty()) return range;
       }
       break;
+    case ValueType::kNumberList:
+      if (!v.isArray()) return wrong;
+      for (const auto& item : v) {
+        if (!is_number(item) || !std::isfinite(item.asDouble())) return wrong;
+        const std::string range = in_range(info, item.asDouble());
+        if (!range.empty()) return range;
+      }
+      break;
     case ValueType::kPointList:
       if (!v.isArray() || v.empty()) return wrong;
       for (const auto& item : v) {
@@ -244,6 +255,9 @@ std::string describe_values(const KeyInfo& info) {
       break;
     case ValueType::kIntegerList:
       text = "a list of " + describe_range(info, "integers");
+      break;
+    case ValueType::kNumberList:
+      text = "a list of " + describe_range(info, "numbers");
       break;
     case ValueType::kPointList:
       text = "a list of [x, y, z] points";

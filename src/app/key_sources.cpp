@@ -19,8 +19,8 @@ const KeyInfo* find_info(const std::vector<KeyInfo>& infos, const std::string& n
 
 bool is_list(ValueType type) {
   return type == ValueType::kStringList || type == ValueType::kPathList ||
-         type == ValueType::kIntegerList || type == ValueType::kPointList ||
-         type == ValueType::kViewpointSets;
+         type == ValueType::kIntegerList || type == ValueType::kNumberList ||
+         type == ValueType::kPointList || type == ValueType::kViewpointSets;
 }
 
 std::vector<std::string> split_list(const std::string& text, char separator = ',') {
@@ -98,6 +98,11 @@ Json::Value from_text(const KeyInfo& info, const std::string& option, const std:
       if (info.repeatable) return parse_integer(option, text);
       Json::Value list(Json::arrayValue);
       for (const auto& item : split_list(text)) list.append(parse_integer(option, item));
+      return list;
+    }
+    case ValueType::kNumberList: {
+      Json::Value list(Json::arrayValue);
+      for (const auto& item : split_list(text)) list.append(parse_number(option, item));
       return list;
     }
     case ValueType::kPointList:

@@ -45,6 +45,8 @@ void validate(const ScanRequest& request) {
   }
   check_keys(scan_keys(), request);
   request.viewpoints.validate();
+  job::parse_frame(request.frame);
+  job::parse_up(request.up);
   job::cloud_extension(request.format);
 }
 
@@ -55,12 +57,17 @@ ScanReport run_scan_on(const PointCloud& cloud, const ViewpointChoice::Resolved&
   ScanReport report;
   report.request = request;
   report.viewpoint_names = viewpoints.names;
+  report.frame = viewpoints.frame;
+  report.warnings.insert(report.warnings.end(), viewpoints.warnings.begin(),
+                         viewpoints.warnings.end());
   report.viewpoint_positions = viewpoints.positions;
   check_memory_budget(scan_memory(cloud.size(), viewpoints.positions.size()),
                       request.max_memory_mb);
+  report.point_radius =
+      job::choose_point_radius(cloud, request.point_radius, "-fscan", report.warnings);
 
   ScanOptions options;
-  options.point_radius = request.point_radius;
+  options.point_radius = report.point_radius.radius;
   options.self_tolerance = request.self_tolerance;
   options.octree.min_cell_size = static_cast<float>(request.octree_resolution);
   options.octree.enable_acceleration = request.enable_acceleration;
@@ -86,8 +93,9 @@ ScanReport run_scan(const ScanRequest& request, const Progress& progress) {
   const double load_seconds = job::seconds_since(start);
   progress.check_cancel();
 
-  ScanReport report =
-      run_scan_on(cloud, job::resolve_for_cloud(request.viewpoints, cloud), request, progress);
+  ScanReport report = run_scan_on(
+      cloud, job::resolve_for_cloud(request.viewpoints, cloud, request.frame, request.up), request,
+      progress);
   report.dropped_nan = loaded.dropped_nan;
   report.skipped_lines = loaded.skipped_lines;
   report.load_seconds = load_seconds;
@@ -153,9 +161,14 @@ Json::Value to_json(const ScanReport& report) {
   json["classes"] = classes;
 
   Json::Value parameters = parameters_json(scan_keys(), q);
-  // The tolerance in force, not its "-1 = 2 x radius" shorthand.
-  parameters["self_tolerance"] = q.self_tolerance < 0.0 ? 2.0 * q.point_radius : q.self_tolerance;
+  // The radius and tolerance in force, not "auto" or the "-1 = 2 x radius" shorthand.
+  const double radius = report.point_radius.radius;
+  parameters["point_radius"] = radius;
+  parameters["point_radius_auto"] = report.point_radius.automatic;
+  parameters["self_tolerance"] = q.self_tolerance < 0.0 ? 2.0 * radius : q.self_tolerance;
   json["parameters"] = parameters;
+  if (!report.frame.isNull()) json["frame"] = report.frame;
+  json["point_spacing"] = job::point_radius_json(report.point_radius);
 
   Json::Value timings(Json::objectValue);
   timings["load_seconds"] = report.load_seconds;

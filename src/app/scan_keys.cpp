@@ -11,7 +11,7 @@ const Keys<ScanRequest>& scan_keys() {
       {input_key(&R::path, "point cloud: .pcd, .ply, .txt or an S3DIS room/Area folder")},
       viewpoint_keys(&R::viewpoints),
       {point_radius_key(&R::point_radius), self_tolerance_key(&R::self_tolerance),
-       octree_resolution_key(&R::octree_resolution),
+       frame_key(&R::frame), up_key(&R::up), octree_resolution_key(&R::octree_resolution),
        enable_acceleration_key(&R::enable_acceleration),
        cloud_format_key(&R::format, "format of the written clouds"),
        skip_bad_lines_key(&R::skip_bad_lines), threads_key(&R::threads),

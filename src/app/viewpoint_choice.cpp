@@ -54,7 +54,7 @@ void ViewpointChoice::validate() const {
 }
 
 ViewpointChoice::Resolved ViewpointChoice::resolve(const Eigen::Vector3d& lo,
-                                                   const Eigen::Vector3d& hi) const {
+                                                   const Eigen::Vector3d& hi, int up_axis) const {
   validate();
   Resolved resolved;
   switch (kind) {
@@ -66,7 +66,7 @@ ViewpointChoice::Resolved ViewpointChoice::resolve(const Eigen::Vector3d& lo,
       resolved.names = pattern_viewpoint_names(pattern);
       return resolved;
     case Kind::kGrid:
-      resolved.positions = grid_viewpoints(grid_count, lo, hi);
+      resolved.positions = grid_viewpoints(grid_count, lo, hi, up_axis);
       break;
   }
   for (std::size_t v = 0; v < resolved.positions.size(); ++v) {

@@ -22,8 +22,8 @@ namespace {
 
 bool is_list(ValueType type) {
   return type == ValueType::kStringList || type == ValueType::kPathList ||
-         type == ValueType::kIntegerList || type == ValueType::kPointList ||
-         type == ValueType::kViewpointSets;
+         type == ValueType::kIntegerList || type == ValueType::kNumberList ||
+         type == ValueType::kPointList || type == ValueType::kViewpointSets;
 }
 
 // A valid value of the key, other than its default where the type allows.
@@ -66,6 +66,12 @@ Json::Value sample_value(const KeyInfo& info) {
       Json::Value list(Json::arrayValue);
       list.append(Json::UInt64(static_cast<std::uint64_t>(info.min.value_or(0.0))));
       list.append(Json::UInt64(static_cast<std::uint64_t>(info.max.value_or(3.0))));
+      return list;
+    }
+    case ValueType::kNumberList: {
+      Json::Value list(Json::arrayValue);
+      list.append(info.min.value_or(0.0) + 1.5);
+      list.append(info.min.value_or(0.0) + 2.5);
       return list;
     }
     case ValueType::kPointList: {

@@ -38,6 +38,7 @@ enum class ValueType {
   kStringList,
   kPathList,
   kIntegerList,
+  kNumberList,
   kPointList,      // [[x, y, z], ...]
   kViewpointSets,  // [{"name", and "pattern" | "num_vp" | "viewpoints"}, ...]
 };
@@ -98,6 +99,8 @@ constexpr ValueType value_type() {
     return ValueType::kStringList;
   } else if constexpr (std::is_same_v<T, std::vector<int>>) {
     return ValueType::kIntegerList;
+  } else if constexpr (std::is_same_v<T, std::vector<double>>) {
+    return ValueType::kNumberList;
   } else {
     static_assert(sizeof(T) == 0, "no ValueType for this field type");
   }
@@ -123,6 +126,10 @@ T from_json(const Json::Value& value) {
   } else if constexpr (std::is_same_v<T, std::vector<int>>) {
     std::vector<int> items;
     for (const auto& item : value) items.push_back(item.asInt());
+    return items;
+  } else if constexpr (std::is_same_v<T, std::vector<double>>) {
+    std::vector<double> items;
+    for (const auto& item : value) items.push_back(item.asDouble());
     return items;
   }
 }

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "occlusion/analysis/confusion_matrix.hpp"
+#include "occlusion/analysis/point_spacing.hpp"
 #include "occlusion/app/key.hpp"
 
 namespace occlusion {
@@ -71,13 +72,42 @@ KeyBuilder<R> samples_per_unit_area_key(double R::*field) {
       .doc("sampling density of the faces: max(1, round(area x density)) samples per face");
 }
 
+// "auto" (held as kAutoPointRadius): from the measured point spacing.
 template <class R>
 KeyBuilder<R> point_radius_key(double R::*field) {
-  return key("point_radius", field)
+  return custom_key<R>(
+             "point_radius", ValueType::kNumber,
+             [field](R& r, const Json::Value& v) {
+               r.*field = v.isString() ? kAutoPointRadius : v.asDouble();
+             },
+             [field](const R& r) {
+               return is_auto_radius(r.*field) ? Json::Value("auto") : Json::Value(r.*field);
+             })
       .positive_up_to(1e6)
+      .auto_allowed()
       .unit("scene units")
       .metavar("R")
-      .doc("sphere radius of each point");
+      .doc(
+          "sphere radius of each point; auto: from the measured point spacing (README, Real "
+          "scans)");
+}
+
+template <class R>
+KeyBuilder<R> frame_key(std::string R::*field) {
+  return key("frame", field)
+      .choices({"robust", "bbox"})
+      .doc(
+          "box the pattern or grid is placed on: robust (1-99 % quantiles per axis, cuts off "
+          "stray points) or bbox (every point)");
+}
+
+template <class R>
+KeyBuilder<R> up_key(std::string R::*field) {
+  return key("up", field)
+      .choices({"+x", "-x", "+y", "-y", "+z", "-z"})
+      .doc(
+          "which way is up where height matters (the grid's mid-height); -y for camera-frame "
+          "data");
 }
 
 template <class R>
