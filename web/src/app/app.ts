@@ -60,7 +60,6 @@ export class App {
   constructor() {
     const notices = new Notices(byId("notices"), {
       stage: byId("stage"),
-      gui: byId("gui"),
       stats: byId("stats"),
       legend: byId("legend"),
       jobs: byId("jobs"),

@@ -15,6 +15,7 @@ import {
   WebGLRenderer,
 } from "three";
 import { OrbitControls } from "three/examples/jsm/controls/OrbitControls.js";
+import { diagonal } from "../decode/robust_extent";
 import type { Bounds } from "../decode/types";
 
 export const BACKGROUND = 0x0b1220;
@@ -127,8 +128,7 @@ export class Viewer {
   }
 
   get diagonal(): number {
-    const [a, b] = [this.bounds.min, this.bounds.max];
-    return Math.hypot(b[0] - a[0], b[1] - a[1], b[2] - a[2]) || 1;
+    return diagonal(this.bounds);
   }
 
   /** Looks at the bounds from outside, above a corner. */

@@ -19,6 +19,7 @@ import {
   Vector3,
 } from "three";
 import { TransformControls } from "three/examples/jsm/controls/TransformControls.js";
+import { diagonal } from "../decode/robust_extent";
 import type { Bounds, Vec3 } from "../decode/types";
 
 import { patternPoints } from "./viewpoint_pattern";
@@ -102,9 +103,7 @@ export class ViewpointMarkers {
   /** Puts the markers on the bounds' pattern points, sized to the scene. */
   reset(bounds: Bounds): void {
     const points = patternPoints(bounds);
-    const [a, b] = [bounds.min, bounds.max];
-    const diagonal = Math.hypot(b[0] - a[0], b[1] - a[1], b[2] - a[2]) || 1;
-    this.size = diagonal * 0.012;
+    this.size = diagonal(bounds) * 0.012;
     for (const marker of this.markers.values()) {
       marker.object.position.set(...points[marker.name]);
       marker.object.scale.setScalar(this.size);
