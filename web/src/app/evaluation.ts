@@ -129,6 +129,7 @@ export class Evaluation {
       },
     );
     if (outcome === null) return;
+    this.ctx.rays.clear(); // they belong to an occlusion result no longer drawn
     if (outcome.decoded?.kind === "region_growing") {
       try {
         view.setEstimatedMesh(outcome.decoded);

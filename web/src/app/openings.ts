@@ -4,7 +4,7 @@
 
 import type { Click } from "../scene/picking";
 import { Picker } from "../scene/picking";
-import type { ViewpointName } from "../scene/viewpoints";
+import type { MarkerId } from "../scene/viewpoints";
 import type { AppContext } from "./context";
 
 export class Openings {
@@ -38,11 +38,16 @@ export class Openings {
     }
     if (markers.gizmo.dragging || markers.gizmo.axis !== null) return;
     const hit = this.picker.pick(click, markers.pickables(), 0);
-    const name = hit?.object.userData.viewpoint as ViewpointName | undefined;
+    const name = hit?.object.userData.viewpoint as MarkerId | undefined;
     if (name) {
       markers.select(name);
-      this.ctx.status.timing(`Drag the arrows to move the ${name} viewpoint; Esc releases it.`);
-    } else markers.deselect();
+      this.ctx.status.timing(
+        `Drag the arrows to move ${markers.label(name)}, or type its x, y, z in Viewpoints; Esc releases it.`,
+      );
+    } else if (markers.selection !== null) {
+      markers.deselect();
+      this.ctx.status.timing("");
+    }
     this.ctx.viewer.requestRender();
   }
 

@@ -203,6 +203,13 @@ export class SceneView {
 
   setVisibility(visibility: VisibilityData): void {
     this.cloud?.setVisibility(visibility);
+    // An estimated mesh (planes) left from an earlier job would hide the coloured points.
+    if (this.mesh && this.cloud) {
+      this.gui.set("showMesh", false);
+      this.gui.set("showCloud", true);
+      this.apply("showMesh");
+      this.apply("showCloud");
+    }
     this.refreshColourOptions();
     this.setColour("visibility");
   }

@@ -16,7 +16,7 @@ import {
 } from "three";
 import { OrbitControls } from "three/examples/jsm/controls/OrbitControls.js";
 import { diagonal } from "../decode/robust_extent";
-import type { Bounds } from "../decode/types";
+import type { Bounds, Vec3 } from "../decode/types";
 
 export const BACKGROUND = 0x0b1220;
 
@@ -149,6 +149,22 @@ export class Viewer {
     this.camera.updateProjectionMatrix();
     this.controls.target.copy(centre);
     this.controls.maxDistance = diagonal * 8;
+    this.controls.update();
+    this.requestRender();
+  }
+
+  /**
+   * Puts the camera at `eye`, looking level towards `towards` (or along +x
+   * when they meet); orbiting then turns the view around the eye.
+   */
+  lookFrom(eye: Vec3, towards: Vec3): void {
+    const direction = new Vector3(towards[0] - eye[0], towards[1] - eye[1], 0);
+    if (direction.lengthSq() < 1e-12) direction.set(1, 0, 0);
+    direction.normalize();
+    this.camera.near = this.diagonal / 5000;
+    this.camera.updateProjectionMatrix();
+    this.camera.position.set(...eye);
+    this.controls.target.set(...eye).addScaledVector(direction, this.diagonal * 0.01);
     this.controls.update();
     this.requestRender();
   }
