@@ -8,6 +8,7 @@ import { num } from "../results";
 import { occlusionCard, scanCard } from "../ui/occlusion_view";
 import { percent } from "../ui/format";
 import { RAY_DISPLAY } from "../settings_defaults";
+import { sessionMeasure } from "../study_measures";
 import type { AppContext } from "./context";
 
 export class Occlusion {
@@ -168,8 +169,13 @@ export class Occlusion {
   }
 
   private remember(path: string, report: JobReport): void {
-    const level = num(report.occlusion_level);
-    if (level !== undefined) this.ctx.history.occlusion.set(path, level);
+    const measure = sessionMeasure(report.job);
+    const value = num(measure === "session_scan" ? report.visible_fraction : report.occlusion_level);
+    if (measure && value !== undefined) {
+      const figures = this.ctx.history.occlusion.get(path) ?? {};
+      figures[measure] = value;
+      this.ctx.history.occlusion.set(path, figures);
+    }
     for (const o of report.outputs ?? []) this.ctx.history.outputs.add(o);
   }
 }
