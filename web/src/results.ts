@@ -99,7 +99,11 @@ export interface StudyPoint {
   series: "session" | "study";
 }
 
-const STUDY_MEASURES: MeasureId[] = ["visible_fraction", "occlusion_level", "exterior_occlusion_level"];
+const STUDY_MEASURES: MeasureId[] = [
+  "visible_fraction",
+  "occlusion_level",
+  "exterior_occlusion_level",
+];
 
 /**
  * Points found anywhere in a `study` report: every object (a row of

@@ -72,7 +72,7 @@ export class App {
     });
     const viewer = new Viewer(byId("canvas-host"));
     this.stats = new StatsPanel(byId("stats"));
-    viewer.hooks.after = () => this.stats.frame();
+    viewer.hooks.after = (continuous) => this.stats.frame(continuous);
     const client = new ProtocolClient(serverUrl(window.location));
     const api = new Api(client, new FrameDecoder());
     const jobs = new JobsPanel(byId("jobs"));
@@ -171,6 +171,7 @@ export class App {
     this.openingFlow = new Openings(this.ctx);
     this.evaluation = new Evaluation(this.ctx);
 
+    openings.onOpeningsChange = (path) => void this.openingFlow.draw(path);
     gui.onChange = (key) => this.onSetting(key);
     gui.onResetViewpoints = () => {
       markers.reset(viewer.sceneBounds);

@@ -170,7 +170,9 @@ export class Occlusion {
 
   private remember(path: string, report: JobReport): void {
     const measure = sessionMeasure(report.job);
-    const value = num(measure === "session_scan" ? report.visible_fraction : report.occlusion_level);
+    const value = num(
+      measure === "session_scan" ? report.visible_fraction : report.occlusion_level,
+    );
     if (measure && value !== undefined) {
       const figures = this.ctx.history.occlusion.get(path) ?? {};
       figures[measure] = value;

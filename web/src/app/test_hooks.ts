@@ -16,6 +16,13 @@ export function exposeForTests(app: unknown, ctx: AppContext, loading: Loading):
     get framesRendered() {
       return viewer.framesRendered;
     },
+    /** The last interval between two frames drawn in motion (ms), and the level of detail used. */
+    get movingFrameMs() {
+      return viewer.movingFrameMs;
+    },
+    get detailLevel() {
+      return viewer.detailLevel;
+    },
     /**
      * Orbits (OrbitControls auto-rotate) for `ms` and reports the frame rate
      * and the points drawn per frame at the end (level of detail), or at full

@@ -168,8 +168,9 @@ export class CloudLayer {
   /** Levels of detail available: level k draws 1/2^k of the points. */
   get detailLevels(): number {
     if (!this.data.order) return 0;
-    // Down to about 15,000 points, never fewer than 1/64 of the cloud.
-    return Math.min(6, Math.max(0, Math.floor(Math.log2(this.data.count / 15_000))));
+    // Down to about 2,000 points, never fewer than 1/256 of the cloud: software
+    // rendering (no GPU) can need that to orbit a 100k-point scan smoothly.
+    return Math.min(8, Math.max(0, Math.floor(Math.log2(this.data.count / 2_000))));
   }
 
   setDetail(level: number): void {

@@ -22,7 +22,8 @@ export const BACKGROUND = 0x0b1220;
 
 export interface FrameHooks {
   before?: () => void;
-  after?: () => void;
+  /** `continuous`: drawn while the camera moves or animates (a frame rate is measurable). */
+  after?: (continuous: boolean) => void;
 }
 
 export class Viewer {
@@ -55,6 +56,10 @@ export class Viewer {
   private quickFrames = 0;
   /** Off: always full detail (to measure it). */
   lodEnabled = true;
+  /** The last interval between two frames drawn while moving (ms; 0 until measured). */
+  movingFrameMs = 0;
+  private lastRender = 0;
+  private lastContinuous = false;
 
   private dirty = true;
   private readonly afterRender: (() => void)[] = [];
@@ -227,11 +232,18 @@ export class Viewer {
       this.dirty = true;
     }
     if (!this.dirty) return;
+    const animating = this.dirty && !moving && this.animations.size > 0;
     this.dirty = false;
     this.hooks.before?.();
     this.renderer.render(this.scene, this.camera);
     this.framesRendered += 1;
-    this.hooks.after?.();
+    const now = performance.now();
+    if (moving && this.lastContinuous) this.movingFrameMs = now - this.lastRender;
+    this.lastRender = now;
+    // A frame rate needs two frames in a row drawn in motion (not idle time before the first).
+    const continuous = (moving || animating) && this.lastContinuous;
+    this.lastContinuous = moving || animating;
+    this.hooks.after?.(continuous);
     const callbacks = this.afterRender.splice(0);
     for (const callback of callbacks) callback();
   }

@@ -109,7 +109,13 @@ export function scatterPlot(
     root.append(
       svg(
         "text",
-        { x: x(v), y: height - m.bottom + 13, fill: "#94a3b8", "font-size": 9, "text-anchor": "middle" },
+        {
+          x: x(v),
+          y: height - m.bottom + 13,
+          fill: "#94a3b8",
+          "font-size": 9,
+          "text-anchor": "middle",
+        },
         percent(v, digits(xr.step)),
       ),
     );
@@ -161,7 +167,9 @@ export function scatterPlot(
           "stroke-width": 1.2,
         }),
       );
-      trends.push(`${s.label}: mIoU ${line.b >= 0 ? "+" : "−"}${Math.abs(line.b).toFixed(2)} per unit`);
+      trends.push(
+        `${s.label}: mIoU ${line.b >= 0 ? "+" : "−"}${Math.abs(line.b).toFixed(2)} per unit`,
+      );
     }
     for (const p of mine) {
       const v = p.measures[measure!]!;
@@ -182,8 +190,7 @@ export function scatterPlot(
     }
   }
   const chooser = h("select", {
-    class:
-      "w-full rounded-md bg-slate-900 px-2 py-1 text-xs text-slate-100 ring-1 ring-slate-700",
+    class: "w-full rounded-md bg-slate-900 px-2 py-1 text-xs text-slate-100 ring-1 ring-slate-700",
     testid: "study-measure",
     attrs: { "aria-label": "measure on the x axis" },
     on: { change: () => onMeasure(chooser.value as MeasureId) },

@@ -56,7 +56,12 @@ describe("study", () => {
       other: 1,
     };
     expect(studyPoints(report, "study")).toEqual([
-      { measures: { occlusion_level: 0.2 }, miou: 0.7, label: "office_1 pattern_1", series: "study" },
+      {
+        measures: { occlusion_level: 0.2 },
+        miou: 0.7,
+        label: "office_1 pattern_1",
+        series: "study",
+      },
       {
         measures: { visible_fraction: 0.9, occlusion_level: 0.4 },
         miou: 0.5,
