@@ -344,7 +344,13 @@ export class App {
       }
       gui.set("showCloud", true);
       view.apply("showCloud");
-      view.setColour(mode);
+      if (!view.setColour(mode)) {
+        const what = { rgb: "no colour", segment: "no segment ids", class: "no class labels" };
+        notices.info(
+          `This cloud has ${what[mode]} (the file holds none): it stays coloured by ` +
+            `${view.cloud.mode === "height" ? "height" : view.cloud.mode}.`,
+        );
+      }
     };
     switch (name) {
       case "original":

@@ -11,6 +11,7 @@ import { num } from "../results";
 import { polygonsCard } from "../ui/occlusion_view";
 import { card, table } from "../ui/results_panel";
 import { scatterPlot } from "../ui/scatter_plot";
+import { SETTINGS } from "../settings_defaults";
 import type { MeasureId } from "../study_measures";
 import type { AppContext } from "./context";
 
@@ -34,7 +35,7 @@ export class Evaluation {
       {
         groundTruth,
         prediction: history.scanOutput.get(groundTruth) ?? "",
-        maxDistance: 0.05,
+        maxDistance: SETTINGS.maxDistance.default,
       },
       suggestions,
     );
@@ -136,6 +137,8 @@ export class Evaluation {
       "extract_polygons",
       {
         path: scene.path,
+        min_cluster_size: this.ctx.gui.settings.minClusterSize,
+        max_cluster_size: this.ctx.gui.settings.maxClusterSize,
       },
     );
     if (outcome === null) return;

@@ -96,7 +96,14 @@ export class Occlusion {
     const outcome = await this.ctx.runner.run<JobReport>(
       "Region-growing mesh occlusion",
       "region_growing_occlusion",
-      { path, viewpoints, samples_per_unit_area: samples, seed: 0 },
+      {
+        path,
+        viewpoints,
+        samples_per_unit_area: samples,
+        min_cluster_size: this.ctx.gui.settings.minClusterSize,
+        max_cluster_size: this.ctx.gui.settings.maxClusterSize,
+        seed: 0,
+      },
     );
     if (outcome === null) return;
     const report = outcome.result;

@@ -20,7 +20,7 @@ export const CLOUD_MODE_LABELS: Record<CloudColourMode, string> = {
   rgb: "RGB",
   class: "Semantic class",
   segment: "Segment id",
-  visibility: "Visibility (viewpoints)",
+  visibility: "Visibility",
   cluster: "Region cluster",
   height: "Height",
 };
