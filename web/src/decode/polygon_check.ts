@@ -52,10 +52,23 @@ export function polygonProblem(points: Vec3[], planarity = 0.1): string | null {
       return `points ${i + 1} and ${((i + 1) % points.length) + 1} are the same point`;
     }
   }
-  const n = newellNormal(points);
-  const area = norm(n) / 2;
-  if (area <= size * size * 1e-4) return "the points are on one line: the polygon has no area";
-  const unit = n.map((x) => x / (2 * area)) as Vec3;
+  // The plane's normal from the widest corner (a bow tie's Newell normal is zero).
+  let normal: Vec3 = [0, 0, 0];
+  let widest = 0;
+  for (let i = 1; i < points.length; ++i) {
+    for (let j = i + 1; j < points.length; ++j) {
+      const a = sub(points[i]!, points[0]!);
+      const b = sub(points[j]!, points[0]!);
+      const c: Vec3 = [
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+      ];
+      if (norm(c) > widest) [widest, normal] = [norm(c), c];
+    }
+  }
+  if (widest <= size * size * 1e-4) return "the points are on one line: the polygon has no area";
+  const unit = normal.map((x) => x / widest) as Vec3;
   const centre = points
     .reduce((s, p) => [s[0] + p[0], s[1] + p[1], s[2] + p[2]] as Vec3, [0, 0, 0] as Vec3)
     .map((x) => x / points.length) as Vec3;
@@ -95,5 +108,7 @@ export function polygonProblem(points: Vec3[], planarity = 0.1): string | null {
       }
     }
   }
+  const area = norm(newellNormal(points)) / 2;
+  if (area <= size * size * 1e-4) return "the polygon has no area";
   return null;
 }

@@ -17,7 +17,7 @@ export interface RobustOptions {
   sample: number;
 }
 
-export const ROBUST_DEFAULTS: RobustOptions = { quantile: 0.005, margin: 0.02, sample: 60_000 };
+export const ROBUST_DEFAULTS: RobustOptions = { quantile: 0.02, margin: 0.02, sample: 60_000 };
 
 /** The value at fraction `q` of the sorted `values` (nearest rank). */
 export function quantile(sorted: Float32Array, q: number): number {
