@@ -246,6 +246,16 @@ describe("a real-like scan: stray points, no colour (e2e)", () => {
       );
       await screenshot(page, `real-05-layout-${width}x${height}`);
       expect(await layoutProblems(page)).toEqual([]);
+      // The check sees a table wider than its panel (as the confusion matrix was).
+      await page.evaluate(() => {
+        const wide = document.createElement("div");
+        wide.id = "too-wide";
+        wide.style.width = "2000px";
+        wide.textContent = "wide";
+        document.querySelector("[data-testid=results-occlusion]")!.append(wide);
+      });
+      expect((await layoutProblems(page)).join("\n")).toContain("results › div");
+      await page.evaluate(() => document.getElementById("too-wide")!.remove());
     });
   }
 
