@@ -55,7 +55,23 @@ export class Evaluation {
       notices.error("Evaluation", "the server's report has no per-class table");
       return;
     }
-    this.ctx.results.set("evaluation", evaluationCards(report));
+    // The scan's own points against their scene's labels: the labels are the
+    // ground truth's, so the figures measure how much the viewpoints covered.
+    const ownScan = history.scanOutput.get(choice.groundTruth) === choice.prediction;
+    const note = ownScan
+      ? h("p", {
+          class: "rounded-md bg-amber-950/40 p-2 text-xs text-amber-200",
+          testid: "coverage-note",
+          text:
+            "This evaluates the visibility scan against its own scene's labels: the " +
+            "predicted labels are the ground truth's, so it measures coverage only (the " +
+            "points no viewpoint saw count as missed, in the 'none' column), not a segmenter.",
+        })
+      : null;
+    this.ctx.results.set(
+      "evaluation",
+      note ? [note, ...evaluationCards(report)] : evaluationCards(report),
+    );
     for (const o of report.outputs ?? []) history.outputs.add(o);
     const measures = history.occlusion.get(choice.groundTruth);
     const miou = report.miou;

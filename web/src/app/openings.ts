@@ -25,9 +25,12 @@ export class Openings {
         return;
       }
       const pick = () =>
-        this.picker.pickSurface(click, [target], gui.settings.pickerSize, [
-          this.ctx.viewer.sectionPlane,
-        ]);
+        this.picker.pickSurface(
+          click,
+          [target],
+          gui.settings.pickerSize,
+          this.ctx.viewer.clipPlanes,
+        );
       const p = view.cloud ? view.cloud.withFullDetail(pick) : pick();
       if (p === null) {
         notices.info("No point under the cursor: zoom in, or raise Picker Size in the GUI.");

@@ -82,7 +82,7 @@ export class SceneView {
     this.clear();
     const { extent, source } = sceneExtent(result, decoded);
     this.info = { path, result, extent, extentSource: source };
-    const clip = [this.viewer.sectionPlane];
+    const clip = this.viewer.clipPlanes;
     if (decoded.kind === "cloud") {
       const cloud = new CloudLayer(decoded, 0.05, clip, extent);
       this.cloud = cloud;
@@ -166,6 +166,9 @@ export class SceneView {
       case "cutCeiling":
         this.applyCut();
         break;
+      case "cutWalls":
+        this.viewer.cutWalls = s.cutWalls;
+        break;
       case "lightIntensity":
         this.markers.setLightIntensity(s.lightIntensity);
         this.viewer.hemisphere.intensity = 0.45 + 0.35 * s.lightIntensity;
@@ -225,7 +228,7 @@ export class SceneView {
     if (!cloud) throw new Error("region growing: no cloud on screen");
     this.mesh?.mesh.removeFromParent();
     this.mesh?.dispose();
-    this.mesh = new MeshLayer(data.mesh, [this.viewer.sectionPlane]);
+    this.mesh = new MeshLayer(data.mesh, this.viewer.clipPlanes);
     if (data.fraction) {
       this.mesh.setFaceFraction(data.fraction);
       this.mesh.setMode("visible_fraction");

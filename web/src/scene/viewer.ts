@@ -37,6 +37,21 @@ export class Viewer {
   readonly headlight = new DirectionalLight(0xffffff, 0.9);
   /** Clip plane that hides everything above a height (the ceiling). */
   readonly sectionPlane = new Plane(new Vector3(0, 0, -1), Infinity);
+  /**
+   * Cut-away of the near walls: seen from outside the scene's box, the slab
+   * along each wall (x and y) on the camera's side is hidden, as the ceiling
+   * is, so the interior and the markers show. Updated as the camera moves.
+   */
+  readonly wallPlanes = [
+    new Plane(new Vector3(1, 0, 0), Infinity),
+    new Plane(new Vector3(0, 1, 0), Infinity),
+  ];
+  cutWalls = true;
+
+  /** Every clip plane a scene layer takes (ceiling, near walls). */
+  get clipPlanes(): Plane[] {
+    return [this.sectionPlane, ...this.wallPlanes];
+  }
 
   /** Frames actually rendered since start (render on demand). */
   framesRendered = 0;
@@ -174,6 +189,28 @@ export class Viewer {
     this.requestRender();
   }
 
+  /** Places the near-wall planes for the camera where it is (nothing cut from inside the box). */
+  private updateWallCut(): void {
+    const b = this.bounds;
+    const eye = this.camera.position;
+    this.wallPlanes.forEach((plane, a) => {
+      const span = b.max[a]! - b.min[a]!;
+      const slab = 0.04 * span;
+      const at = eye.getComponent(a);
+      plane.normal.set(0, 0, 0);
+      if (this.cutWalls && at > b.max[a]!) {
+        plane.normal.setComponent(a, -1);
+        plane.constant = b.max[a]! - slab;
+      } else if (this.cutWalls && at < b.min[a]!) {
+        plane.normal.setComponent(a, 1);
+        plane.constant = -(b.min[a]! + slab);
+      } else {
+        plane.normal.setComponent(a, 1);
+        plane.constant = Infinity;
+      }
+    });
+  }
+
   /** Hides what lies above `height` (Infinity: nothing hidden). */
   setSection(height: number): void {
     this.sectionPlane.constant = height;
@@ -235,6 +272,7 @@ export class Viewer {
     const animating = this.dirty && !moving && this.animations.size > 0;
     this.dirty = false;
     this.hooks.before?.();
+    this.updateWallCut();
     this.renderer.render(this.scene, this.camera);
     this.framesRendered += 1;
     const now = performance.now();

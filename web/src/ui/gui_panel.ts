@@ -16,6 +16,7 @@ export interface GuiSettings {
   colourBy: string;
   pointSize: number;
   cutCeiling: boolean;
+  cutWalls: boolean;
   useShaderMaterial: boolean;
   centre: boolean;
   max: boolean;
@@ -41,6 +42,7 @@ export const DEFAULT_SETTINGS: GuiSettings = {
   colourBy: "rgb",
   pointSize: 0.05,
   cutCeiling: true,
+  cutWalls: true,
   useShaderMaterial: false,
   centre: true,
   max: true,
@@ -89,6 +91,7 @@ export class GuiPanel {
     add(view, "colourBy", "Colour by", { RGB: "rgb" });
     add(view, "pointSize", "Point size", 0.001, 0.3, 0.001).decimals(3);
     add(view, "cutCeiling", "Hide ceiling");
+    add(view, "cutWalls", "Cut near walls");
 
     const viewpoints = this.gui.addFolder("Viewpoints");
     add(viewpoints, "centre", "Center");
