@@ -88,6 +88,12 @@ describe("a real-like scan: stray points, no colour (e2e)", () => {
     // Centre: the room's centre (6/2, 5/2, 3/2), within the quantiles' noise.
     const centre = await markerPosition("centre");
     [3, 2.5, 1.5].forEach((c, a) => expect(Math.abs(centre[a]! - c)).toBeLessThan(0.1));
+    // Seen from outside, the near walls are cut away (the x and y slabs on the camera's side).
+    const cut = () =>
+      page.evaluate(() =>
+        (window as any).__occlusion.app.ctx.viewer.wallPlanes.map((p: any) => p.constant as number),
+      );
+    expect((await cut()).every((c: number) => Number.isFinite(c))).toBe(true);
     const { foreground, total } = await canvasForeground(page, "real-01-framed-canvas");
     expect(foreground / total).toBeGreaterThan(0.15);
     await screenshot(page, "real-01-framed");
@@ -145,6 +151,12 @@ describe("a real-like scan: stray points, no colour (e2e)", () => {
     );
     const max = await markerPosition("max");
     eye.forEach((x, a) => expect(x).toBeCloseTo(max[a]!, 6));
+    // From inside the room nothing is cut.
+    await page.evaluate(() => (window as any).__occlusion.app.ctx.viewer.nextFrame());
+    const planes = await page.evaluate(() =>
+      (window as any).__occlusion.app.ctx.viewer.wallPlanes.map((p: any) => p.constant as number),
+    );
+    expect(planes).toEqual([Infinity, Infinity]);
     await screenshot(page, "real-02-look-from-max");
     // Back to the overview.
     await page.evaluate(() => {
