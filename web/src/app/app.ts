@@ -27,6 +27,7 @@ import { StatsPanel } from "../ui/stats_panel";
 import { Toolbar } from "../ui/toolbar";
 import type { ToolbarButton } from "../ui/toolbar";
 import { installUpload } from "../ui/upload";
+import { adoptServerKeys } from "../settings_defaults";
 import { FrameDecoder } from "../worker/decoder";
 import type { Vec3 } from "../decode/types";
 import type { AppContext, SessionHistory } from "./context";
@@ -259,6 +260,8 @@ export class App {
       const hello = await this.ctx.client.connect();
       this.reconnecting = false;
       this.setConnection("online", hello.server);
+      // Defaults and ranges from the server's key declarations, where it has them.
+      this.ctx.gui.refreshDeclared(adoptServerKeys({ keys: hello.keys }));
       this.syncAvailability();
       this.evaluation.renderStudy();
       await this.ctx.files.show(this.ctx.files.current);
