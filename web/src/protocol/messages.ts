@@ -102,6 +102,14 @@ export function parseServerMessage(text: string): ServerMessage {
         commands[name] = on === true || isObject(on);
         if (isObject(on) && isObject(on.keys)) keys[name] = on.keys;
       }
+      // `jobs`: per job, its keys as a list of declarations, each with its `name`.
+      for (const [job, entry] of Object.entries(isObject(value.jobs) ? value.jobs : {})) {
+        if (!isObject(entry) || !Array.isArray(entry.keys)) continue;
+        const named = entry.keys.filter((k): k is Record<string, unknown> => isObject(k));
+        keys[job] = Object.fromEntries(
+          named.filter((k) => typeof k.name === "string").map((k) => [k.name as string, k]),
+        );
+      }
       const limits = isObject(value.limits) ? value.limits : {};
       return {
         type: "hello",

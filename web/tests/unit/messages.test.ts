@@ -32,6 +32,22 @@ describe("parseServerMessage", () => {
         keys: { scan: { point_radius: { default: 0.05 } } },
       }),
     );
+    const fromJobs = parseServerMessage(
+      JSON.stringify({
+        type: "hello",
+        protocol: 1,
+        commands: { cloud_occlusion: true },
+        jobs: {
+          cloud_occlusion: {
+            section: "occlusion.point_cloud",
+            keys: [{ name: "seed", default: 0 }],
+          },
+        },
+      }),
+    );
+    expect(fromJobs).toMatchObject({
+      keys: { cloud_occlusion: { seed: { name: "seed", default: 0 } } },
+    });
     expect(m).toMatchObject({
       commands: { cloud_occlusion: true, ping: true },
       keys: { cloud_occlusion: declaration, scan: { point_radius: { default: 0.05 } } },
