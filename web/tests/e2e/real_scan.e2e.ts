@@ -121,10 +121,19 @@ describe("a real-like scan: stray points, no colour (e2e)", () => {
     await expect
       .poll(() => row("centre").locator("[data-testid=viewpoint-warning]").textContent())
       .toContain("outside the occupied space");
-    // Inside an object: on the table top (z 0.75 m).
-    await inputs.nth(0).fill("3");
-    await inputs.nth(1).fill("2");
-    await inputs.nth(2).fill("0.76");
+    // Inside an object: on a scanned point of the table top (z 0.75 m), to the millimetre.
+    const onTable = await page.evaluate(() => {
+      const d = (window as any).__occlusion.app.ctx.view.cloud.data;
+      for (let i = 0; i < d.count; ++i) {
+        if (Math.abs(d.positions[i * 3 + 2] - 0.75) < 1e-4) {
+          return [d.positions[i * 3], d.positions[i * 3 + 1], 0.75] as number[];
+        }
+      }
+      return [3, 2, 0.75];
+    });
+    await inputs.nth(0).fill(onTable[0]!.toFixed(3));
+    await inputs.nth(1).fill(onTable[1]!.toFixed(3));
+    await inputs.nth(2).fill("0.751");
     await inputs.nth(2).press("Enter");
     await expect
       .poll(() => row("centre").locator("[data-testid=viewpoint-warning]").textContent())
