@@ -219,6 +219,28 @@ Json::Value save_polygon(CommandContext& context) {
   return result;
 }
 
+// The polygons of an openings file, so the viewer can draw the openings a
+// computation uses and keep them when it saves more.
+Json::Value read_polygon_file(CommandContext& context) {
+  allow_keys(context.params, {"path"});
+  const std::string path = required_string(context.params, "path");
+  const fs::path resolved = context.server.root.resolve(path, true);
+  Json::Value list(Json::arrayValue);
+  for (const auto& polygon : read_polygons(resolved.string())) {
+    Json::Value points(Json::arrayValue);
+    for (const auto& p : polygon) {
+      Json::Value point(Json::arrayValue);
+      for (int k = 0; k < 3; ++k) point.append(p[k]);
+      points.append(point);
+    }
+    list.append(points);
+  }
+  Json::Value result(Json::objectValue);
+  result["path"] = context.server.root.relative(resolved.string());
+  result["polygons"] = list;
+  return result;
+}
+
 }  // namespace
 
 std::vector<Command> file_commands() {
@@ -227,6 +249,7 @@ std::vector<Command> file_commands() {
               [](CommandContext&) { return Json::Value(Json::objectValue); }},
       Command{"list_files", Where::kNetwork, &list_files},
       Command{"save_polygon", Where::kNetwork, &save_polygon},
+      Command{"read_polygons", Where::kNetwork, &read_polygon_file},
   };
 }
 
