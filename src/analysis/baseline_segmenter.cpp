@@ -39,19 +39,24 @@ void check(const BaselineOptions& o) {
 BaselineClass classify(const EstimatedPlane& plane, const PolygonShape& shape,
                        const Eigen::Vector3d& lo, const Eigen::Vector3d& hi,
                        const BaselineOptions& o) {
+  const int up = o.up.axis;
   const double tilt = o.max_tilt_degrees * M_PI / 180.0;
-  const double vertical_component = std::abs(plane.normal.z());
-  const double height = hi.z() - lo.z();
+  const double vertical_component = std::abs(plane.normal[up]);
+  // Heights along the signed up axis: the floor is at the low end.
+  const double bottom = o.up.sign > 0 ? lo[up] : -hi[up];
+  const double top = o.up.sign > 0 ? hi[up] : -lo[up];
+  const double height = top - bottom;
   if (shape.empty()) return BaselineClass::kClutter;
   if (vertical_component >= std::cos(tilt)) {
-    const double z = plane.centroid.z();
-    if (z <= lo.z() + o.height_band * height) return BaselineClass::kFloor;
-    if (z >= hi.z() - o.height_band * height) return BaselineClass::kCeiling;
+    const double h = o.up.sign * plane.centroid[up];
+    if (h <= bottom + o.height_band * height) return BaselineClass::kFloor;
+    if (h >= top - o.height_band * height) return BaselineClass::kCeiling;
     return BaselineClass::kClutter;
   }
   if (vertical_component <= std::sin(tilt)) {
-    const double short_side = std::min(hi.x() - lo.x(), hi.y() - lo.y());
-    const bool tall = shape.hi.z() - shape.lo.z() >= o.min_wall_height * height;
+    const int a = (up + 1) % 3, b = (up + 2) % 3;
+    const double short_side = std::min(hi[a] - lo[a], hi[b] - lo[b]);
+    const bool tall = shape.hi[up] - shape.lo[up] >= o.min_wall_height * height;
     const bool wide = shape.along_hi - shape.along_lo >= o.min_wall_width * short_side;
     if (tall && wide) return BaselineClass::kWall;
   }
@@ -83,6 +88,9 @@ BaselineSegmentation segment_baseline(const PointCloud& cloud, const MeshEstimat
                                 " cluster ids for " + std::to_string(cloud.size()) + " points");
   }
   BaselineSegmentation result;
+  if (const auto disagreement = check_up_axis(cloud.positions, options.up)) {
+    result.warnings.push_back(*disagreement);
+  }
   result.labels.assign(cloud.size(), options.clutter_id);
   result.points[static_cast<std::size_t>(BaselineClass::kClutter)] = cloud.size();
   if (cloud.size() == 0 || cluster.empty() || estimate.planes.empty()) {
@@ -98,7 +106,7 @@ BaselineSegmentation segment_baseline(const PointCloud& cloud, const MeshEstimat
   std::vector<PolygonShape> shapes(estimate.planes.size());
   for (std::size_t k = 0; k < estimate.planes.size(); ++k) {
     plane_of[estimate.planes[k].cluster] = k;
-    const Eigen::Vector3d across = Eigen::Vector3d::UnitZ().cross(estimate.planes[k].normal);
+    const Eigen::Vector3d across = options.up.vector().cross(estimate.planes[k].normal);
     if (across.norm() > 1e-9) shapes[k].along = across.normalized();
   }
   const TriangleMesh& mesh = estimate.mesh;

@@ -23,7 +23,7 @@ using analysis_support::seconds_since;
 constexpr std::size_t kRaysPerBlock = std::size_t{1} << 15;
 constexpr std::size_t kClassifyGrain = 1024;
 
-enum RayClass : std::uint8_t { kHit, kThroughOpening, kOcclusion };
+enum RayClass : std::uint8_t { kHit, kThroughOpening, kOcclusion, kOutsideView };
 
 void check_inputs(const PointCloud& cloud, const std::vector<Eigen::Vector3d>& viewpoints,
                   const CloudOcclusionOptions& options) {
@@ -31,6 +31,10 @@ void check_inputs(const PointCloud& cloud, const std::vector<Eigen::Vector3d>& v
   if (cloud.size() == 0) throw std::invalid_argument("cloud occlusion: the cloud has no points");
   analysis_support::check_viewpoints(viewpoints, "cloud occlusion");
   analysis_support::check_positive(options.point_radius, "point_radius", "cloud occlusion");
+  Eigen::Vector3f lo, hi;
+  cloud.bounds(lo, hi);
+  analysis_support::check_float_precision(lo, hi, viewpoints, options.point_radius,
+                                          "cloud occlusion");
   if (options.num_rays_per_vp == 0) {
     throw std::invalid_argument("cloud occlusion: num_rays_per_vp must be > 0");
   }
@@ -112,23 +116,30 @@ CloudOcclusionResult compute_cloud_occlusion(const PointCloud& cloud,
   std::vector<Ray> rays;
   std::vector<std::optional<Hit>> hits;
   std::vector<RayClass> classes;
+  std::vector<std::uint8_t> outside;
   progress("tracing", 0.0);
   for (std::size_t block = 0; block < ray_count; block += kRaysPerBlock) {
     const std::size_t block_size = std::min(ray_count, block + kRaysPerBlock) - block;
     rays.resize(block_size);
     hits.resize(block_size);
     classes.resize(block_size);
+    outside.resize(block_size);
     parallel_for(block_size, kClassifyGrain, options.threads, [&](std::size_t b, std::size_t e) {
       for (std::size_t i = b; i < e; ++i) {
         const std::size_t r = block + i;
         const std::size_t v = r / per_view;
-        rays[i] =
-            light_source_ray(viewpoints[v], directions[v](r % per_view), options.light_radius);
+        const Eigen::Vector3d direction = directions[v](r % per_view);
+        rays[i] = light_source_ray(viewpoints[v], direction, options.light_radius);
+        outside[i] = options.field_of_view && !options.field_of_view->contains(direction);
+        // An empty interval: the tree answers "no hit" at once.
+        if (outside[i]) rays[i].t_max = -1.0f;
       }
     });
     tree.intersect_batch(rays.data(), block_size, nullptr, hits.data(), options.threads);
     parallel_for(block_size, kClassifyGrain, options.threads, [&](std::size_t b, std::size_t e) {
-      for (std::size_t i = b; i < e; ++i) classes[i] = classify(rays[i], hits[i], openings);
+      for (std::size_t i = b; i < e; ++i) {
+        classes[i] = outside[i] ? kOutsideView : classify(rays[i], hits[i], openings);
+      }
     });
     // Counted in ray order on this thread: escape directions keep a fixed order.
     for (std::size_t i = 0; i < block_size; ++i) {
@@ -146,6 +157,9 @@ CloudOcclusionResult compute_cloud_occlusion(const PointCloud& cloud,
             view.escape_directions.push_back(rays[i].direction);
           }
           break;
+        case kOutsideView:
+          ++view.outside_view_rays;
+          break;
       }
     }
     progress.check_cancel();
@@ -153,16 +167,21 @@ CloudOcclusionResult compute_cloud_occlusion(const PointCloud& cloud,
   }
   result.trace_seconds = seconds_since(start);
 
+  const auto level = [](std::size_t occlusion_rays, std::size_t inside_view) {
+    return inside_view == 0
+               ? 0.0
+               : static_cast<double>(occlusion_rays) / static_cast<double>(inside_view);
+  };
   for (ViewpointRays& view : result.viewpoints) {
     view.rays = per_view;
-    view.occlusion_level = static_cast<double>(view.occlusion_rays) / static_cast<double>(per_view);
+    view.occlusion_level = level(view.occlusion_rays, per_view - view.outside_view_rays);
     result.rays += view.rays;
     result.hits += view.hits;
     result.through_openings += view.through_openings;
     result.occlusion_rays += view.occlusion_rays;
+    result.outside_view_rays += view.outside_view_rays;
   }
-  result.occlusion_level =
-      static_cast<double>(result.occlusion_rays) / static_cast<double>(result.rays);
+  result.occlusion_level = level(result.occlusion_rays, result.rays - result.outside_view_rays);
   progress("done", 1.0);
   return result;
 }

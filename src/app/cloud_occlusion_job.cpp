@@ -7,6 +7,7 @@
 #include "job_support.hpp"
 #include "occlusion/app/errors.hpp"
 #include "occlusion/app/json_output.hpp"
+#include "occlusion/app/memory_budget.hpp"
 #include "occlusion/io/atomic_file.hpp"
 #include "occlusion/io/cloud_io.hpp"
 #include "occlusion/io/input_error.hpp"
@@ -19,15 +20,15 @@ namespace {
 DirectionSampling parse_sampling(const std::string& name) {
   if (name == "uniform") return DirectionSampling::kUniform;
   if (name == "fibonacci") return DirectionSampling::kFibonacci;
-  throw UsageError("--sampling must be uniform or fibonacci, got '" + name + "'");
+  throw KeyError("sampling", "must be uniform or fibonacci, got '" + name + "'");
 }
 
 // Which points are exterior structure: those whose class is in `classes`.
 std::vector<bool> exterior_mask(const PointCloud& cloud, const std::vector<std::string>& classes,
                                 const std::string& path) {
   if (!cloud.has_labels() || cloud.class_names.empty()) {
-    throw UsageError("--exterior needs a labelled cloud with class names; " + path +
-                     " has none (use an S3DIS folder, or a PLY written by -recon)");
+    throw KeyError("exterior", "needs a labelled cloud with class names; " + path +
+                                   " has none (use an S3DIS folder, or a PLY written by -recon)");
   }
   std::vector<bool> is_exterior_class(cloud.class_names.size(), false);
   for (const auto& name : classes) {
@@ -35,8 +36,8 @@ std::vector<bool> exterior_mask(const PointCloud& cloud, const std::vector<std::
     if (it == cloud.class_names.end()) {
       std::string known;
       for (const auto& n : cloud.class_names) known += (known.empty() ? "" : ", ") + n;
-      throw UsageError("--exterior-classes: no class '" + name + "' in " + path +
-                       " (classes: " + known + ")");
+      throw KeyError("exterior_classes", "names no class of " + path + ": '" + name + "'" +
+                                             " (classes: " + known + ")");
     }
     is_exterior_class[static_cast<std::size_t>(it - cloud.class_names.begin())] = true;
   }
@@ -59,6 +60,47 @@ void write_escapes(const std::string& path, const CloudOcclusionResult& result) 
   });
 }
 
+Json::Value numbers_json(const std::vector<double>& numbers) {
+  Json::Value json(Json::arrayValue);
+  for (const double x : numbers) json.append(x);
+  return json;
+}
+
+// The frame's field of view, when the cloud is a single-view frame, with why it is one.
+std::optional<FieldOfView> single_view_field(const PointCloud& cloud,
+                                             const CloudOcclusionRequest& request,
+                                             CloudOcclusionReport& report) {
+  const SensorFrame& sensor = cloud.sensor;
+  if (!request.field_of_view.empty()) {
+    report.field_of_view_source = "field_of_view setting";
+    return field_of_view_from_angles(sensor, request.field_of_view[0], request.field_of_view[1]);
+  }
+  if (!sensor.single_view()) return std::nullopt;
+  report.field_of_view_source = sensor.organised()
+                                    ? "organised frame " + std::to_string(sensor.width) + " x " +
+                                          std::to_string(sensor.height)
+                                    : std::string("VIEWPOINT header");
+  try {
+    return measure_field_of_view(cloud);
+  } catch (const std::invalid_argument& e) {
+    report.warnings.push_back(request.path + " looks like a single-view frame (" +
+                              report.field_of_view_source + ") but " + e.what() +
+                              "; all rays are counted (set field_of_view to override)");
+    report.field_of_view_source.clear();
+    return std::nullopt;
+  }
+}
+
+Json::Value field_of_view_json(const FieldOfView& view, const std::string& source) {
+  Json::Value json(Json::objectValue);
+  json["source"] = source;
+  json["horizontal_degrees"] = view.horizontal_degrees();
+  json["vertical_degrees"] = view.vertical_degrees();
+  json["tan_x"] = numbers_json({view.x_lo, view.x_hi});
+  json["tan_y"] = numbers_json({view.y_lo, view.y_hi});
+  return json;
+}
+
 Json::Value result_json(const CloudOcclusionResult& r, const std::vector<std::string>& names) {
   Json::Value json(Json::objectValue);
   json["occlusion_level"] = r.occlusion_level;
@@ -66,6 +108,7 @@ Json::Value result_json(const CloudOcclusionResult& r, const std::vector<std::st
   json["hits"] = Json::UInt64(r.hits);
   json["through_openings"] = Json::UInt64(r.through_openings);
   json["occlusion_rays"] = Json::UInt64(r.occlusion_rays);
+  json["outside_view_rays"] = Json::UInt64(r.outside_view_rays);
   json["blocking_points"] = Json::UInt64(r.blocking_points);
   Json::Value viewpoints(Json::arrayValue);
   for (std::size_t v = 0; v < r.viewpoints.size(); ++v) {
@@ -76,6 +119,7 @@ Json::Value result_json(const CloudOcclusionResult& r, const std::vector<std::st
     entry["hits"] = Json::UInt64(vp.hits);
     entry["through_openings"] = Json::UInt64(vp.through_openings);
     entry["occlusion_rays"] = Json::UInt64(vp.occlusion_rays);
+    entry["outside_view_rays"] = Json::UInt64(vp.outside_view_rays);
     viewpoints.append(entry);
   }
   json["viewpoints"] = viewpoints;
@@ -88,40 +132,17 @@ void validate(const CloudOcclusionRequest& request) {
   if (request.path.empty()) {
     throw UsageError("no cloud given (-poc CLOUD or occlusion.point_cloud.path)");
   }
+  check_keys(cloud_occlusion_keys(), request);
   request.viewpoints.validate();
-  if (request.num_rays_per_vp == 0 || request.num_rays_per_vp > 100'000'000) {
-    throw UsageError("--num-rays-per-vp must be 1..100000000");
-  }
-  job::require_positive(request.point_radius, "--point-radius");
-  job::require_non_negative(request.octree_resolution, "--octree-resolution");
-  job::require_non_negative(request.light_radius, "--light-radius");
+  job::parse_frame(request.frame);
+  job::parse_up(request.up);
   parse_sampling(request.sampling);
-  if (request.exterior && request.exterior_classes.empty()) {
-    throw UsageError("--exterior-classes must name at least one class");
+  if (!request.field_of_view.empty() && request.field_of_view.size() != 2) {
+    throw KeyError("field_of_view", "takes two angles (horizontal, vertical) in degrees");
   }
-}
-
-void apply_section(const ConfigSection& section, CloudOcclusionRequest& request) {
-  section.read_path("path", request.path);
-  section.read_viewpoints(request.viewpoints);
-  section.read("num_rays_per_vp", request.num_rays_per_vp);
-  section.read("point_radius", request.point_radius);
-  section.read_path("polygon_path", request.polygon_path);
-  section.read("octree_resolution", request.octree_resolution);
-  section.read("enable_acceleration", request.enable_acceleration);
-  section.read("sampling", request.sampling);
-  section.read("light_radius", request.light_radius);
-  section.read("escape_directions", request.escape_directions);
-  section.read("exterior", request.exterior);
-  section.read("exterior_classes", request.exterior_classes);
-  section.read("skip_bad_lines", request.skip_bad_lines);
-  section.read("seed", request.seed);
-  section.read("threads", request.threads);
-  section.read_path("out", request.out);
-}
-
-void apply_config(const Config& config, CloudOcclusionRequest& request) {
-  apply_section(ConfigSection(config, "point_cloud"), request);
+  if (request.exterior && request.exterior_classes.empty()) {
+    throw KeyError("exterior_classes", "must name at least one class");
+  }
 }
 
 std::vector<PlanarPolygon> read_openings(const std::string& polygon_path) {
@@ -148,10 +169,19 @@ CloudOcclusionReport run_cloud_occlusion_on(const PointCloud& cloud,
   CloudOcclusionReport report;
   report.request = request;
   report.viewpoint_names = viewpoints.names;
+  report.frame = viewpoints.frame;
+  report.warnings.insert(report.warnings.end(), viewpoints.warnings.begin(),
+                         viewpoints.warnings.end());
   report.openings = openings.size();
+  check_memory_budget(
+      cloud_occlusion_memory(cloud.size(), viewpoints.positions.size(), request.num_rays_per_vp,
+                             request.escape_directions || !request.out.empty()),
+      request.max_memory_mb);
+  report.point_radius =
+      job::choose_point_radius(cloud, request.point_radius, "-poc", report.warnings);
 
   CloudOcclusionOptions options;
-  options.point_radius = request.point_radius;
+  options.point_radius = report.point_radius.radius;
   options.num_rays_per_vp = static_cast<std::size_t>(request.num_rays_per_vp);
   options.sampling = parse_sampling(request.sampling);
   options.light_radius = request.light_radius;
@@ -160,6 +190,8 @@ CloudOcclusionReport run_cloud_occlusion_on(const PointCloud& cloud,
   options.seed = request.seed;
   options.threads = request.threads;
   options.keep_escape_directions = request.escape_directions || !request.out.empty();
+  report.field_of_view = single_view_field(cloud, request, report);
+  options.field_of_view = report.field_of_view;
   report.result = compute_cloud_occlusion(cloud, viewpoints.positions, openings, options, progress);
 
   if (request.exterior) {
@@ -188,9 +220,10 @@ CloudOcclusionReport run_cloud_occlusion(const CloudOcclusionRequest& request,
   const double load_seconds = job::seconds_since(start);
   progress.check_cancel();
 
-  CloudOcclusionReport report =
-      run_cloud_occlusion_on(loaded.cloud, job::resolve_for_cloud(request.viewpoints, loaded.cloud),
-                             openings, request, progress);
+  CloudOcclusionReport report = run_cloud_occlusion_on(
+      loaded.cloud,
+      job::resolve_for_cloud(request.viewpoints, loaded.cloud, request.frame, request.up), openings,
+      request, progress);
   report.dropped_nan = loaded.dropped_nan;
   report.skipped_lines = loaded.skipped_lines;
   report.load_seconds = load_seconds;
@@ -200,10 +233,12 @@ CloudOcclusionReport run_cloud_occlusion(const CloudOcclusionRequest& request,
     const std::string json_path = job::output_path(request.out, request.path, ".poc.json");
     const std::string escapes_path =
         job::output_path(request.out, request.path, ".poc.escapes.csv");
-    write_escapes(escapes_path, report.result);
+    OutputSet outputs;
+    write_escapes(outputs.add(escapes_path), report.result);
     report.outputs = {json_path, escapes_path};
     report.total_seconds = job::seconds_since(start);
-    job::write_json_report(json_path, to_json(report));
+    job::write_json_report(outputs.add(json_path), to_json(report));
+    outputs.commit();
   }
   report.total_seconds = job::seconds_since(start);
   return report;
@@ -216,6 +251,9 @@ Json::Value to_json(const CloudOcclusionReport& report) {
   json["input"] = q.path;
   json["points"] = Json::UInt64(report.result.points);
   json["openings"] = Json::UInt64(report.openings);
+  json["field_of_view"] =
+      report.field_of_view ? field_of_view_json(*report.field_of_view, report.field_of_view_source)
+                           : Json::Value();
   json["dropped_nan_points"] = Json::UInt64(report.dropped_nan);
   json["skipped_lines"] = Json::UInt64(report.skipped_lines);
   if (report.exterior) {
@@ -229,17 +267,13 @@ Json::Value to_json(const CloudOcclusionReport& report) {
     json["interior_exterior_ratio"] = std::isfinite(ratio) ? Json::Value(ratio) : Json::Value();
   }
 
-  Json::Value parameters = q.viewpoints.to_json();
-  parameters["num_rays_per_vp"] = Json::UInt64(q.num_rays_per_vp);
-  parameters["point_radius"] = q.point_radius;
-  parameters["polygon_path"] = q.polygon_path;
-  parameters["octree_resolution"] = q.octree_resolution;
-  parameters["enable_acceleration"] = q.enable_acceleration;
-  parameters["sampling"] = q.sampling;
-  parameters["light_radius"] = q.light_radius;
-  parameters["seed"] = Json::UInt64(q.seed);
-  parameters["threads"] = q.threads;
+  Json::Value parameters = parameters_json(cloud_occlusion_keys(), q);
+  // The radius in force (measured when automatic), not the "auto" asked for.
+  parameters["point_radius"] = report.point_radius.radius;
+  parameters["point_radius_auto"] = report.point_radius.automatic;
   json["parameters"] = parameters;
+  if (!report.frame.isNull()) json["frame"] = report.frame;
+  json["point_spacing"] = job::point_radius_json(report.point_radius);
 
   json["octree"] = to_json(report.result.octree);
 

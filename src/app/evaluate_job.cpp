@@ -67,19 +67,7 @@ void validate(const EvaluateRequest& request) {
                      std::to_string(request.predictions.size()) +
                      " prediction(s): give --prediction once per ground truth, in the same order");
   }
-  job::require_non_negative(request.max_distance, "--max-distance");
-}
-
-void apply_config(const Config& config, EvaluateRequest& request) {
-  const ConfigSection section(config, "evaluate");
-  section.read_paths("ground_truth", request.ground_truth);
-  section.read_paths("predictions", request.predictions);
-  section.read_path("mapping_path", request.mapping_path);
-  section.read("ignored_classes", request.ignored_classes);
-  section.read("max_distance", request.max_distance);
-  section.read("skip_bad_lines", request.skip_bad_lines);
-  section.read("threads", request.threads);
-  section.read_path("out", request.out);
+  check_keys(evaluate_keys(), request);
 }
 
 ClassMapping resolve_mapping(const std::string& mapping_path,
@@ -90,7 +78,7 @@ ClassMapping resolve_mapping(const std::string& mapping_path,
   try {
     return mapping.with_ignored(ignored_classes);
   } catch (const std::invalid_argument& e) {
-    throw UsageError(std::string("--ignored-classes: ") + e.what());
+    throw KeyError("ignored_classes", std::string("is wrong: ") + e.what());
   }
 }
 
@@ -113,6 +101,7 @@ EvaluateReport run_evaluate(const EvaluateRequest& request, const Progress& prog
 
     SceneEvaluation scene = evaluate_scene(loaded.input, report.mapping, request.max_distance,
                                            request.threads, progress);
+    scene.metrics = compute_metrics(scene.confusion, request.mean_over);
     scene.dropped_nan = loaded.dropped_nan;
     scene.skipped_lines = loaded.skipped_lines;
     report.transfer_seconds += scene.transfer_seconds;
@@ -120,7 +109,7 @@ EvaluateReport run_evaluate(const EvaluateRequest& request, const Progress& prog
     report.confusion += scene.confusion;
     report.scenes.push_back(std::move(scene));
   }
-  report.metrics = compute_metrics(report.confusion);
+  report.metrics = compute_metrics(report.confusion, request.mean_over);
   progress("done", 1.0);
 
   if (!request.out.empty()) {
@@ -134,11 +123,13 @@ EvaluateReport run_evaluate(const EvaluateRequest& request, const Progress& prog
     const std::string json_path = path(".json");
     const std::string csv_path = path(".csv");
     const std::string markdown_path = path(".md");
-    job::write_evaluation_csv(csv_path, report);
-    job::write_evaluation_markdown(markdown_path, report);
+    OutputSet outputs;
+    job::write_evaluation_csv(outputs.add(csv_path), report);
+    job::write_evaluation_markdown(outputs.add(markdown_path), report);
     report.outputs = {json_path, csv_path, markdown_path};
     report.total_seconds = job::seconds_since(start);
-    job::write_json_report(json_path, to_json(report));
+    job::write_json_report(outputs.add(json_path), to_json(report));
+    outputs.commit();
   }
   report.total_seconds = job::seconds_since(start);
   return report;
@@ -149,6 +140,8 @@ Json::Value to_json(const SegmentationMetrics& metrics) {
   json["miou"] = to_json(metrics.miou);
   json["overall_accuracy"] = to_json(metrics.overall_accuracy);
   json["mean_class_accuracy"] = to_json(metrics.mean_class_accuracy);
+  json["mean_over"] = to_string(metrics.mean_over);
+  json["classes_averaged"] = Json::UInt64(metrics.classes_averaged);
   json["classes_with_support"] = Json::UInt64(metrics.classes_with_support);
   json["points"] = Json::UInt64(metrics.points);
   json["correct_points"] = Json::UInt64(metrics.correct);
@@ -212,11 +205,7 @@ Json::Value to_json(const EvaluateReport& report) {
   json["scenes"] = scenes;
   json["mapping"] = mapping_json(report.mapping, q.mapping_path);
 
-  Json::Value parameters(Json::objectValue);
-  parameters["max_distance"] = q.max_distance;
-  parameters["skip_bad_lines"] = q.skip_bad_lines;
-  parameters["threads"] = q.threads;
-  json["parameters"] = parameters;
+  json["parameters"] = parameters_json(evaluate_keys(), q);
 
   Json::Value timings(Json::objectValue);
   timings["load_seconds"] = report.load_seconds;

@@ -12,18 +12,10 @@ namespace occlusion {
 
 void validate(const ExtractPolygonsRequest& request) {
   if (request.path.empty()) {
-    throw UsageError("no cloud given (occlusion.region_growing.path)");
+    throw UsageError("no cloud given (occlusion.extract_polygons.path)");
   }
+  check_keys(extract_polygons_keys(), request);
   job::validate_estimation(request.estimation);
-}
-
-void apply_config(const Config& config, ExtractPolygonsRequest& request) {
-  const ConfigSection section(config, "region_growing");
-  section.read_path("path", request.path);
-  job::read_estimation(section, request.estimation);
-  section.read("threads", request.threads);
-  section.read("skip_bad_lines", request.skip_bad_lines);
-  section.read_path("out", request.out);
 }
 
 ExtractPolygonsReport run_extract_polygons(const ExtractPolygonsRequest& request,
@@ -33,8 +25,9 @@ ExtractPolygonsReport run_extract_polygons(const ExtractPolygonsRequest& request
   ExtractPolygonsReport report;
   report.request = request;
 
-  job::CloudEstimate input = job::load_and_estimate(request.path, request.skip_bad_lines,
-                                                    request.estimation, request.threads, progress);
+  job::CloudEstimate input =
+      job::load_and_estimate(request.path, request.skip_bad_lines, request.estimation,
+                             request.threads, request.max_memory_mb, progress);
   job::take_estimate(input, report);
 
   if (!request.out.empty()) {
@@ -43,11 +36,15 @@ ExtractPolygonsReport run_extract_polygons(const ExtractPolygonsRequest& request
     const std::string obj_path = job::output_path(request.out, request.path, ".polygons.obj");
     const std::string segmented_path =
         job::output_path(request.out, request.path, ".segmented.ply");
-    write_obj(obj_path, report.estimate.mesh, "planes found by region growing in " + request.path);
-    write_cloud(segmented_path, input.loaded.cloud, {job::cluster_field(report.estimate)});
+    OutputSet outputs;
+    write_obj(outputs.add(obj_path), report.estimate.mesh,
+              "planes found by region growing in " + request.path);
+    write_cloud(outputs.add(segmented_path), input.loaded.cloud,
+                {job::cluster_field(report.estimate)});
     report.outputs = {json_path, obj_path, segmented_path};
     report.total_seconds = job::seconds_since(start);
-    job::write_json_report(json_path, to_json(report));
+    job::write_json_report(outputs.add(json_path), to_json(report));
+    outputs.commit();
   }
   report.total_seconds = job::seconds_since(start);
   return report;
@@ -71,10 +68,7 @@ Json::Value to_json(const ExtractPolygonsReport& report) {
   mesh["faces"] = Json::UInt64(e.mesh.face_count());
   json["mesh"] = mesh;
 
-  Json::Value parameters(Json::objectValue);
-  job::add_estimation_parameters(report.request.estimation, parameters);
-  parameters["threads"] = report.request.threads;
-  json["parameters"] = parameters;
+  json["parameters"] = parameters_json(extract_polygons_keys(), report.request);
 
   Json::Value timings(Json::objectValue);
   timings["load_seconds"] = report.load_seconds;

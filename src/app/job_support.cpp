@@ -2,7 +2,9 @@
 
 #include <cmath>
 #include <filesystem>
+#include <sstream>
 
+#include "occlusion/analysis/inside_solid.hpp"
 #include "occlusion/app/errors.hpp"
 #include "occlusion/app/json_output.hpp"
 #include "occlusion/io/atomic_file.hpp"
@@ -18,11 +20,141 @@ std::string output_path(const std::string& out, const std::string& input,
   return (std::filesystem::path(out) / (input_path.stem().string() + suffix)).string();
 }
 
-ViewpointChoice::Resolved resolve_for_cloud(const ViewpointChoice& choice,
-                                            const PointCloud& cloud) {
-  Eigen::Vector3f lo, hi;
-  cloud.bounds(lo, hi);
-  return choice.resolve(lo.cast<double>(), hi.cast<double>());
+FrameKind parse_frame(const std::string& frame) {
+  try {
+    return parse_frame_kind(frame);
+  } catch (const std::invalid_argument& e) {
+    throw KeyError("frame", std::string("is wrong: ") + e.what());
+  }
+}
+
+UpAxis parse_up(const std::string& up) {
+  try {
+    return UpAxis::parse(up);
+  } catch (const std::invalid_argument& e) {
+    throw KeyError("up", std::string("is wrong: ") + e.what());
+  }
+}
+
+namespace {
+
+Json::Value box_json(const Box& box) {
+  Json::Value json(Json::objectValue);
+  json["min"] = to_json(box.lo);
+  json["max"] = to_json(box.hi);
+  return json;
+}
+
+std::string position_text(const Eigen::Vector3d& p) {
+  std::ostringstream text;
+  text.precision(4);
+  text << '(' << p.x() << ", " << p.y() << ", " << p.z() << ')';
+  return text.str();
+}
+
+}  // namespace
+
+ViewpointChoice::Resolved resolve_for_cloud(const ViewpointChoice& choice, const PointCloud& cloud,
+                                            const std::string& frame, const std::string& up) {
+  const FrameKind kind = parse_frame(frame);
+  const UpAxis up_axis = parse_up(up);
+  const SceneFrame boxes = measure_scene_frame(cloud.positions);
+  const Box& placement = kind == FrameKind::kRobust ? boxes.robust : boxes.bbox;
+  ViewpointChoice::Resolved resolved = choice.resolve(placement.lo, placement.hi, up_axis.axis);
+
+  resolved.frame = Json::Value(Json::objectValue);
+  resolved.frame["frame"] = frame;
+  resolved.frame["up"] = up_axis.name();
+  resolved.frame["bbox"] = box_json(boxes.bbox);
+  resolved.frame["robust"] = box_json(boxes.robust);
+  resolved.frame["robust_quantile"] = kRobustQuantile;
+  for (std::size_t v = 0; v < resolved.positions.size(); ++v) {
+    // A single-view frame's sensor looks at the scene from outside it, rightly.
+    const bool at_sensor =
+        cloud.sensor.single_view() &&
+        (resolved.positions[v] - cloud.sensor.origin).cwiseAbs().maxCoeff() <= 1e-6;
+    if (!at_sensor && !boxes.robust.contains(resolved.positions[v])) {
+      resolved.warnings.push_back(
+          "viewpoint " + resolved.names[v] + " at " + position_text(resolved.positions[v]) +
+          " lies outside the occupied space (the robust box from " +
+          position_text(boxes.robust.lo) + " to " + position_text(boxes.robust.hi) +
+          "): its rays measure the outside of the scene");
+    }
+  }
+  if (choice.kind == ViewpointChoice::Kind::kGrid) {
+    if (const auto message = check_up_axis(cloud.positions, up_axis)) {
+      resolved.warnings.push_back(*message);
+    }
+  }
+  return resolved;
+}
+
+void warn_viewpoints_inside_solids(const TriangleMesh& mesh,
+                                   const ViewpointChoice::Resolved& viewpoints,
+                                   std::vector<std::string>& warnings) {
+  const std::vector<double> shares = back_face_shares(mesh, viewpoints.positions);
+  for (std::size_t v = 0; v < shares.size(); ++v) {
+    if (shares[v] <= kInsideBackFaceShare) continue;
+    std::ostringstream message;
+    message << "viewpoint " << viewpoints.names[v] << " at "
+            << position_text(viewpoints.positions[v]) << ": "
+            << static_cast<int>(std::lround(100.0 * shares[v]))
+            << " % of its rays first hit the back of a face, so it is inside a closed solid "
+               "(or the mesh's faces point away from it): move it, or check the face order";
+    warnings.push_back(message.str());
+  }
+}
+
+PointRadius choose_point_radius(const PointCloud& cloud, double requested, const std::string& job,
+                                std::vector<std::string>& warnings) {
+  PointRadius chosen;
+  chosen.automatic = is_auto_radius(requested);
+  try {
+    chosen.spacing = measure_point_spacing(cloud);
+  } catch (const std::invalid_argument& e) {
+    // Too few distinct points for a spacing: fine with an explicit radius.
+    if (!chosen.automatic) {
+      chosen.radius = requested;
+      return chosen;
+    }
+    throw UsageError(std::string("--point-radius auto: ") + e.what() + "; give a radius");
+  }
+  const double spacing = chosen.spacing.spacing;
+  const double factor = job == "-fscan" ? kScanRadiusPerSpacing : kTracingRadiusPerSpacing;
+  chosen.radius = chosen.automatic ? factor * spacing : requested;
+  if (chosen.automatic) return chosen;
+  std::ostringstream message;
+  message << "point_radius " << requested << " is " << requested / spacing
+          << " x the point spacing " << spacing << " (median nearest-neighbour distance): ";
+  if (requested > kHighRadiusPerSpacing * spacing) {
+    message << (job == "-fscan" ? "neighbouring points hide each other, so the visible fraction "
+                                  "is too low"
+                                : "points swell into each other and close real gaps, so the "
+                                  "occlusion level is too low");
+  } else if (requested < kLowRadiusPerSpacing * spacing) {
+    message << (job == "-fscan"
+                    ? "rays pass between the points of a surface, so points behind it count as "
+                      "seen and the visible fraction is too high"
+                    : "rays leak between the points of surfaces, so the occlusion level is too "
+                      "high");
+  } else {
+    return chosen;
+  }
+  message << " (omit point_radius for auto = " << factor << " x spacing)";
+  warnings.push_back(message.str());
+  return chosen;
+}
+
+Json::Value point_radius_json(const PointRadius& radius) {
+  Json::Value json(Json::objectValue);
+  json["point_radius"] = radius.radius;
+  json["automatic"] = radius.automatic;
+  json["spacing"] = radius.spacing.spacing;
+  json["spacing_quantile_10"] = radius.spacing.quantile_10;
+  json["spacing_quantile_90"] = radius.spacing.quantile_90;
+  json["spacing_samples"] = Json::UInt64(radius.spacing.samples);
+  json["duplicate_points_sampled"] = Json::UInt64(radius.spacing.duplicate_hits);
+  return json;
 }
 
 Json::Value viewpoint_json(const std::string& name, const Eigen::Vector3d& position) {
@@ -34,15 +166,7 @@ Json::Value viewpoint_json(const std::string& name, const Eigen::Vector3d& posit
 
 std::string cloud_extension(const std::string& format) {
   if (format == "ply" || format == "pcd") return format;
-  throw UsageError("--format must be ply or pcd, got '" + format + "'");
-}
-
-void require_positive(double value, const std::string& option) {
-  if (!std::isfinite(value) || value <= 0.0) throw UsageError(option + " must be a number > 0");
-}
-
-void require_non_negative(double value, const std::string& option) {
-  if (!std::isfinite(value) || value < 0.0) throw UsageError(option + " must be a number >= 0");
+  throw KeyError("format", "must be ply or pcd, got '" + format + "'");
 }
 
 void write_json_report(const std::string& path, const Json::Value& json) {

@@ -7,7 +7,11 @@
 #include <string>
 #include <vector>
 
+#include "occlusion/analysis/point_spacing.hpp"
+#include "occlusion/analysis/scene_frame.hpp"
+#include "occlusion/analysis/up_axis.hpp"
 #include "occlusion/app/viewpoint_choice.hpp"
+#include "occlusion/core/mesh.hpp"
 #include "occlusion/core/point_cloud.hpp"
 
 namespace occlusion::job {
@@ -22,18 +26,38 @@ inline double seconds_since(Clock::time_point start) {
 std::string output_path(const std::string& out, const std::string& input,
                         const std::string& suffix);
 
-// Viewpoints for a cloud, from its bounding box.
-ViewpointChoice::Resolved resolve_for_cloud(const ViewpointChoice& choice, const PointCloud& cloud);
+// Viewpoints for a cloud, placed on its robust frame or its bounding box
+// (`frame`: robust|bbox, scene_frame.hpp) with `up` a signed axis
+// (up_axis.hpp). Resolved::frame reports both boxes and the up axis; warnings
+// name each viewpoint outside the occupied space (the robust box) and, for a
+// grid (whose mid-height follows up), data that disagree with up. UsageError
+// for an unknown frame or up.
+ViewpointChoice::Resolved resolve_for_cloud(const ViewpointChoice& choice, const PointCloud& cloud,
+                                            const std::string& frame = "robust",
+                                            const std::string& up = "+z");
+// Meshes keep their bounding box (scene_frame.hpp says why); this warns for
+// each viewpoint that is inside a closed solid (inside_solid.hpp).
+void warn_viewpoints_inside_solids(const TriangleMesh& mesh,
+                                   const ViewpointChoice::Resolved& viewpoints,
+                                   std::vector<std::string>& warnings);
+
+// The parsed settings, or UsageError naming the option.
+FrameKind parse_frame(const std::string& frame);
+UpAxis parse_up(const std::string& up);
+
+// The point radius a job traces with: the request's, or for kAutoPointRadius
+// the measured spacing times kScanRadiusPerSpacing (`job` "-fscan") or
+// kTracingRadiusPerSpacing ("-poc"). The spacing is measured either way and a
+// radius far from it is warned about, naming the bias, which differs by job.
+PointRadius choose_point_radius(const PointCloud& cloud, double requested, const std::string& job,
+                                std::vector<std::string>& warnings);
+Json::Value point_radius_json(const PointRadius& radius);
 
 // [{"name": ..., "position": [x, y, z], <figures>...}, ...] built by the caller.
 Json::Value viewpoint_json(const std::string& name, const Eigen::Vector3d& position);
 
 // Throws UsageError unless format is "ply" or "pcd"; returns the file extension.
 std::string cloud_extension(const std::string& format);
-
-// Option checks shared by the jobs; each throws UsageError naming the option.
-void require_positive(double value, const std::string& option);
-void require_non_negative(double value, const std::string& option);
 
 // Writes a job's JSON report atomically.
 void write_json_report(const std::string& path, const Json::Value& json);

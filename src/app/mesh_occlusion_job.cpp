@@ -9,6 +9,7 @@
 #include "occlusion/analysis/mesh_sampling.hpp"
 #include "occlusion/app/errors.hpp"
 #include "occlusion/app/json_output.hpp"
+#include "occlusion/app/memory_budget.hpp"
 #include "occlusion/io/atomic_file.hpp"
 #include "occlusion/io/csv_file.hpp"
 #include "occlusion/io/obj_reader.hpp"
@@ -35,21 +36,8 @@ void write_face_csv(const std::string& path, const TriangleMesh& mesh,
 
 void validate(const MeshOcclusionRequest& request) {
   if (request.path.empty()) throw UsageError("no mesh given (-moc MESH or occlusion.mesh.path)");
+  check_keys(mesh_occlusion_keys(), request);
   request.viewpoints.validate();
-  job::require_positive(request.samples_per_unit_area, "--samples-per-unit-area");
-  job::require_non_negative(request.octree_resolution, "--octree-resolution");
-}
-
-void apply_config(const Config& config, MeshOcclusionRequest& request) {
-  const ConfigSection section(config, "mesh");
-  section.read_path("path", request.path);
-  section.read_viewpoints(request.viewpoints);
-  section.read("samples_per_unit_area", request.samples_per_unit_area);
-  section.read("octree_resolution", request.octree_resolution);
-  section.read("enable_acceleration", request.enable_acceleration);
-  section.read("seed", request.seed);
-  section.read("threads", request.threads);
-  section.read_path("out", request.out);
 }
 
 MeshOcclusionReport run_mesh_occlusion(const MeshOcclusionRequest& request,
@@ -68,6 +56,10 @@ MeshOcclusionReport run_mesh_occlusion(const MeshOcclusionRequest& request,
   mesh.bounds(lo, hi);
   ViewpointChoice::Resolved viewpoints = request.viewpoints.resolve(lo, hi);
   report.viewpoint_names = viewpoints.names;
+  check_memory_budget(
+      mesh_occlusion_memory(mesh, request.samples_per_unit_area, viewpoints.positions.size()),
+      request.max_memory_mb);
+  job::warn_viewpoints_inside_solids(mesh, viewpoints, report.warnings);
   const double half_extent = 0.5 * (hi - lo).maxCoeff();
   if (request.enable_acceleration && request.octree_resolution >= half_extent) {
     report.warnings.push_back("octree_resolution " + std::to_string(request.octree_resolution) +
@@ -90,11 +82,14 @@ MeshOcclusionReport run_mesh_occlusion(const MeshOcclusionRequest& request,
     const std::string json_path = job::output_path(request.out, request.path, ".moc.json");
     const std::string ply_path = job::output_path(request.out, request.path, ".moc.ply");
     const std::string csv_path = job::output_path(request.out, request.path, ".moc.csv");
-    write_mesh_ply(ply_path, mesh, report.result.face_visible_fraction, "visible_fraction");
-    write_face_csv(csv_path, mesh, report);
+    OutputSet outputs;
+    write_mesh_ply(outputs.add(ply_path), mesh, report.result.face_visible_fraction,
+                   "visible_fraction");
+    write_face_csv(outputs.add(csv_path), mesh, report);
     report.outputs = {json_path, ply_path, csv_path};
     report.total_seconds = job::seconds_since(start);
-    job::write_json_report(json_path, to_json(report));
+    job::write_json_report(outputs.add(json_path), to_json(report));
+    outputs.commit();
   }
   report.total_seconds = job::seconds_since(start);
   return report;
@@ -136,13 +131,7 @@ Json::Value to_json(const MeshOcclusionReport& report) {
   }
   json["groups"] = groups;
 
-  Json::Value parameters = q.viewpoints.to_json();
-  parameters["samples_per_unit_area"] = q.samples_per_unit_area;
-  parameters["octree_resolution"] = q.octree_resolution;
-  parameters["enable_acceleration"] = q.enable_acceleration;
-  parameters["seed"] = Json::UInt64(q.seed);
-  parameters["threads"] = q.threads;
-  json["parameters"] = parameters;
+  json["parameters"] = parameters_json(mesh_occlusion_keys(), q);
 
   json["octree"] = to_json(r.octree);
 

@@ -15,16 +15,9 @@ void validate(const ReconstructRequest& request) {
   if (request.path.empty()) {
     throw UsageError("no folder given (-recon ROOM_OR_AREA_FOLDER)");
   }
+  check_keys(reconstruct_keys(), request);
   job::cloud_extension(request.format);
-  if (request.out.empty()) throw UsageError("--out must not be empty");
-}
-
-void apply_config(const Config& config, ReconstructRequest& request) {
-  const ConfigSection section(config, "reconstruct");
-  section.read_path("path", request.path);
-  section.read("format", request.format);
-  section.read("skip_bad_lines", request.skip_bad_lines);
-  section.read_path("out", request.out);
+  if (request.out.empty()) throw KeyError("out", "must not be empty");
 }
 
 ReconstructReport run_reconstruct(const ReconstructRequest& request, const Progress& progress) {
@@ -64,10 +57,12 @@ ReconstructReport run_reconstruct(const ReconstructRequest& request, const Progr
   const std::string cloud_path =
       job::output_path(request.out, request.path, "." + job::cloud_extension(request.format));
   const std::string json_path = job::output_path(request.out, request.path, ".recon.json");
-  write_cloud(cloud_path, cloud);
+  OutputSet outputs;
+  write_cloud(outputs.add(cloud_path), cloud);
   report.outputs = {cloud_path, json_path};
   report.total_seconds = job::seconds_since(start);
-  job::write_json_report(json_path, to_json(report));
+  job::write_json_report(outputs.add(json_path), to_json(report));
+  outputs.commit();
   progress("done", 1.0);
   return report;
 }
@@ -91,6 +86,7 @@ Json::Value to_json(const ReconstructReport& report) {
   json["dropped_nan_points"] = Json::UInt64(report.dropped_nan);
   json["skipped_lines"] = Json::UInt64(report.skipped_lines);
   json["format"] = report.request.format;
+  json["parameters"] = parameters_json(reconstruct_keys(), report.request);
   json["outputs"] = to_json(report.outputs);
   json["warnings"] = to_json(report.warnings);
   json["timings"]["total_seconds"] = report.total_seconds;

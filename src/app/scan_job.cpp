@@ -5,6 +5,7 @@
 #include "job_support.hpp"
 #include "occlusion/app/errors.hpp"
 #include "occlusion/app/json_output.hpp"
+#include "occlusion/app/memory_budget.hpp"
 #include "occlusion/io/atomic_file.hpp"
 #include "occlusion/io/cloud_io.hpp"
 
@@ -40,29 +41,13 @@ std::vector<ClassVisibility> per_class(const PointCloud& cloud, const ScanResult
 
 void validate(const ScanRequest& request) {
   if (request.path.empty()) {
-    throw UsageError("no cloud given (-fscan CLOUD or occlusion.point_cloud.path)");
+    throw UsageError("no cloud given (-fscan CLOUD or occlusion.scan.path)");
   }
+  check_keys(scan_keys(), request);
   request.viewpoints.validate();
-  job::require_positive(request.point_radius, "--point-radius");
-  if (!std::isfinite(request.self_tolerance)) {
-    throw UsageError("--self-tolerance must be a number (negative: 2 x point radius)");
-  }
-  job::require_non_negative(request.octree_resolution, "--octree-resolution");
+  job::parse_frame(request.frame);
+  job::parse_up(request.up);
   job::cloud_extension(request.format);
-}
-
-void apply_config(const Config& config, ScanRequest& request) {
-  const ConfigSection section(config, "point_cloud");
-  section.read_path("path", request.path);
-  section.read_viewpoints(request.viewpoints);
-  section.read("point_radius", request.point_radius);
-  section.read("self_tolerance", request.self_tolerance);
-  section.read("octree_resolution", request.octree_resolution);
-  section.read("enable_acceleration", request.enable_acceleration);
-  section.read("format", request.format);
-  section.read("skip_bad_lines", request.skip_bad_lines);
-  section.read("threads", request.threads);
-  section.read_path("out", request.out);
 }
 
 ScanReport run_scan_on(const PointCloud& cloud, const ViewpointChoice::Resolved& viewpoints,
@@ -72,10 +57,17 @@ ScanReport run_scan_on(const PointCloud& cloud, const ViewpointChoice::Resolved&
   ScanReport report;
   report.request = request;
   report.viewpoint_names = viewpoints.names;
+  report.frame = viewpoints.frame;
+  report.warnings.insert(report.warnings.end(), viewpoints.warnings.begin(),
+                         viewpoints.warnings.end());
   report.viewpoint_positions = viewpoints.positions;
+  check_memory_budget(scan_memory(cloud.size(), viewpoints.positions.size()),
+                      request.max_memory_mb);
+  report.point_radius =
+      job::choose_point_radius(cloud, request.point_radius, "-fscan", report.warnings);
 
   ScanOptions options;
-  options.point_radius = request.point_radius;
+  options.point_radius = report.point_radius.radius;
   options.self_tolerance = request.self_tolerance;
   options.octree.min_cell_size = static_cast<float>(request.octree_resolution);
   options.octree.enable_acceleration = request.enable_acceleration;
@@ -101,8 +93,9 @@ ScanReport run_scan(const ScanRequest& request, const Progress& progress) {
   const double load_seconds = job::seconds_since(start);
   progress.check_cancel();
 
-  ScanReport report =
-      run_scan_on(cloud, job::resolve_for_cloud(request.viewpoints, cloud), request, progress);
+  ScanReport report = run_scan_on(
+      cloud, job::resolve_for_cloud(request.viewpoints, cloud, request.frame, request.up), request,
+      progress);
   report.dropped_nan = loaded.dropped_nan;
   report.skipped_lines = loaded.skipped_lines;
   report.load_seconds = load_seconds;
@@ -121,11 +114,13 @@ ScanReport run_scan(const ScanRequest& request, const Progress& progress) {
     for (const auto count : report.result.visible_count) {
       visible_count.values.push_back(static_cast<float>(count));
     }
-    write_cloud(scanned_path, cloud.subset(seen_points(report.result)));
-    write_cloud(full_path, cloud, {visible_count});
+    OutputSet outputs;
+    write_cloud(outputs.add(scanned_path), cloud.subset(seen_points(report.result)));
+    write_cloud(outputs.add(full_path), cloud, {visible_count});
     report.outputs = {json_path, scanned_path, full_path};
     report.total_seconds = job::seconds_since(start);
-    job::write_json_report(json_path, to_json(report));
+    job::write_json_report(outputs.add(json_path), to_json(report));
+    outputs.commit();
   }
   report.total_seconds = job::seconds_since(start);
   return report;
@@ -165,14 +160,15 @@ Json::Value to_json(const ScanReport& report) {
   }
   json["classes"] = classes;
 
-  Json::Value parameters = q.viewpoints.to_json();
-  parameters["point_radius"] = q.point_radius;
-  parameters["self_tolerance"] = q.self_tolerance < 0.0 ? 2.0 * q.point_radius : q.self_tolerance;
-  parameters["octree_resolution"] = q.octree_resolution;
-  parameters["enable_acceleration"] = q.enable_acceleration;
-  parameters["format"] = q.format;
-  parameters["threads"] = q.threads;
+  Json::Value parameters = parameters_json(scan_keys(), q);
+  // The radius and tolerance in force, not "auto" or the "-1 = 2 x radius" shorthand.
+  const double radius = report.point_radius.radius;
+  parameters["point_radius"] = radius;
+  parameters["point_radius_auto"] = report.point_radius.automatic;
+  parameters["self_tolerance"] = q.self_tolerance < 0.0 ? 2.0 * radius : q.self_tolerance;
   json["parameters"] = parameters;
+  if (!report.frame.isNull()) json["frame"] = report.frame;
+  json["point_spacing"] = job::point_radius_json(report.point_radius);
 
   Json::Value timings(Json::objectValue);
   timings["load_seconds"] = report.load_seconds;

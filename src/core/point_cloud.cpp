@@ -49,6 +49,7 @@ PointCloud PointCloud::subset(const std::vector<bool>& keep) const {
   }
   PointCloud out;
   out.class_names = class_names;
+  out.sensor = sensor;  // the same sensor saw the kept points
   keep_where(positions, keep, out.positions);
   keep_where(colours, keep, out.colours);
   keep_where(labels, keep, out.labels);

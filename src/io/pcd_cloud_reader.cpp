@@ -134,6 +134,10 @@ class PcdCloudReader {
     }
     data_type_ = data_type;
     data_index_ = data_index;
+    sensor_.origin = origin.head<3>().cast<double>();
+    sensor_.orientation = orientation.cast<double>();
+    sensor_.width = blob_.width;
+    sensor_.height = blob_.height;
     if (data_index_ > bytes_.size()) throw InputError(path_, 0, "the header is cut off");
     points_ = static_cast<std::size_t>(blob_.width) * blob_.height;
     blob_.data.resize(points_ * blob_.point_step);
@@ -358,6 +362,7 @@ class PcdCloudReader {
   PointCloud convert() {
     PointCloud cloud;
     cloud.class_names = class_names_;
+    cloud.sensor = sensor_;
     const bool colours = packed_colour_ != nullptr || channels_[0] != nullptr;
     cloud.positions.reserve(points_);
     if (colours) cloud.colours.reserve(points_);
@@ -417,6 +422,7 @@ class PcdCloudReader {
   int version_ = 0;
   int data_type_ = 0;
   unsigned int data_index_ = 0;
+  SensorFrame sensor_;
   std::size_t data_line_ = 1;
   std::size_t points_ = 0;
   std::vector<std::string> class_names_;

@@ -9,6 +9,8 @@ packages=(
   libeigen3-dev libjsoncpp-dev libgtest-dev
   libpcl-dev libflann-dev
   libwebsocketpp-dev libboost-dev libboost-system-dev
+  # The study's sharding recipes, run for real by tests/scripts/study_*_test.sh.
+  slurm-wlm munge parallel
 )
 if [[ "${1:-}" == "--bench" ]]; then
   packages+=(libembree-dev)

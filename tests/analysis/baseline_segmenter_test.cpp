@@ -121,5 +121,28 @@ TEST(BaselineSegmenter, RejectsClusterIdsOfAnotherCloud) {
   EXPECT_THROW(segment_baseline(cloud, MeshEstimate{}, bad), std::invalid_argument);
 }
 
+// The same room in a camera frame (x right, y down, z forward), as Kinect
+// data come: with up -y it is labelled as the z-up room is; with the default
+// +z, the data say that up is wrong.
+TEST(BaselineSegmenter, CameraFrameRoomNeedsUpMinusY) {
+  PointCloud cloud = box_room();
+  for (auto& p : cloud.positions) p = Eigen::Vector3f(p.x(), -p.z(), p.y());
+  const MeshEstimate mesh = estimate(cloud);
+  BaselineOptions options = distinct_ids();
+  options.up = UpAxis::parse("-y");
+  const BaselineSegmentation right = segment_baseline(cloud, mesh, options);
+  EXPECT_TRUE(right.warnings.empty());
+  EXPECT_GE(share_labelled(cloud, right.labels, kFloor, 10), 0.98);
+  EXPECT_GE(share_labelled(cloud, right.labels, kCeiling, 11), 0.98);
+  EXPECT_GE(share_labelled(cloud, right.labels, kWall, 12), 0.98);
+  EXPECT_GE(share_labelled(cloud, right.labels, kTable, 13), 0.98);
+
+  options.up = UpAxis{};  // +z
+  const BaselineSegmentation wrong = segment_baseline(cloud, mesh, options);
+  ASSERT_EQ(wrong.warnings.size(), 1u);
+  EXPECT_NE(wrong.warnings[0].find("perpendicular to y"), std::string::npos);
+  EXPECT_LT(share_labelled(cloud, wrong.labels, kFloor, 10), 0.5);
+}
+
 }  // namespace
 }  // namespace occlusion

@@ -90,7 +90,10 @@ TEST(CloudCli, ExteriorVariantAndRatio) {
 
 TEST(CloudCli, ScanWritesSeenAndFullClouds) {
   const TempDir dir;
-  const Json::Value json = run_json("-fscan " + kRoom + " --pattern 1 --out '" + dir.path() + "'");
+  // The radius the point-radius default was before it became auto.
+  const std::string radius = " --point-radius 0.01";
+  const Json::Value json =
+      run_json("-fscan " + kRoom + radius + " --pattern 1 --out '" + dir.path() + "'");
   const double fraction = json["visible_fraction"].asDouble();
   EXPECT_GT(fraction, 0.3);
   EXPECT_LT(fraction, 1.0);
@@ -100,10 +103,11 @@ TEST(CloudCli, ScanWritesSeenAndFullClouds) {
             std::string::npos);
   // The scanned cloud has only points the viewpoint saw, and fewer blockers
   // than the full one: scanned again from the same viewpoint, all are seen.
-  const Json::Value again = run_json("-fscan '" + dir.file("office_1.scan.ply") + "' --viewpoint " +
-                                     json["viewpoints"][0]["position"][0].asString() + "," +
-                                     json["viewpoints"][0]["position"][1].asString() + "," +
-                                     json["viewpoints"][0]["position"][2].asString());
+  const Json::Value again =
+      run_json("-fscan '" + dir.file("office_1.scan.ply") + "'" + radius + " --viewpoint " +
+               json["viewpoints"][0]["position"][0].asString() + "," +
+               json["viewpoints"][0]["position"][1].asString() + "," +
+               json["viewpoints"][0]["position"][2].asString());
   EXPECT_EQ(again["points"].asUInt64(), json["visible_points"].asUInt64());
   EXPECT_EQ(again["visible_fraction"].asDouble(), 1.0);
 }
@@ -119,6 +123,26 @@ TEST(CloudCli, ExampleConfigRunsEveryCloudJob) {
   const TempDir dir;
   const Json::Value recon = run_json("-recon" + config + " --out '" + dir.path() + "'");
   EXPECT_EQ(recon["rooms"].size(), 1u);
+}
+
+// The real Kinect frame (issue 12.2 and 12.4): from its own sensor, with
+// the default (automatic) radius, the scan keeps every point, and occlusion
+// is taken over the sensor's field of view.
+TEST(CloudCli, KinectFrameFromItsSensor) {
+  const std::string frame = "'" + kSource + "/../shared/data/mosd_learn25.pcd' --viewpoint 0,0,0";
+  const Json::Value scan = run_json("-fscan " + frame);
+  EXPECT_EQ(scan["points"].asUInt64(), 195021u);
+  EXPECT_GE(scan["visible_fraction"].asDouble(), 0.99);
+  EXPECT_TRUE(scan["parameters"]["point_radius_auto"].asBool());
+  EXPECT_EQ(scan["warnings"].size(), 0u);
+  const Json::Value poc = run_json("-poc " + frame + " --num-rays-per-vp 3000");
+  EXPECT_EQ(poc["field_of_view"]["source"].asString(), "organised frame 640 x 480");
+  // A 57 x 41 degree view holds about 6 % of the directions.
+  EXPECT_GT(poc["outside_view_rays"].asUInt64(), 2700u);
+  EXPECT_EQ(poc["hits"].asUInt64() + poc["occlusion_rays"].asUInt64() +
+                poc["outside_view_rays"].asUInt64(),
+            3000u);
+  EXPECT_LT(poc["occlusion_level"].asDouble(), 0.5);
 }
 
 TEST(CloudCli, RealScanRuns) {

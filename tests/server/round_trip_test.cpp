@@ -41,7 +41,7 @@ TEST_F(RoundTrip, HelloListsCommandsAndLimits) {
   for (const char* command :
        {"ping", "list_files", "load", "upload", "mesh_occlusion", "cloud_occlusion", "scan",
         "reconstruct", "evaluate", "region_growing_occlusion", "extract_polygons", "study",
-        "save_polygon", "cancel"}) {
+        "save_polygon", "read_polygons", "cancel"}) {
     EXPECT_TRUE(hello["commands"][command].asBool()) << command;
   }
   EXPECT_EQ(hello["limits"]["max_text_bytes"].asUInt64(), 1u << 20);
@@ -358,6 +358,18 @@ TEST_F(RoundTrip, SavePolygonWritesAnOpeningsFileTheJobsRead) {
   ASSERT_EQ(saved.size(), 2u);
   EXPECT_EQ(saved[0], original[0]);
   EXPECT_EQ(saved[1], original[1]);
+  // read_polygons gives them back, in order, for the viewer to draw.
+  reply = client_->request(19, "read_polygons", params(R"({"path": "openings/office.txt"})"));
+  ASSERT_TRUE(reply.ok()) << reply.final;
+  const Json::Value& read = reply.final["result"]["polygons"];
+  ASSERT_EQ(read.size(), 2u);
+  ASSERT_EQ(read[1].size(), 4u);
+  EXPECT_DOUBLE_EQ(read[1][2][1].asDouble(), 1.5);
+  EXPECT_DOUBLE_EQ(read[1][2][2].asDouble(), 2.1);
+  EXPECT_EQ(client_->request(20, "read_polygons", params(R"({"path": "openings/none.txt"})"))
+                .final["type"]
+                .asString(),
+            "error");
 
   reply = client_->request(
       18, "cloud_occlusion",

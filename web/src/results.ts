@@ -3,6 +3,7 @@
 // shown as "—", never a crash.
 
 import type { Bounds, Vec3 } from "./decode/types";
+import type { MeasureId } from "./study_measures";
 
 export interface LoadResult {
   kind: "cloud" | "mesh";
@@ -19,6 +20,9 @@ export interface LoadResult {
   dropped_nan?: number;
   skipped_lines?: number;
   cached?: boolean;
+  /** The server's robust frame (issue 12), when it sends one. */
+  robust_box?: Bounds;
+  frame?: Record<string, unknown>;
 }
 
 export interface ViewpointReport {
@@ -87,16 +91,23 @@ export function isEvaluation(report: JobReport): report is EvaluationReport {
 }
 
 export interface StudyPoint {
-  occlusion: number;
+  /** The x measures this point has (a point appears only under those). */
+  measures: Partial<Record<MeasureId, number>>;
   miou: number;
   label: string;
   /** Where the point comes from: this session's evaluations, or a server study. */
-  series?: "session" | "study";
+  series: "session" | "study";
 }
 
+const STUDY_MEASURES: MeasureId[] = [
+  "visible_fraction",
+  "occlusion_level",
+  "exterior_occlusion_level",
+];
+
 /**
- * Points (occlusion, mIoU) found anywhere in a `study` report: every object
- * holding both an `occlusion_level` and a `miou` number.
+ * Points found anywhere in a `study` report: every object (a row of
+ * study.csv) holding a `miou` and at least one of the study's measures.
  */
 export function studyPoints(report: unknown, label = ""): StudyPoint[] {
   const found: StudyPoint[] = [];
@@ -107,12 +118,17 @@ export function studyPoints(report: unknown, label = ""): StudyPoint[] {
     }
     if (typeof value !== "object" || value === null) return;
     const o = value as Record<string, unknown>;
-    const occlusion = num(o.occlusion_level);
     const miou = num(o.miou);
-    if (occlusion !== undefined && miou !== undefined) {
-      const tag =
-        typeof o.name === "string" ? o.name : typeof o.scene === "string" ? o.scene : name;
-      found.push({ occlusion, miou, label: tag, series: "study" });
+    const measures: Partial<Record<MeasureId, number>> = {};
+    for (const m of STUDY_MEASURES) {
+      const v = num(o[m]);
+      if (v !== undefined) measures[m] = v;
+    }
+    if (miou !== undefined && Object.keys(measures).length > 0) {
+      const tag = [o.scene, o.configuration ?? o.name]
+        .filter((t) => typeof t === "string" && t)
+        .join(" ");
+      found.push({ measures, miou, label: tag || name, series: "study" });
       return;
     }
     for (const [k, v] of Object.entries(o)) visit(v, name ? `${name}.${k}` : k);

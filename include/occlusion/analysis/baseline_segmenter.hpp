@@ -16,12 +16,17 @@
 // class of the nearest floor, ceiling or wall plane within snap_distance of
 // it, inside that polygon's box grown by snap_distance; any other point is clutter.
 // Fractions are of the cloud's bounding box, so the rules hold at any scale.
+// "Vertical", "height" and "horizontal side" are along options.up (default
+// +z; camera-frame data such as Kinect frames has up -y), and the data are
+// checked against it (check_up_axis): a disagreement is returned as a warning.
 
 #include <array>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "occlusion/analysis/mesh_estimation.hpp"
+#include "occlusion/analysis/up_axis.hpp"
 #include "occlusion/core/point_cloud.hpp"
 
 namespace occlusion {
@@ -41,12 +46,14 @@ struct BaselineOptions {
   // The labels written per class: by default the evaluation ids of the seed's
   // table 3.1 (docs/metrics.md), so -eval scores the output as it is.
   std::int32_t floor_id = 1, ceiling_id = 1, wall_id = 0, clutter_id = 25;
+  UpAxis up;
 };
 
 struct BaselineSegmentation {
   std::vector<std::int32_t> labels;          // per point of the cloud
   std::vector<BaselineClass> plane_classes;  // per entry of estimate.planes
   std::array<std::size_t, 4> points{};       // per class, indexed by BaselineClass
+  std::vector<std::string> warnings;         // e.g. the data disagree with options.up
 };
 
 // An estimate without planes (and an empty point_cluster) labels every point

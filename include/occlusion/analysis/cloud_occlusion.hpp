@@ -12,13 +12,19 @@
 // not a hit. Rays are traced in blocks, so memory does not grow with the ray
 // count (except the escape directions, when kept).
 //
+// Single-view frames (field_of_view.hpp): with a field of view set, a ray
+// whose direction is outside it is an outside-view ray, counted apart and not
+// traced, and the level is occlusion rays / (rays - outside-view rays).
+//
 // Exterior-structure variant (thesis 3.3.5): only the points marked in
 // `blocking` stop rays (e.g. walls, floor, ceiling).
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
+#include "occlusion/analysis/field_of_view.hpp"
 #include "occlusion/analysis/progress.hpp"
 #include "occlusion/analysis/sphere_directions.hpp"
 #include "occlusion/core/octree.hpp"
@@ -42,21 +48,25 @@ struct CloudOcclusionOptions {
   std::vector<bool> blocking;
   // Keep each occlusion ray's direction per viewpoint (for the viewer).
   bool keep_escape_directions = false;
+  // Set for a single-view frame: rays outside it are counted apart.
+  std::optional<FieldOfView> field_of_view;
 };
 
 struct ViewpointRays {
   Eigen::Vector3d position;
   std::size_t rays = 0;
-  std::size_t hits = 0;              // stopped by a point
-  std::size_t through_openings = 0;  // left through an opening (and hit no point first)
-  std::size_t occlusion_rays = 0;    // neither
-  double occlusion_level = 0.0;      // occlusion_rays / rays
+  std::size_t hits = 0;               // stopped by a point
+  std::size_t through_openings = 0;   // left through an opening (and hit no point first)
+  std::size_t occlusion_rays = 0;     // neither
+  std::size_t outside_view_rays = 0;  // outside the field of view (when set): not traced
+  // occlusion_rays / (rays - outside_view_rays); 0 when every ray is outside the view
+  double occlusion_level = 0.0;
   std::vector<Eigen::Vector3f> escape_directions;  // if kept: unit directions
 };
 
 struct CloudOcclusionResult {
-  double occlusion_level = 0.0;  // all occlusion rays / all rays
-  std::size_t rays = 0, hits = 0, through_openings = 0, occlusion_rays = 0;
+  double occlusion_level = 0.0;  // all occlusion rays / all rays inside the view
+  std::size_t rays = 0, hits = 0, through_openings = 0, occlusion_rays = 0, outside_view_rays = 0;
   std::size_t points = 0, blocking_points = 0;
   std::vector<ViewpointRays> viewpoints;
   OctreeStats octree;

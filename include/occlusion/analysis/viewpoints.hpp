@@ -30,11 +30,13 @@ std::vector<std::string> pattern_viewpoint_names(int pattern);
 
 namespace occlusion {
 
-// `count` viewpoints placed reproducibly inside the box [lo, hi] (z is up):
-// an nx x ny grid at mid-height over the middle 80% of the floor plan, with
-// nx x ny the smallest near-square grid holding `count`, filled row by row.
-// Throws std::invalid_argument for count == 0 or an empty box.
+// `count` viewpoints placed reproducibly inside the box [lo, hi], up being
+// coordinate axis `up_axis` (2 = z, the default): an nx x ny grid at
+// mid-height over the middle 80% of the floor plan, whose axes are the next
+// two in cyclic order (x, y under z up; z, x under y up), with nx x ny the
+// smallest near-square grid holding `count`, filled row by row.
+// Throws std::invalid_argument for count == 0, an empty box or an axis not 0..2.
 std::vector<Eigen::Vector3d> grid_viewpoints(std::size_t count, const Eigen::Vector3d& lo,
-                                             const Eigen::Vector3d& hi);
+                                             const Eigen::Vector3d& hi, int up_axis = 2);
 
 }  // namespace occlusion

@@ -11,7 +11,8 @@
 #include <vector>
 
 #include "occlusion/analysis/cloud_occlusion.hpp"
-#include "occlusion/app/config.hpp"
+#include "occlusion/analysis/point_spacing.hpp"
+#include "occlusion/app/key.hpp"
 #include "occlusion/app/viewpoint_choice.hpp"
 
 namespace occlusion {
@@ -20,7 +21,8 @@ struct CloudOcclusionRequest {
   std::string path;
   ViewpointChoice viewpoints = ViewpointChoice::from_grid(9);
   std::uint64_t num_rays_per_vp = 30000;
-  double point_radius = 0.01;
+  // kAutoPointRadius: from the measured point spacing (job_support.hpp).
+  double point_radius = kAutoPointRadius;
   std::string polygon_path;  // openings file; empty = none
   double octree_resolution = 0.0;
   bool enable_acceleration = true;
@@ -28,12 +30,23 @@ struct CloudOcclusionRequest {
   double light_radius = 0.0;
   // Keep each occlusion ray's direction (for the viewer); always kept with --out.
   bool escape_directions = false;
+  // Full angles [horizontal, vertical] in degrees around the sensor's +z
+  // (pose from the PCD VIEWPOINT): treat the cloud as a single-view frame.
+  // Empty: measured from the frame when it is one (organised PCD, or a
+  // VIEWPOINT other than the default), else no field of view.
+  std::vector<double> field_of_view;
   bool exterior = false;  // also compute the exterior-structure variant
   std::vector<std::string> exterior_classes = {"wall", "floor", "ceiling"};
   bool skip_bad_lines = false;
+  // Box the pattern or grid is placed on: "robust" (per-axis quantiles, cuts
+  // off stray points) or "bbox" (all points); see analysis/scene_frame.hpp.
+  std::string frame = "robust";
+  std::string up = "+z";  // signed axis: where height matters (the grid's mid-height)
   std::uint64_t seed = 0;
   unsigned threads = 0;
   std::string out;
+  // Refuse, before the work, a request estimated to need more (memory_budget.hpp); 0 = no budget.
+  std::uint64_t max_memory_mb = 0;
 };
 
 struct ExteriorReport {
@@ -46,8 +59,12 @@ struct ExteriorReport {
 struct CloudOcclusionReport {
   CloudOcclusionRequest request;
   CloudOcclusionResult result;
+  PointRadius point_radius;                  // as traced, with the measured spacing
+  std::optional<FieldOfView> field_of_view;  // set for a single-view frame
+  std::string field_of_view_source;          // why the cloud was taken as one
   std::optional<ExteriorReport> exterior;
   std::vector<std::string> viewpoint_names;
+  Json::Value frame;  // how the viewpoints were placed (ViewpointChoice::Resolved::frame)
   std::size_t openings = 0;
   std::size_t dropped_nan = 0;
   std::size_t skipped_lines = 0;
@@ -58,10 +75,10 @@ struct CloudOcclusionReport {
 };
 
 void validate(const CloudOcclusionRequest& request);
-// Copies the config's `occlusion.point_cloud` section into the request.
-void apply_config(const Config& config, CloudOcclusionRequest& request);
-// The same keys from another section (the study's carries the tracing keys).
-void apply_section(const ConfigSection& section, CloudOcclusionRequest& request);
+// Every key of the job (config section occlusion.point_cloud), declared once.
+const Keys<CloudOcclusionRequest>& cloud_occlusion_keys();
+// The tracing keys alone (no path, viewpoints or outputs): the study takes them too.
+const Keys<CloudOcclusionRequest>& cloud_tracing_keys();
 
 CloudOcclusionReport run_cloud_occlusion(const CloudOcclusionRequest& request,
                                          const Progress& progress = {});

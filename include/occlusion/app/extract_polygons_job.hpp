@@ -13,7 +13,7 @@
 
 #include "occlusion/analysis/mesh_estimation.hpp"
 #include "occlusion/analysis/progress.hpp"
-#include "occlusion/app/config.hpp"
+#include "occlusion/app/key.hpp"
 
 namespace occlusion {
 
@@ -23,6 +23,8 @@ struct ExtractPolygonsRequest {
   unsigned threads = 0;             // 0 = all cores
   bool skip_bad_lines = false;
   std::string out;  // directory for output files; empty = none
+  // Refuse, before the work, a request estimated to need more (memory_budget.hpp); 0 = no budget.
+  std::uint64_t max_memory_mb = 0;
 };
 
 struct ExtractPolygonsReport {
@@ -38,8 +40,8 @@ struct ExtractPolygonsReport {
 };
 
 void validate(const ExtractPolygonsRequest& request);
-// Copies the config's `occlusion.region_growing` section into the request.
-void apply_config(const Config& config, ExtractPolygonsRequest& request);
+// Every key of the job (config section occlusion.extract_polygons), declared once.
+const Keys<ExtractPolygonsRequest>& extract_polygons_keys();
 // With `out`: CLOUD.polygons.obj, CLOUD.segmented.ply (an int `cluster` per
 // point) and CLOUD.polygons.json. Errors as run_region_growing_occlusion's.
 ExtractPolygonsReport run_extract_polygons(const ExtractPolygonsRequest& request,

@@ -7,8 +7,9 @@
 #include <string>
 #include <vector>
 
+#include "occlusion/analysis/point_spacing.hpp"
 #include "occlusion/analysis/scan.hpp"
-#include "occlusion/app/config.hpp"
+#include "occlusion/app/key.hpp"
 #include "occlusion/app/viewpoint_choice.hpp"
 
 namespace occlusion {
@@ -16,14 +17,21 @@ namespace occlusion {
 struct ScanRequest {
   std::string path;
   ViewpointChoice viewpoints = ViewpointChoice::from_pattern(7);
-  double point_radius = 0.01;
-  double self_tolerance = -1.0;  // negative: 2 * point_radius
+  // kAutoPointRadius: from the measured point spacing (job_support.hpp).
+  double point_radius = kAutoPointRadius;
+  double self_tolerance = -1.0;  // negative: 2 * point_radius (the radius in use)
   double octree_resolution = 0.0;
   bool enable_acceleration = true;
   std::string format = "ply";  // of the written clouds: ply or pcd
   bool skip_bad_lines = false;
+  // Box the pattern or grid is placed on: "robust" (per-axis quantiles, cuts
+  // off stray points) or "bbox" (all points); see analysis/scene_frame.hpp.
+  std::string frame = "robust";
+  std::string up = "+z";  // signed axis: where height matters (the grid's mid-height)
   unsigned threads = 0;
   std::string out;
+  // Refuse, before the work, a request estimated to need more (memory_budget.hpp); 0 = no budget.
+  std::uint64_t max_memory_mb = 0;
 };
 
 struct ClassVisibility {
@@ -36,7 +44,9 @@ struct ClassVisibility {
 struct ScanReport {
   ScanRequest request;
   ScanResult result;
+  PointRadius point_radius;  // as traced, with the measured spacing
   std::vector<std::string> viewpoint_names;
+  Json::Value frame;  // how the viewpoints were placed (ViewpointChoice::Resolved::frame)
   std::vector<Eigen::Vector3d> viewpoint_positions;
   std::vector<ClassVisibility> classes;  // empty for unlabelled clouds
   std::size_t dropped_nan = 0;
@@ -48,8 +58,8 @@ struct ScanReport {
 };
 
 void validate(const ScanRequest& request);
-// Copies the config's `occlusion.point_cloud` section into the request.
-void apply_config(const Config& config, ScanRequest& request);
+// Every key of the job (config section occlusion.scan), declared once.
+const Keys<ScanRequest>& scan_keys();
 ScanReport run_scan(const ScanRequest& request, const Progress& progress = {});
 // What run_scan computes once the cloud is loaded, for a cloud already in
 // memory and viewpoints already placed (the study scans each scene it holds

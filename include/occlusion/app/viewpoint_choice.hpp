@@ -17,6 +17,8 @@ struct ViewpointChoice {
   std::vector<Eigen::Vector3d> points;
   int pattern = 7;
   std::size_t grid_count = 9;
+  // More viewpoints than this is a mistake, not a study (each traces its own rays).
+  static constexpr std::size_t kMaxViewpoints = 10000;
 
   static ViewpointChoice from_points(std::vector<Eigen::Vector3d> points);
   static ViewpointChoice from_pattern(int pattern);
@@ -28,9 +30,15 @@ struct ViewpointChoice {
   struct Resolved {
     std::vector<Eigen::Vector3d> positions;
     std::vector<std::string> names;
+    // How they were placed, for the report (null when not recorded): the
+    // frame used, both boxes, the up axis.
+    Json::Value frame;
+    // Viewpoints outside the occupied space, data that disagree with up, ...
+    std::vector<std::string> warnings;
   };
-  // Positions for a scene with bounding box [lo, hi].
-  Resolved resolve(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi) const;
+  // Positions for a scene whose pattern/grid box is [lo, hi], up being
+  // coordinate axis `up_axis` (grid_viewpoints).
+  Resolved resolve(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, int up_axis = 2) const;
 
   // {"pattern": 7} or {"num_vp": 9} or {"viewpoints": [[x,y,z], ...]}
   Json::Value to_json() const;

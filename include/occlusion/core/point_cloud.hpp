@@ -4,12 +4,33 @@
 // empty or has exactly one entry per point.
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
 
 namespace occlusion {
+
+// Where a single-view frame was captured: the sensor's pose (PCD `VIEWPOINT`:
+// origin, then the rotation from the sensor frame, +z forward, +y down, to the
+// cloud's frame) and, for an organised frame, its pixel grid (PCD WIDTH x
+// HEIGHT with HEIGHT > 1). The grid says how the file was laid out; positions
+// hold only the valid pixels, so it is no index into them.
+struct SensorFrame {
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero();
+  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();
+  std::size_t width = 0, height = 0;
+
+  bool organised() const { return height > 1; }
+  // A VIEWPOINT other than PCL's default (origin, no rotation) was written on purpose.
+  bool has_pose() const {
+    return origin != Eigen::Vector3d::Zero() ||
+           orientation.coeffs() != Eigen::Quaterniond::Identity().coeffs();
+  }
+  // A frame seen from one sensor: organised, or a pose given on purpose.
+  bool single_view() const { return organised() || has_pose(); }
+};
 
 struct PointCloud {
   std::vector<Eigen::Vector3f> positions;
@@ -18,6 +39,7 @@ struct PointCloud {
   std::vector<std::int32_t> instances;               // instance id, -1 = none
   // class_names[label] when known (S3DIS: the 13 classes), else empty.
   std::vector<std::string> class_names;
+  SensorFrame sensor;  // PCD only; the default says "not a single-view frame"
 
   std::size_t size() const { return positions.size(); }
   bool has_colours() const { return !colours.empty(); }

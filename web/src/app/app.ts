@@ -9,6 +9,7 @@ import { listenForClicks } from "../scene/picking";
 import { PickerMaterials } from "../scene/picker_material";
 import { PolygonLayer } from "../scene/polygon_layer";
 import { Viewer } from "../scene/viewer";
+import { viewpointWarning } from "../scene/viewpoint_checks";
 import { VIEWPOINT_NAMES, ViewpointMarkers } from "../scene/viewpoints";
 import { byId, h } from "../ui/dom";
 import { FileBrowser } from "../ui/file_browser";
@@ -19,12 +20,16 @@ import { JobsPanel } from "../ui/jobs_panel";
 import { Legend } from "../ui/legend";
 import { Notices } from "../ui/notices";
 import { OpeningPanel } from "../ui/opening_panel";
+import { renderRayKey } from "../ui/rays_legend";
+import { ViewpointPanel } from "../ui/viewpoint_panel";
 import { ResultsPanel } from "../ui/results_panel";
 import { StatsPanel } from "../ui/stats_panel";
 import { Toolbar } from "../ui/toolbar";
 import type { ToolbarButton } from "../ui/toolbar";
 import { installUpload } from "../ui/upload";
+import { adoptServerKeys } from "../settings_defaults";
 import { FrameDecoder } from "../worker/decoder";
+import type { Vec3 } from "../decode/types";
 import type { AppContext, SessionHistory } from "./context";
 import { Evaluation } from "./evaluation";
 import { JobRunner } from "./job_runner";
@@ -55,19 +60,20 @@ export class App {
   private readonly pickerMaterials = new PickerMaterials();
   private readonly connection = byId("connection");
   private reconnecting = false;
+  /** Redraws the viewpoint list (after a marker moved, or a setting it checks changed). */
+  readonly renderViewpoints: () => void;
   private everConnected = false;
 
   constructor() {
     const notices = new Notices(byId("notices"), {
       stage: byId("stage"),
-      gui: byId("gui"),
       stats: byId("stats"),
       legend: byId("legend"),
       jobs: byId("jobs"),
     });
     const viewer = new Viewer(byId("canvas-host"));
     this.stats = new StatsPanel(byId("stats"));
-    viewer.hooks.after = () => this.stats.frame();
+    viewer.hooks.after = (continuous) => this.stats.frame(continuous);
     const client = new ProtocolClient(serverUrl(window.location));
     const api = new Api(client, new FrameDecoder());
     const jobs = new JobsPanel(byId("jobs"));
@@ -166,12 +172,67 @@ export class App {
     this.openingFlow = new Openings(this.ctx);
     this.evaluation = new Evaluation(this.ctx);
 
+    openings.onOpeningsChange = (path) => void this.openingFlow.draw(path);
     gui.onChange = (key) => this.onSetting(key);
     gui.onResetViewpoints = () => {
       markers.reset(viewer.sceneBounds);
       viewer.requestRender();
     };
-    markers.onChange = () => viewer.requestRender();
+    const viewpointPanel = new ViewpointPanel(byId("viewpoints"), {
+      move: (name, position) => markers.setPosition(name, position),
+      enable: (name, on) => {
+        markers.setEnabled(name, on);
+        if ((VIEWPOINT_NAMES as string[]).includes(name)) gui.set(name as "centre", on);
+      },
+      lookFrom: (name) => {
+        const extent = view.info?.extent ?? viewer.sceneBounds;
+        const centre = extent.min.map((m, a) => (m + extent.max[a]!) / 2) as Vec3;
+        markers.deselect();
+        viewer.lookFrom(markers.position(name), centre);
+      },
+      remove: (name) => markers.remove(name),
+      add: () => {
+        const name = markers.add(viewer.controls.target.toArray() as Vec3);
+        markers.select(name);
+      },
+    });
+    this.renderViewpoints = () =>
+      viewpointPanel.render(
+        [...markers.markers.values()].map((m) => {
+          const position = m.object.position.toArray() as Vec3;
+          const cloud = view.cloud?.data ?? null;
+          return {
+            name: m.name,
+            label: m.label,
+            colour: `#${m.colour.toString(16).padStart(6, "0")}`,
+            position,
+            enabled: m.enabled,
+            warning: view.info
+              ? viewpointWarning(position, view.info.extent, cloud, gui.settings.pointRadius)
+              : null,
+          };
+        }),
+      );
+    markers.onChange = () => {
+      viewer.requestRender();
+      this.renderViewpoints();
+    };
+    this.renderViewpoints();
+    rays.onChange = () => {
+      const set = rays.summary;
+      renderRayKey(
+        byId("rays-legend"),
+        set
+          ? set.total.map((total, v) => ({
+              label: set.viewpoints[v]?.label ?? `viewpoint ${v + 1}`,
+              colour: `rgb(${(set.viewpoints[v]?.colour ?? [1, 1, 1]).map((c) => Math.round(c * 255)).join(",")})`,
+              drawn: set.drawn[v] ?? 0,
+              total,
+            }))
+          : null,
+        rays.visible,
+      );
+    };
     pickerMaterials.useShader = gui.settings.useShaderMaterial;
 
     listenForClicks(viewer.renderer.domElement, (click) => this.openingFlow.onClick(click));
@@ -199,6 +260,8 @@ export class App {
       const hello = await this.ctx.client.connect();
       this.reconnecting = false;
       this.setConnection("online", hello.server);
+      // Defaults and ranges from the server's key declarations, where it has them.
+      this.ctx.gui.refreshDeclared(adoptServerKeys({ keys: hello.keys }));
       this.syncAvailability();
       this.evaluation.renderStudy();
       await this.ctx.files.show(this.ctx.files.current);
@@ -284,7 +347,13 @@ export class App {
       }
       gui.set("showCloud", true);
       view.apply("showCloud");
-      view.setColour(mode);
+      if (!view.setColour(mode)) {
+        const what = { rgb: "no colour", segment: "no segment ids", class: "no class labels" };
+        notices.info(
+          `This cloud has ${what[mode]} (the file holds none): it stays coloured by ` +
+            `${view.cloud.mode === "height" ? "height" : view.cloud.mode}.`,
+        );
+      }
     };
     switch (name) {
       case "original":
@@ -334,13 +403,14 @@ export class App {
         );
         break;
       case "allLights":
-        for (const n of VIEWPOINT_NAMES) {
-          gui.set(n, s.allLights);
-          markers.setEnabled(n, s.allLights);
-        }
+        for (const n of VIEWPOINT_NAMES) gui.set(n, s.allLights);
+        for (const n of markers.markers.keys()) markers.setEnabled(n, s.allLights);
         break;
       case "showRays":
         rays.visible = s.showRays;
+        break;
+      case "pointRadius":
+        this.renderViewpoints();
         break;
       case "useShaderMaterial":
         this.pickerMaterials.useShader = s.useShaderMaterial;
@@ -360,6 +430,7 @@ export class App {
     else if (event.key === "Escape") {
       openings.setPicking(false);
       markers.deselect();
+      this.ctx.status.timing(""); // the "Drag the arrows…" hint ends with the selection
       this.ctx.viewer.requestRender();
     } else if (event.key === "Backspace" && openings.isPicking) {
       event.preventDefault();

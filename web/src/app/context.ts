@@ -3,6 +3,7 @@
 
 import type { ProtocolClient } from "../protocol/client";
 import type { StudyPoint } from "../results";
+import type { MeasureId } from "../study_measures";
 import type { EscapeRays } from "../scene/escape_rays";
 import type { PolygonLayer } from "../scene/polygon_layer";
 import type { Viewer } from "../scene/viewer";
@@ -16,8 +17,8 @@ import type { JobRunner } from "./job_runner";
 import type { SceneView } from "./scene_view";
 
 export interface SessionHistory {
-  /** Latest occlusion level computed per scene path. */
-  occlusion: Map<string, number>;
+  /** Latest figure of each session measure computed per scene path. */
+  occlusion: Map<string, Partial<Record<MeasureId, number>>>;
   /** Latest visibility-scan output (the seen points) per scene path. */
   scanOutput: Map<string, string>;
   study: StudyPoint[];

@@ -11,11 +11,15 @@ import { num } from "../results";
 import { polygonsCard } from "../ui/occlusion_view";
 import { card, table } from "../ui/results_panel";
 import { scatterPlot } from "../ui/scatter_plot";
+import { SETTINGS } from "../settings_defaults";
+import type { MeasureId } from "../study_measures";
 import type { AppContext } from "./context";
 
 export class Evaluation {
   /** The last server study's correlations with mIoU. */
   private correlations: Record<string, unknown>[] = [];
+  /** The measure on the plot's x axis (null: the first the points have). */
+  private measure: MeasureId | null = null;
 
   constructor(private readonly ctx: AppContext) {
     this.renderStudy();
@@ -31,7 +35,7 @@ export class Evaluation {
       {
         groundTruth,
         prediction: history.scanOutput.get(groundTruth) ?? "",
-        maxDistance: 0.05,
+        maxDistance: SETTINGS.maxDistance.default,
       },
       suggestions,
     );
@@ -51,12 +55,33 @@ export class Evaluation {
       notices.error("Evaluation", "the server's report has no per-class table");
       return;
     }
-    this.ctx.results.set("evaluation", evaluationCards(report));
+    // The scan's own points against their scene's labels: the labels are the
+    // ground truth's, so the figures measure how much the viewpoints covered.
+    const ownScan = history.scanOutput.get(choice.groundTruth) === choice.prediction;
+    const note = ownScan
+      ? h("p", {
+          class: "rounded-md bg-amber-950/40 p-2 text-xs text-amber-200",
+          testid: "coverage-note",
+          text:
+            "This evaluates the visibility scan against its own scene's labels: the " +
+            "predicted labels are the ground truth's, so it measures coverage only (the " +
+            "points no viewpoint saw count as missed, in the 'none' column), not a segmenter.",
+        })
+      : null;
+    this.ctx.results.set(
+      "evaluation",
+      note ? [note, ...evaluationCards(report)] : evaluationCards(report),
+    );
     for (const o of report.outputs ?? []) history.outputs.add(o);
-    const occlusion = history.occlusion.get(choice.groundTruth);
+    const measures = history.occlusion.get(choice.groundTruth);
     const miou = report.miou;
-    if (occlusion !== undefined && typeof miou === "number") {
-      history.study.push({ occlusion, miou, label: choice.prediction, series: "session" });
+    if (measures !== undefined && Object.keys(measures).length && typeof miou === "number") {
+      history.study.push({
+        measures: { ...measures },
+        miou,
+        label: `${choice.prediction} vs ${choice.groundTruth}`,
+        series: "session",
+      });
       this.renderStudy();
     }
     notices.info(`mIoU ${percent(miou ?? undefined)}`, "success");
@@ -75,8 +100,10 @@ export class Evaluation {
       );
       return;
     }
+    // Named as the CLI names them (`--pattern N` is configuration pattern_N), so
+    // the viewer's runs and the CLI's are the same rows of study.csv.
     const configurations: Record<string, unknown>[] = [1, 2, 3, 4, 5, 6, 7].map((pattern) => ({
-      name: `pattern ${pattern}`,
+      name: `pattern_${pattern}`,
       pattern,
     }));
     const markers = this.ctx.markers.enabled();
@@ -126,9 +153,12 @@ export class Evaluation {
       "extract_polygons",
       {
         path: scene.path,
+        min_cluster_size: this.ctx.gui.settings.minClusterSize,
+        max_cluster_size: this.ctx.gui.settings.maxClusterSize,
       },
     );
     if (outcome === null) return;
+    this.ctx.rays.clear(); // they belong to an occlusion result no longer drawn
     if (outcome.decoded?.kind === "region_growing") {
       try {
         view.setEstimatedMesh(outcome.decoded);
@@ -157,15 +187,19 @@ export class Evaluation {
         card(
           "Occlusion vs. mIoU",
           [
-            scatterPlot(points),
+            scatterPlot(points, this.measure, (m) => {
+              this.measure = m;
+              this.renderStudy();
+            }),
             h("p", {
               class: "mt-2 text-xs text-slate-500",
               text:
-                "Each Evaluate of a scene after Compute Occlusion on it adds a point: x the " +
-                "scene's occlusion level, y the mIoU of the evaluated prediction (e.g. the " +
-                "points the viewpoints see, from the visibility scan). The server's study " +
-                "scans, measures, segments (baseline) and evaluates the scene from each " +
-                "viewpoint pattern: one point per run.",
+                "Each Evaluate of a scene after Compute Occlusion on it adds a point: x a " +
+                "measure computed on that scene, y the mIoU of the evaluated prediction. " +
+                "Evaluating the visibility scan against its own scene's labels measures " +
+                "coverage only (the points not seen count as missed), not a segmenter. The " +
+                "server's study scans, measures, segments (baseline) and evaluates the scene " +
+                "from each viewpoint pattern: one point per run.",
             }),
             correlationTable(this.correlations),
             run,

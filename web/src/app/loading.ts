@@ -219,8 +219,10 @@ export class Loading {
       if (this.ctx.files.known.has(candidate)) openings = candidate;
     }
     if (this.ctx.history.outputs.has(`openings/${stem}.txt`)) openings = `openings/${stem}.txt`;
+    // Through "" so that the openings are drawn again on the new scene even when the file is the same.
+    this.ctx.openings.setOpenings("");
     this.ctx.openings.setOpenings(this.ctx.view.cloud ? openings : "");
-    this.ctx.results.clearTab("occlusion");
+    this.ctx.results.switchScene(path);
   }
 }
 

@@ -7,7 +7,8 @@ import type { JobReport } from "../results";
 import { num } from "../results";
 import { occlusionCard, scanCard } from "../ui/occlusion_view";
 import { percent } from "../ui/format";
-import { VIEWPOINT_LABELS } from "../scene/viewpoints";
+import { RAY_DISPLAY } from "../settings_defaults";
+import { sessionMeasure } from "../study_measures";
 import type { AppContext } from "./context";
 
 export class Occlusion {
@@ -23,15 +24,15 @@ export class Occlusion {
     }
     const enabled = markers.enabled();
     if (enabled.length === 0) {
-      notices.error(
-        "No viewpoint enabled",
-        "Turn on Center, Viewpoint Max or Viewpoint Min in the GUI (Viewpoints).",
-      );
+      notices.error("No viewpoint enabled", "Tick a viewpoint in Viewpoints (left), or add one.");
       return;
     }
+    // The rays on screen belong to the last result, which this one replaces.
+    this.ctx.rays.clear();
     const viewpoints = enabled.map((v) => v.position.map((x) => Number(x.toFixed(6))));
     // Labels of the viewpoints sent, in order (the job names them viewpoint_1 …).
-    const names = enabled.map((v) => VIEWPOINT_LABELS[v.name]);
+    const names = enabled.map((v) => markers.label(v.name));
+    const colours = enabled.map((v) => markers.colour(v.name));
     const s = gui.settings;
     if (view.cloud === null) {
       await this.mesh(info.path, viewpoints, s.samplesPerUnitArea, names);
@@ -53,7 +54,7 @@ export class Occlusion {
     };
     const openings = this.ctx.openings.openingsFile;
     if (openings) cloud.polygon_path = openings;
-    const jobs: Promise<void>[] = [this.cloud(cloud, names)];
+    const jobs: Promise<void>[] = [this.cloud(cloud, names, colours)];
     if (s.visibilityScan) {
       jobs.push(this.scan({ path: info.path, viewpoints, point_radius: s.pointRadius }, names));
     }
@@ -95,7 +96,14 @@ export class Occlusion {
     const outcome = await this.ctx.runner.run<JobReport>(
       "Region-growing mesh occlusion",
       "region_growing_occlusion",
-      { path, viewpoints, samples_per_unit_area: samples, seed: 0 },
+      {
+        path,
+        viewpoints,
+        samples_per_unit_area: samples,
+        min_cluster_size: this.ctx.gui.settings.minClusterSize,
+        max_cluster_size: this.ctx.gui.settings.maxClusterSize,
+        seed: 0,
+      },
     );
     if (outcome === null) return;
     const report = outcome.result;
@@ -111,7 +119,11 @@ export class Occlusion {
     this.ctx.notices.info(`Occlusion level ${percent(num(report.occlusion_level), 2)}`, "success");
   }
 
-  private async cloud(params: Record<string, unknown>, names: string[]): Promise<void> {
+  private async cloud(
+    params: Record<string, unknown>,
+    names: string[],
+    colours: Vec3[],
+  ): Promise<void> {
     const count = (params.viewpoints as unknown[]).length;
     const outcome = await this.ctx.runner.run<JobReport>(
       "Point-cloud occlusion",
@@ -122,14 +134,23 @@ export class Occlusion {
     if (outcome === null) return;
     const report = outcome.result;
     this.remember(String(params.path), report);
-    if (outcome.decoded?.kind === "escapes") {
-      const origins = (report.viewpoints ?? []).map((v) => v.position ?? ([0, 0, 0] as Vec3));
-      this.ctx.rays.show(outcome.decoded as EscapeData, origins, this.ctx.viewer.diagonal * 0.6);
-      this.ctx.rays.visible = this.ctx.gui.settings.showRays;
-      this.ctx.viewer.requestRender();
-    }
+    if (outcome.decoded?.kind === "escapes") this.showRays(outcome.decoded, report, names, colours);
     this.ctx.results.setCard("occlusion", "occlusion", occlusionCard(report, names));
     this.ctx.notices.info(`Occlusion level ${percent(num(report.occlusion_level), 2)}`, "success");
+  }
+
+  /** A sample of the escape rays, clipped to the scene, in their markers' colours; many start hidden. */
+  private showRays(escapes: EscapeData, report: JobReport, names: string[], colours: Vec3[]): void {
+    const { rays, gui, viewer, view } = this.ctx;
+    const origins = (report.viewpoints ?? []).map((v) => v.position ?? ([0, 0, 0] as Vec3));
+    const box = view.info?.extent ?? viewer.sceneBounds;
+    const viewpoints = names.map((label, v) => ({ label, colour: colours[v]! }));
+    const set = rays.show(escapes, origins, viewpoints, box, RAY_DISPLAY.perViewpoint);
+    const escaped = set.total.reduce((a, b) => a + b, 0);
+    const shown = escaped <= RAY_DISPLAY.hiddenAbove;
+    gui.set("showRays", shown);
+    rays.visible = shown;
+    viewer.requestRender();
   }
 
   private async scan(params: Record<string, unknown>, names: string[]): Promise<void> {
@@ -155,8 +176,15 @@ export class Occlusion {
   }
 
   private remember(path: string, report: JobReport): void {
-    const level = num(report.occlusion_level);
-    if (level !== undefined) this.ctx.history.occlusion.set(path, level);
+    const measure = sessionMeasure(report.job);
+    const value = num(
+      measure === "session_scan" ? report.visible_fraction : report.occlusion_level,
+    );
+    if (measure && value !== undefined) {
+      const figures = this.ctx.history.occlusion.get(path) ?? {};
+      figures[measure] = value;
+      this.ctx.history.occlusion.set(path, figures);
+    }
     for (const o of report.outputs ?? []) this.ctx.history.outputs.add(o);
   }
 }

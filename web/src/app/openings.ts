@@ -2,9 +2,11 @@
 // Save writes it to the server (save_polygon, appended), and the next
 // computation uses that file. Clicks off picking mode select viewpoint markers.
 
+import { polygonProblem } from "../decode/polygon_check";
+import type { Vec3 } from "../decode/types";
 import type { Click } from "../scene/picking";
 import { Picker } from "../scene/picking";
-import type { ViewpointName } from "../scene/viewpoints";
+import type { MarkerId } from "../scene/viewpoints";
 import type { AppContext } from "./context";
 
 export class Openings {
@@ -23,9 +25,12 @@ export class Openings {
         return;
       }
       const pick = () =>
-        this.picker.pickSurface(click, [target], gui.settings.pickerSize, [
-          this.ctx.viewer.sectionPlane,
-        ]);
+        this.picker.pickSurface(
+          click,
+          [target],
+          gui.settings.pickerSize,
+          this.ctx.viewer.clipPlanes,
+        );
       const p = view.cloud ? view.cloud.withFullDetail(pick) : pick();
       if (p === null) {
         notices.info("No point under the cursor: zoom in, or raise Picker Size in the GUI.");
@@ -33,36 +38,82 @@ export class Openings {
       }
       polygons.add(p);
       openings.setPoints(polygons.points);
+      openings.setProblem(
+        polygons.points.length >= 3 ? (polygonProblem(polygons.points) ?? "") : "",
+      );
       this.ctx.viewer.requestRender();
       return;
     }
     if (markers.gizmo.dragging || markers.gizmo.axis !== null) return;
     const hit = this.picker.pick(click, markers.pickables(), 0);
-    const name = hit?.object.userData.viewpoint as ViewpointName | undefined;
+    const name = hit?.object.userData.viewpoint as MarkerId | undefined;
     if (name) {
       markers.select(name);
-      this.ctx.status.timing(`Drag the arrows to move the ${name} viewpoint; Esc releases it.`);
-    } else markers.deselect();
+      this.ctx.status.timing(
+        `Drag the arrows to move ${markers.label(name)}, or type its x, y, z in Viewpoints; Esc releases it.`,
+      );
+    } else if (markers.selection !== null) {
+      markers.deselect();
+      this.ctx.status.timing("");
+    }
     this.ctx.viewer.requestRender();
   }
 
   undo(): void {
     this.ctx.polygons.undo();
     this.ctx.openings.setPoints(this.ctx.polygons.points);
+    const points = this.ctx.polygons.points;
+    this.ctx.openings.setProblem(points.length >= 3 ? (polygonProblem(points) ?? "") : "");
     this.ctx.viewer.requestRender();
   }
 
   clear(): void {
     this.ctx.polygons.clearDraft();
     this.ctx.openings.setPoints([]);
+    this.ctx.openings.setProblem("");
     this.ctx.viewer.requestRender();
   }
 
+  /** The polygons of an openings file (null, with the error shown, if it cannot be read). */
+  private async read(path: string): Promise<Vec3[][] | null> {
+    if (!this.ctx.client.available("read_polygons")) return null;
+    const outcome = await this.ctx.runner.run<{ polygons: Vec3[][] }>(
+      `Reading the openings in ${path}`,
+      "read_polygons",
+      { path },
+      { cancellable: false },
+    );
+    return outcome === null ? null : (outcome.result.polygons ?? []);
+  }
+
+  /** Draws every opening of the file in use (none for ""). */
+  async draw(path: string): Promise<void> {
+    const { polygons, openings, viewer } = this.ctx;
+    if (!path) {
+      polygons.clearSaved();
+      viewer.requestRender();
+      return;
+    }
+    const list = await this.read(path);
+    if (openings.openingsFile !== path) return; // another file was chosen meanwhile
+    polygons.showSaved(list ?? []);
+    if (list !== null) openings.setOpenings(path, list.length);
+    viewer.requestRender();
+  }
+
+  /**
+   * Saves the picked polygon, refused with the reason if it is not a usable
+   * opening. It is appended to `path`; when another openings file is in use,
+   * that file's openings are copied along, so the next computation uses all
+   * of them (saving never drops the openings in use).
+   */
   async save(path: string): Promise<void> {
     const { polygons, notices, openings } = this.ctx;
     const points = polygons.points;
-    if (points.length < 3) {
-      notices.error("Cannot save the opening", "An opening needs at least 3 points.");
+    const problem = polygonProblem(points);
+    if (problem) {
+      openings.setProblem(problem);
+      notices.error("Cannot save the opening", `${problem}.`);
       return;
     }
     if (!path) {
@@ -72,23 +123,34 @@ export class Openings {
       );
       return;
     }
+    const inUse = openings.openingsFile;
+    let kept: Vec3[][] = [];
+    if (inUse && inUse !== path) {
+      const list = await this.read(inUse);
+      if (list === null) return;
+      kept = list;
+    }
+    const round = (p: Vec3) => p.map((x) => Number(x.toFixed(6)));
     const outcome = await this.ctx.runner.run<{ path: string; polygons: number }>(
       "Saving the opening",
       "save_polygon",
-      { path, append: true, polygons: [points.map((p) => p.map((x) => Number(x.toFixed(6))))] },
+      { path, append: true, polygons: [...kept, points].map((polygon) => polygon.map(round)) },
       { cancellable: false },
     );
     if (outcome === null) return;
-    polygons.commit();
+    polygons.clearDraft();
     openings.setPoints([]);
-    openings.setOpenings(outcome.result.path);
+    openings.setProblem("");
     openings.setPicking(false);
     this.ctx.history.outputs.add(outcome.result.path);
     this.ctx.files.known.add(outcome.result.path);
-    this.ctx.viewer.requestRender();
+    const same = openings.openingsFile === outcome.result.path;
+    openings.setOpenings(outcome.result.path, outcome.result.polygons); // draws them if it changed
+    if (same) await this.draw(outcome.result.path);
     notices.info(
-      `Saved the opening to ${outcome.result.path} (${outcome.result.polygons} in the file); ` +
-        "the next computation uses it.",
+      `Saved the opening to ${outcome.result.path} (${outcome.result.polygons} in the file` +
+        (kept.length ? `, ${kept.length} copied from ${inUse}` : "") +
+        "); the next computation uses all of them.",
       "success",
       8000,
     );

@@ -10,6 +10,8 @@ import type {
   RegionGrowingData,
   VisibilityData,
 } from "../decode/types";
+import { diagonal, robustBounds, serverExtent } from "../decode/robust_extent";
+import type { Bounds } from "../decode/types";
 import type { LoadResult } from "../results";
 import { CLOUD_MODE_LABELS, CloudLayer, suggestedPointSize } from "../scene/cloud_layer";
 import type { CloudColourMode } from "../scene/cloud_layer";
@@ -21,6 +23,7 @@ import type { Viewer } from "../scene/viewer";
 import type { ViewpointMarkers } from "../scene/viewpoints";
 import type { GuiKey, GuiPanel } from "../ui/gui_panel";
 import type { Legend } from "../ui/legend";
+import { significantDecimals } from "../ui/format";
 import type { Toolbar } from "../ui/toolbar";
 
 export type ColourMode = CloudColourMode | MeshColourMode;
@@ -29,6 +32,26 @@ export interface SceneInfo {
   /** Path in the data directory that jobs use for this scene. */
   path: string;
   result: LoadResult;
+  /** The box the camera frames and the pattern viewpoints use: without stray points. */
+  extent: Bounds;
+  /** Where the extent comes from: the server's frame, or this viewer's quantiles. */
+  extentSource: "server" | "quantiles" | "bounds";
+}
+
+/** The scene's robust extent: the server's frame if the report has one, else quantiles of the cloud. */
+export function sceneExtent(
+  result: LoadResult,
+  decoded: CloudData | MeshData,
+): { extent: Bounds; source: SceneInfo["extentSource"] } {
+  const server = serverExtent(result as unknown as Record<string, unknown>);
+  if (server) return { extent: server, source: "server" };
+  if (decoded.kind === "cloud") {
+    return {
+      extent: robustBounds(decoded.positions, decoded.count, decoded.bounds),
+      source: "quantiles",
+    };
+  }
+  return { extent: decoded.bounds, source: "bounds" };
 }
 
 export class SceneView {
@@ -57,25 +80,25 @@ export class SceneView {
       throw new Error(`load of ${path} gave ${decoded.kind} data, not a cloud or mesh`);
     }
     this.clear();
-    this.info = { path, result };
-    const clip = [this.viewer.sectionPlane];
+    const { extent, source } = sceneExtent(result, decoded);
+    this.info = { path, result, extent, extentSource: source };
+    const clip = this.viewer.clipPlanes;
     if (decoded.kind === "cloud") {
-      const cloud = new CloudLayer(decoded, 0.05, clip);
+      const cloud = new CloudLayer(decoded, 0.05, clip, extent);
       this.cloud = cloud;
       this.viewer.content.add(cloud.points);
       this.viewer.setLevelOfDetail({
         maxLevel: cloud.detailLevels,
         apply: (level) => cloud.setDetail(level),
       });
-      this.fitSizes(decoded);
+      this.fitSizes(decoded, extent);
     } else {
       this.mesh = new MeshLayer(decoded, clip);
       this.viewer.content.add(this.mesh.mesh);
-      this.fitSizes(decoded);
+      this.fitSizes(decoded, extent);
     }
-    const bounds = decoded.bounds;
-    this.viewer.frame(bounds);
-    this.markers.reset(bounds);
+    this.viewer.frame(extent);
+    this.markers.reset(extent);
     this.applyCut();
     // A new scene is shown whole, whatever the last one hid.
     this.gui.set("showCloud", true);
@@ -102,22 +125,22 @@ export class SceneView {
     this.viewer.requestRender();
   }
 
-  private fitSizes(data: CloudData | MeshData): void {
-    const [a, b] = [data.bounds.min, data.bounds.max];
-    const diagonal = Math.hypot(b[0] - a[0], b[1] - a[1], b[2] - a[2]) || 1;
+  private fitSizes(data: CloudData | MeshData, extent: Bounds): void {
+    const span = diagonal(extent);
     if (data.kind === "cloud") {
-      this.spacing = suggestedPointSize(data);
+      this.spacing = suggestedPointSize(data.count, extent);
       const size = this.spacing;
-      this.gui.setRange("pointSize", size / 20, size * 8, size / 100);
+      this.gui.setRange("pointSize", size / 20, size * 8, size / 100, significantDecimals(size));
       this.gui.set("pointSize", size);
       this.cloud?.setPointSize(size);
     } else {
-      this.spacing = diagonal / 200;
+      this.spacing = span / 200;
     }
-    this.gui.setRange("pickerSize", diagonal / 2000, diagonal / 20, diagonal / 20000);
-    this.gui.set("pickerSize", Math.max(this.spacing * 0.6, diagonal / 400));
+    const fine = significantDecimals(span / 2000, 2);
+    this.gui.setRange("pickerSize", span / 2000, span / 20, span / 20000, fine);
+    this.gui.set("pickerSize", Math.max(this.spacing * 0.6, span / 400));
     this.polygons.setPickerSize(this.gui.settings.pickerSize);
-    this.gui.setRange("pointRadius", diagonal / 2000, diagonal / 20, diagonal / 20000);
+    this.gui.setRange("pointRadius", span / 2000, span / 20, span / 20000, fine);
   }
 
   /** Applies a GUI setting that concerns the scene. */
@@ -142,6 +165,9 @@ export class SceneView {
         break;
       case "cutCeiling":
         this.applyCut();
+        break;
+      case "cutWalls":
+        this.viewer.cutWalls = s.cutWalls;
         break;
       case "lightIntensity":
         this.markers.setLightIntensity(s.lightIntensity);
@@ -180,6 +206,13 @@ export class SceneView {
 
   setVisibility(visibility: VisibilityData): void {
     this.cloud?.setVisibility(visibility);
+    // An estimated mesh (planes) left from an earlier job would hide the coloured points.
+    if (this.mesh && this.cloud) {
+      this.gui.set("showMesh", false);
+      this.gui.set("showCloud", true);
+      this.apply("showMesh");
+      this.apply("showCloud");
+    }
     this.refreshColourOptions();
     this.setColour("visibility");
   }
@@ -195,7 +228,7 @@ export class SceneView {
     if (!cloud) throw new Error("region growing: no cloud on screen");
     this.mesh?.mesh.removeFromParent();
     this.mesh?.dispose();
-    this.mesh = new MeshLayer(data.mesh, [this.viewer.sectionPlane]);
+    this.mesh = new MeshLayer(data.mesh, this.viewer.clipPlanes);
     if (data.fraction) {
       this.mesh.setFaceFraction(data.fraction);
       this.mesh.setMode("visible_fraction");
@@ -295,8 +328,8 @@ export class SceneView {
           this.legend.show({
             kind: "colourbar",
             title: "Height (z)",
-            min: d.bounds.min[2],
-            max: d.bounds.max[2],
+            min: cloud.extent.min[2],
+            max: cloud.extent.max[2],
           });
           return;
         case "rgb":

@@ -2,6 +2,7 @@
 // rendered) and do (orbit for a while and report the frame rate). Also handy
 // for measuring by hand in a browser console.
 
+import { RAY_DISPLAY } from "../settings_defaults";
 import type { AppContext } from "./context";
 import type { Loading } from "./loading";
 
@@ -15,6 +16,15 @@ export function exposeForTests(app: unknown, ctx: AppContext, loading: Loading):
     },
     get framesRendered() {
       return viewer.framesRendered;
+    },
+    /** The last interval between two frames drawn in motion (ms), and the level of detail used. */
+    get movingFrameMs() {
+      return viewer.movingFrameMs;
+    },
+    /** How many escape rays are drawn per viewpoint, and above how many they start hidden. */
+    rayDisplay: RAY_DISPLAY,
+    get detailLevel() {
+      return viewer.detailLevel;
     },
     /**
      * Orbits (OrbitControls auto-rotate) for `ms` and reports the frame rate

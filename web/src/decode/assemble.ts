@@ -103,7 +103,7 @@ function paintByKey(
 }
 
 /** Clouds above this many points get a draw order for level of detail. */
-export const LOD_MIN_POINTS = 200_000;
+export const LOD_MIN_POINTS = 20_000;
 
 /** A seeded random permutation of 0..n-1 (Fisher–Yates, xorshift32). */
 export function randomOrder(n: number, seed = 0x9e3779b9): Uint32Array {

@@ -13,6 +13,8 @@ export interface Limits {
 
 export interface HelloMessage {
   type: "hello";
+  /** Per command, its keys' declarations (default, range, doc), when the server publishes them. */
+  keys: Record<string, unknown>;
   protocol: number;
   server: string;
   commands: Record<string, boolean>;
@@ -94,13 +96,27 @@ export function parseServerMessage(text: string): ServerMessage {
       need(typeof value.protocol === "number", "hello without 'protocol'");
       need(isObject(value.commands), "hello without 'commands'");
       const commands: Record<string, boolean> = {};
-      for (const [name, on] of Object.entries(value.commands)) commands[name] = on === true;
+      // Key declarations (issue 11), top-level `keys` or per command: kept for settings_defaults.
+      const keys: Record<string, unknown> = isObject(value.keys) ? { ...value.keys } : {};
+      for (const [name, on] of Object.entries(value.commands)) {
+        commands[name] = on === true || isObject(on);
+        if (isObject(on) && isObject(on.keys)) keys[name] = on.keys;
+      }
+      // `jobs`: per job, its keys as a list of declarations, each with its `name`.
+      for (const [job, entry] of Object.entries(isObject(value.jobs) ? value.jobs : {})) {
+        if (!isObject(entry) || !Array.isArray(entry.keys)) continue;
+        const named = entry.keys.filter((k): k is Record<string, unknown> => isObject(k));
+        keys[job] = Object.fromEntries(
+          named.filter((k) => typeof k.name === "string").map((k) => [k.name as string, k]),
+        );
+      }
       const limits = isObject(value.limits) ? value.limits : {};
       return {
         type: "hello",
         protocol: value.protocol,
         server: typeof value.server === "string" ? value.server : "unknown server",
         commands,
+        keys,
         limits: {
           max_text_bytes: Number(limits.max_text_bytes ?? 1 << 20),
           max_upload_bytes: Number(limits.max_upload_bytes ?? 256 << 20),

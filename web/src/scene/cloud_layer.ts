@@ -12,7 +12,7 @@ import {
   Texture,
 } from "three";
 import { ramp } from "../decode/colour_maps";
-import type { CloudData, VisibilityData } from "../decode/types";
+import type { Bounds, CloudData, VisibilityData } from "../decode/types";
 
 export type CloudColourMode = "rgb" | "class" | "segment" | "visibility" | "cluster" | "height";
 
@@ -20,26 +20,27 @@ export const CLOUD_MODE_LABELS: Record<CloudColourMode, string> = {
   rgb: "RGB",
   class: "Semantic class",
   segment: "Segment id",
-  visibility: "Visibility (viewpoints)",
+  visibility: "Visibility",
   cluster: "Region cluster",
   height: "Height",
 };
 
 /** A point size that roughly closes the surfaces: the mean spacing on the box's faces. */
-export function suggestedPointSize(data: CloudData): number {
-  const [a, b] = [data.bounds.min, data.bounds.max];
+export function suggestedPointSize(count: number, extent: Bounds): number {
+  const [a, b] = [extent.min, extent.max];
   const dx = b[0] - a[0],
     dy = b[1] - a[1],
     dz = b[2] - a[2];
   const area = 2 * (dx * dy + dy * dz + dx * dz) || 1;
-  const spacing = Math.sqrt(area / Math.max(1, data.count));
+  const spacing = Math.sqrt(area / Math.max(1, count));
   return Math.max(1e-4, spacing * 1.2);
 }
 
-function heightColours(data: CloudData): Uint8Array {
+/** Height on the ramp across the robust extent (stray points clamp to its ends). */
+function heightColours(data: CloudData, extent: Bounds): Uint8Array {
   const out = new Uint8Array(data.count * 3);
-  const z0 = data.bounds.min[2];
-  const span = data.bounds.max[2] - z0 || 1;
+  const z0 = extent.min[2];
+  const span = extent.max[2] - z0 || 1;
   for (let i = 0; i < data.count; ++i) {
     const c = ramp((data.positions[i * 3 + 2]! - z0) / span);
     out[i * 3] = c[0];
@@ -78,6 +79,7 @@ export class CloudLayer {
     readonly data: CloudData,
     pointSize: number,
     clipping: Plane[],
+    readonly extent: Bounds = data.bounds,
   ) {
     this.geometry.setAttribute("position", new BufferAttribute(data.positions, 3));
     // Big clouds are drawn through a random permutation, so that the first
@@ -135,7 +137,7 @@ export class CloudLayer {
       case "cluster":
         return this.clusters;
       case "height":
-        return heightColours(this.data);
+        return heightColours(this.data, this.extent);
     }
   }
 
@@ -166,8 +168,9 @@ export class CloudLayer {
   /** Levels of detail available: level k draws 1/2^k of the points. */
   get detailLevels(): number {
     if (!this.data.order) return 0;
-    // Down to about 15,000 points, never fewer than 1/64 of the cloud.
-    return Math.min(6, Math.max(0, Math.floor(Math.log2(this.data.count / 15_000))));
+    // Down to about 2,000 points, never fewer than 1/256 of the cloud: software
+    // rendering (no GPU) can need that to orbit a 100k-point scan smoothly.
+    return Math.min(8, Math.max(0, Math.floor(Math.log2(this.data.count / 2_000))));
   }
 
   setDetail(level: number): void {

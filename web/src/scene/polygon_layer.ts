@@ -75,6 +75,23 @@ export class PolygonLayer {
   commit(): Vec3[] {
     const polygon = this.points;
     this.points = [];
+    this.addSaved(polygon);
+    this.redraw();
+    return polygon;
+  }
+
+  /** Draws exactly these openings (those of the file in use), replacing the saved ones drawn. */
+  showSaved(polygons: Vec3[][]): void {
+    this.clearSaved();
+    for (const polygon of polygons) this.addSaved(polygon);
+  }
+
+  /** Openings drawn (closed and filled). */
+  get savedCount(): number {
+    return this.saved.children.length / 2;
+  }
+
+  private addSaved(polygon: Vec3[]): void {
     const outline = new LineLoop(
       lineGeometry(polygon),
       new LineBasicMaterial({ color: 0x2ec4b6, depthTest: false }),
@@ -91,8 +108,6 @@ export class PolygonLayer {
     );
     outline.renderOrder = fill.renderOrder = 10;
     this.saved.add(outline, fill);
-    this.redraw();
-    return polygon;
   }
 
   clearSaved(): void {

@@ -15,13 +15,15 @@ import {
   WebGLRenderer,
 } from "three";
 import { OrbitControls } from "three/examples/jsm/controls/OrbitControls.js";
-import type { Bounds } from "../decode/types";
+import { diagonal } from "../decode/robust_extent";
+import type { Bounds, Vec3 } from "../decode/types";
 
 export const BACKGROUND = 0x0b1220;
 
 export interface FrameHooks {
   before?: () => void;
-  after?: () => void;
+  /** `continuous`: drawn while the camera moves or animates (a frame rate is measurable). */
+  after?: (continuous: boolean) => void;
 }
 
 export class Viewer {
@@ -35,6 +37,21 @@ export class Viewer {
   readonly headlight = new DirectionalLight(0xffffff, 0.9);
   /** Clip plane that hides everything above a height (the ceiling). */
   readonly sectionPlane = new Plane(new Vector3(0, 0, -1), Infinity);
+  /**
+   * Cut-away of the near walls: seen from outside the scene's box, the slab
+   * along each wall (x and y) on the camera's side is hidden, as the ceiling
+   * is, so the interior and the markers show. Updated as the camera moves.
+   */
+  readonly wallPlanes = [
+    new Plane(new Vector3(1, 0, 0), Infinity),
+    new Plane(new Vector3(0, 1, 0), Infinity),
+  ];
+  cutWalls = true;
+
+  /** Every clip plane a scene layer takes (ceiling, near walls). */
+  get clipPlanes(): Plane[] {
+    return [this.sectionPlane, ...this.wallPlanes];
+  }
 
   /** Frames actually rendered since start (render on demand). */
   framesRendered = 0;
@@ -54,6 +71,10 @@ export class Viewer {
   private quickFrames = 0;
   /** Off: always full detail (to measure it). */
   lodEnabled = true;
+  /** The last interval between two frames drawn while moving (ms; 0 until measured). */
+  movingFrameMs = 0;
+  private lastRender = 0;
+  private lastContinuous = false;
 
   private dirty = true;
   private readonly afterRender: (() => void)[] = [];
@@ -127,8 +148,7 @@ export class Viewer {
   }
 
   get diagonal(): number {
-    const [a, b] = [this.bounds.min, this.bounds.max];
-    return Math.hypot(b[0] - a[0], b[1] - a[1], b[2] - a[2]) || 1;
+    return diagonal(this.bounds);
   }
 
   /** Looks at the bounds from outside, above a corner. */
@@ -151,6 +171,44 @@ export class Viewer {
     this.controls.maxDistance = diagonal * 8;
     this.controls.update();
     this.requestRender();
+  }
+
+  /**
+   * Puts the camera at `eye`, looking level towards `towards` (or along +x
+   * when they meet); orbiting then turns the view around the eye.
+   */
+  lookFrom(eye: Vec3, towards: Vec3): void {
+    const direction = new Vector3(towards[0] - eye[0], towards[1] - eye[1], 0);
+    if (direction.lengthSq() < 1e-12) direction.set(1, 0, 0);
+    direction.normalize();
+    this.camera.near = this.diagonal / 5000;
+    this.camera.updateProjectionMatrix();
+    this.camera.position.set(...eye);
+    this.controls.target.set(...eye).addScaledVector(direction, this.diagonal * 0.01);
+    this.controls.update();
+    this.requestRender();
+  }
+
+  /** Places the near-wall planes for the camera where it is (nothing cut from inside the box). */
+  private updateWallCut(): void {
+    const b = this.bounds;
+    const eye = this.camera.position;
+    this.wallPlanes.forEach((plane, a) => {
+      const span = b.max[a]! - b.min[a]!;
+      const slab = 0.04 * span;
+      const at = eye.getComponent(a);
+      plane.normal.set(0, 0, 0);
+      if (this.cutWalls && at > b.max[a]!) {
+        plane.normal.setComponent(a, -1);
+        plane.constant = b.max[a]! - slab;
+      } else if (this.cutWalls && at < b.min[a]!) {
+        plane.normal.setComponent(a, 1);
+        plane.constant = -(b.min[a]! + slab);
+      } else {
+        plane.normal.setComponent(a, 1);
+        plane.constant = Infinity;
+      }
+    });
   }
 
   /** Hides what lies above `height` (Infinity: nothing hidden). */
@@ -211,11 +269,19 @@ export class Viewer {
       this.dirty = true;
     }
     if (!this.dirty) return;
+    const animating = this.dirty && !moving && this.animations.size > 0;
     this.dirty = false;
     this.hooks.before?.();
+    this.updateWallCut();
     this.renderer.render(this.scene, this.camera);
     this.framesRendered += 1;
-    this.hooks.after?.();
+    const now = performance.now();
+    if (moving && this.lastContinuous) this.movingFrameMs = now - this.lastRender;
+    this.lastRender = now;
+    // A frame rate needs two frames in a row drawn in motion (not idle time before the first).
+    const continuous = (moving || animating) && this.lastContinuous;
+    this.lastContinuous = moving || animating;
+    this.hooks.after?.(continuous);
     const callbacks = this.afterRender.splice(0);
     for (const callback of callbacks) callback();
   }

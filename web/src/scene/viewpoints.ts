@@ -19,13 +19,17 @@ import {
   Vector3,
 } from "three";
 import { TransformControls } from "three/examples/jsm/controls/TransformControls.js";
+import { diagonal } from "../decode/robust_extent";
 import type { Bounds, Vec3 } from "../decode/types";
 
 import { patternPoints } from "./viewpoint_pattern";
 import type { ViewpointName } from "./viewpoint_pattern";
 
+/** A marker's id: the pattern's three ("centre", "max", "min") or one added ("vp4", …). */
+export type MarkerId = string;
 export type { ViewpointName };
 
+/** The pattern viewpoints the GUI toggles one by one. */
 export const VIEWPOINT_NAMES: ViewpointName[] = ["centre", "max", "min"];
 
 export const VIEWPOINT_LABELS: Record<ViewpointName, string> = {
@@ -34,14 +38,13 @@ export const VIEWPOINT_LABELS: Record<ViewpointName, string> = {
   min: "Viewpoint Min",
 };
 
-const COLOURS: Record<ViewpointName, number> = {
-  centre: 0xffd166,
-  max: 0xff7b54,
-  min: 0x7bdff2,
-};
+/** Marker colours in order of creation: the rays and the legend use the same. */
+const PALETTE = [0xffd166, 0xff7b54, 0x7bdff2, 0xc084fc, 0x4ade80, 0xf472b6, 0xfacc15, 0x60a5fa];
 
 export interface Marker {
-  name: ViewpointName;
+  name: MarkerId;
+  label: string;
+  colour: number;
   object: Group;
   sphere: Mesh<SphereGeometry, MeshBasicMaterial>;
   light: PointLight;
@@ -63,35 +66,19 @@ function glowTexture(): CanvasTexture {
 
 export class ViewpointMarkers {
   readonly group = new Group();
-  readonly markers = new Map<ViewpointName, Marker>();
+  readonly markers = new Map<MarkerId, Marker>();
   readonly gizmo: TransformControls;
   /** Called when a marker moves or is toggled. */
   onChange: (() => void) | null = null;
-  private selected: ViewpointName | null = null;
+  private selected: MarkerId | null = null;
   private size = 0.1;
   private intensity = 1;
 
+  private readonly texture = glowTexture();
+  private created = 0;
+
   constructor(camera: Camera, domElement: HTMLElement, overlays: Object3D) {
-    const texture = glowTexture();
-    for (const name of VIEWPOINT_NAMES) {
-      const object = new Group();
-      object.name = `viewpoint-${name}`;
-      const colour = new Color(COLOURS[name]);
-      const sphere = new Mesh(
-        new SphereGeometry(1, 20, 14),
-        new MeshBasicMaterial({ color: colour }),
-      );
-      sphere.userData.viewpoint = name;
-      const glow = new Sprite(
-        new SpriteMaterial({ map: texture, color: colour, transparent: true, depthWrite: false }),
-      );
-      glow.scale.setScalar(5);
-      glow.userData.viewpoint = name;
-      const light = new PointLight(colour, 1, 0, 0);
-      object.add(sphere, glow, light);
-      this.group.add(object);
-      this.markers.set(name, { name, object, sphere, light, enabled: true });
-    }
+    for (const name of VIEWPOINT_NAMES) this.create(name, VIEWPOINT_LABELS[name]);
     overlays.add(this.group);
     this.gizmo = new TransformControls(camera, domElement);
     this.gizmo.setSize(0.8);
@@ -99,22 +86,89 @@ export class ViewpointMarkers {
     overlays.add(this.gizmo.getHelper());
   }
 
-  /** Puts the markers on the bounds' pattern points, sized to the scene. */
-  reset(bounds: Bounds): void {
-    const points = patternPoints(bounds);
-    const [a, b] = [bounds.min, bounds.max];
-    const diagonal = Math.hypot(b[0] - a[0], b[1] - a[1], b[2] - a[2]) || 1;
-    this.size = diagonal * 0.012;
-    for (const marker of this.markers.values()) {
-      marker.object.position.set(...points[marker.name]);
-      marker.object.scale.setScalar(this.size);
-    }
-    this.deselect();
+  private create(name: MarkerId, label: string): Marker {
+    const hex = PALETTE[this.created++ % PALETTE.length]!;
+    const object = new Group();
+    object.name = `viewpoint-${name}`;
+    const colour = new Color(hex);
+    const sphere = new Mesh(
+      new SphereGeometry(1, 20, 14),
+      new MeshBasicMaterial({ color: colour }),
+    );
+    sphere.userData.viewpoint = name;
+    const glow = new Sprite(
+      new SpriteMaterial({
+        map: this.texture,
+        color: colour,
+        transparent: true,
+        depthWrite: false,
+      }),
+    );
+    glow.scale.setScalar(5);
+    glow.userData.viewpoint = name;
+    const light = new PointLight(colour, this.intensity, 0, 0);
+    object.add(sphere, glow, light);
+    object.scale.setScalar(this.size);
+    this.group.add(object);
+    const marker = { name, label, colour: hex, object, sphere, light, enabled: true };
+    this.markers.set(name, marker);
+    return marker;
+  }
+
+  /** Adds a viewpoint at `position`; returns its id. */
+  add(position: Vec3): MarkerId {
+    let k = this.markers.size + 1;
+    while (this.markers.has(`vp${k}`)) ++k;
+    const marker = this.create(`vp${k}`, `Viewpoint ${k}`);
+    marker.object.position.set(...position);
+    this.onChange?.();
+    return marker.name;
+  }
+
+  /** Removes a viewpoint (any, the pattern's three included). */
+  remove(name: MarkerId): void {
+    const marker = this.markers.get(name);
+    if (!marker) return;
+    if (this.selected === name) this.deselect();
+    marker.object.removeFromParent();
+    marker.sphere.geometry.dispose();
+    marker.sphere.material.dispose();
+    marker.light.dispose();
+    this.markers.delete(name);
     this.onChange?.();
   }
 
-  setEnabled(name: ViewpointName, enabled: boolean): void {
-    const marker = this.markers.get(name)!;
+  /** The marker's colour as 0..1 RGB (its rays are drawn in it). */
+  colour(name: MarkerId): [number, number, number] {
+    const c = new Color(this.markers.get(name)?.colour ?? 0xffffff);
+    return [c.r, c.g, c.b];
+  }
+
+  label(name: MarkerId): string {
+    return this.markers.get(name)?.label ?? name;
+  }
+
+  /** Puts the markers on the bounds' pattern points, sized to the scene. */
+  /** Back to the pattern's three on the bounds' pattern points (added ones go), sized to the scene. */
+  reset(bounds: Bounds): void {
+    this.deselect();
+    for (const name of [...this.markers.keys()]) {
+      if (!(VIEWPOINT_NAMES as string[]).includes(name)) this.remove(name);
+    }
+    const points = patternPoints(bounds);
+    this.size = diagonal(bounds) * 0.012;
+    for (const name of VIEWPOINT_NAMES) {
+      const marker = this.markers.get(name) ?? this.create(name, VIEWPOINT_LABELS[name]);
+      marker.object.position.set(...points[name]);
+    }
+    // Creation order (and so colour) stays centre, max, min.
+    for (const marker of this.markers.values()) marker.object.scale.setScalar(this.size);
+    this.onChange?.();
+  }
+
+  setEnabled(name: MarkerId, enabled: boolean): void {
+    const marker = this.markers.get(name);
+    if (!marker) return;
     marker.enabled = enabled;
     marker.object.visible = enabled;
     marker.light.intensity = enabled ? this.intensity : 0;
@@ -129,17 +183,17 @@ export class ViewpointMarkers {
     }
   }
 
-  enabled(): { name: ViewpointName; position: Vec3 }[] {
+  enabled(): { name: MarkerId; position: Vec3 }[] {
     return [...this.markers.values()]
       .filter((m) => m.enabled)
       .map((m) => ({ name: m.name, position: m.object.position.toArray() as Vec3 }));
   }
 
-  position(name: ViewpointName): Vec3 {
+  position(name: MarkerId): Vec3 {
     return this.markers.get(name)!.object.position.toArray() as Vec3;
   }
 
-  setPosition(name: ViewpointName, position: Vec3): void {
+  setPosition(name: MarkerId, position: Vec3): void {
     this.markers.get(name)!.object.position.set(...position);
     this.onChange?.();
   }
@@ -149,7 +203,7 @@ export class ViewpointMarkers {
     return [...this.markers.values()].filter((m) => m.enabled).flatMap((m) => m.object.children);
   }
 
-  select(name: ViewpointName): void {
+  select(name: MarkerId): void {
     this.selected = name;
     this.gizmo.attach(this.markers.get(name)!.object);
   }
@@ -159,12 +213,12 @@ export class ViewpointMarkers {
     this.gizmo.detach();
   }
 
-  get selection(): ViewpointName | null {
+  get selection(): MarkerId | null {
     return this.selected;
   }
 
   /** Marker sphere position as a Vector3 (for drawing rays from it). */
-  vector(name: ViewpointName): Vector3 {
+  vector(name: MarkerId): Vector3 {
     return this.markers.get(name)!.object.position.clone();
   }
 }

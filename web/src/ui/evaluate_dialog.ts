@@ -33,13 +33,17 @@ export function openEvaluateDialog(
       attrs: {
         list: listId,
         value: defaults.groundTruth,
-        placeholder: "s3dis_synthetic/Area_1/office_1",
+        placeholder: "empty: give a labelled cloud (ground truth)",
       },
     });
     const prediction = h("input", {
       class: INPUT,
       testid: "eval-prediction",
-      attrs: { list: listId, value: defaults.prediction, placeholder: "out/office_1.scan.ply" },
+      attrs: {
+        list: listId,
+        value: defaults.prediction,
+        placeholder: "empty: give the predicted cloud (e.g. a .scan.ply)",
+      },
     });
     const distance = h("input", {
       class: INPUT,

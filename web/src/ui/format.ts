@@ -29,3 +29,9 @@ export function point(p: readonly number[] | undefined): string {
 export function ms(value: number): string {
   return value < 1000 ? `${Math.round(value)} ms` : `${(value / 1000).toFixed(2)} s`;
 }
+
+/** Decimals that show `x` with `digits` significant digits (for sliders: 0.200 not 0.200235559148495). */
+export function significantDecimals(x: number, digits = 3): number {
+  if (!Number.isFinite(x) || x === 0) return digits;
+  return Math.max(0, Math.min(10, digits - 1 - Math.floor(Math.log10(Math.abs(x)))));
+}

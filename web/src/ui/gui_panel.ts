@@ -1,9 +1,13 @@
-// The seed's GUI panel (top right, lil-gui): light intensity, show cloud,
-// shader material, the viewpoint toggles (centre, max, min, all lights) and
-// picker size, plus the view and computation settings this viewer adds.
+// The seed's GUI panel (lil-gui, docked in the left sidebar so that it never
+// covers the 3-D view): light intensity, show cloud, shader material, the
+// viewpoint toggles (centre, max, min, all lights) and picker size, plus the
+// view and computation settings this viewer adds. Computation defaults and
+// ranges come from settings_defaults.ts.
 
 import GUI from "lil-gui";
 import type { Controller } from "lil-gui";
+import { SETTINGS } from "../settings_defaults";
+import type { SettingName } from "../settings_defaults";
 
 export interface GuiSettings {
   lightIntensity: number;
@@ -12,6 +16,7 @@ export interface GuiSettings {
   colourBy: string;
   pointSize: number;
   cutCeiling: boolean;
+  cutWalls: boolean;
   useShaderMaterial: boolean;
   centre: boolean;
   max: boolean;
@@ -22,6 +27,8 @@ export interface GuiSettings {
   raysPerViewpoint: number;
   pointRadius: number;
   samplesPerUnitArea: number;
+  minClusterSize: number;
+  maxClusterSize: number;
   visibilityScan: boolean;
   cloudMethod: string;
 }
@@ -35,6 +42,7 @@ export const DEFAULT_SETTINGS: GuiSettings = {
   colourBy: "rgb",
   pointSize: 0.05,
   cutCeiling: true,
+  cutWalls: true,
   useShaderMaterial: false,
   centre: true,
   max: true,
@@ -42,9 +50,11 @@ export const DEFAULT_SETTINGS: GuiSettings = {
   allLights: true,
   showRays: true,
   pickerSize: 0.05,
-  raysPerViewpoint: 20000,
-  pointRadius: 0.06,
-  samplesPerUnitArea: 20,
+  raysPerViewpoint: SETTINGS.raysPerViewpoint.default,
+  pointRadius: SETTINGS.pointRadius.default,
+  samplesPerUnitArea: SETTINGS.samplesPerUnitArea.default,
+  minClusterSize: SETTINGS.minClusterSize.default,
+  maxClusterSize: SETTINGS.maxClusterSize.default,
   visibilityScan: true,
   cloudMethod: "poc",
 };
@@ -57,8 +67,11 @@ export class GuiPanel {
   onResetViewpoints: () => void = () => undefined;
 
   constructor(container: HTMLElement) {
-    this.gui = new GUI({ container, title: "Controls", width: 250 });
+    this.gui = new GUI({ container, title: "Controls" });
     this.gui.domElement.dataset.testid = "gui-panel";
+    // Fill the sidebar; names get room enough not to be cut ("Colour by").
+    this.gui.domElement.style.width = "100%";
+    this.gui.domElement.style.setProperty("--name-width", "42%");
     const add = (folder: GUI, key: GuiKey, name: string, ...args: unknown[]) => {
       const controller = (folder.add as (...a: unknown[]) => Controller)(
         this.settings,
@@ -76,8 +89,9 @@ export class GuiPanel {
     add(view, "showCloud", "Show Cloud");
     add(view, "showMesh", "Show Mesh");
     add(view, "colourBy", "Colour by", { RGB: "rgb" });
-    add(view, "pointSize", "Point size", 0.001, 0.3, 0.001);
+    add(view, "pointSize", "Point size", 0.001, 0.3, 0.001).decimals(3);
     add(view, "cutCeiling", "Hide ceiling");
+    add(view, "cutWalls", "Cut near walls");
 
     const viewpoints = this.gui.addFolder("Viewpoints");
     add(viewpoints, "centre", "Center");
@@ -89,13 +103,21 @@ export class GuiPanel {
 
     const picker = this.gui.addFolder("Picker");
     add(picker, "useShaderMaterial", "Use Shader Material");
-    add(picker, "pickerSize", "Picker Size", 0.005, 0.5, 0.005);
+    add(picker, "pickerSize", "Picker Size", 0.005, 0.5, 0.005).decimals(3);
     picker.close();
 
     const compute = this.gui.addFolder("Occlusion settings");
-    add(compute, "raysPerViewpoint", "Rays / viewpoint", 1000, 200000, 1000);
-    add(compute, "pointRadius", "Point radius", 0.005, 0.3, 0.001);
-    add(compute, "samplesPerUnitArea", "Samples / m² (mesh)", 1, 200, 1);
+    const declared = (key: GuiKey & SettingName, name: string, decimals: number) => {
+      const d = SETTINGS[key];
+      add(compute, key, name, d.min, d.max, d.step)
+        .decimals(decimals)
+        .domElement.setAttribute("title", `${d.key} (${d.unit}): ${d.doc}`);
+    };
+    declared("raysPerViewpoint", "Rays / viewpoint", 0);
+    declared("pointRadius", "Point radius", 3);
+    declared("samplesPerUnitArea", "Samples / m² (mesh)", 0);
+    declared("minClusterSize", "Min cluster size", 0);
+    declared("maxClusterSize", "Max cluster size", 0);
     add(compute, "visibilityScan", "Also scan visibility");
     add(compute, "cloudMethod", "Cloud method", {
       "Ray casting (-poc)": "poc",
@@ -121,8 +143,20 @@ export class GuiPanel {
     }
   }
 
-  setRange(key: GuiKey, min: number, max: number, step: number): void {
-    this.controllers.get(key)?.min(min).max(max).step(step).updateDisplay();
+  setRange(key: GuiKey, min: number, max: number, step: number, decimals?: number): void {
+    const c = this.controllers.get(key)?.min(min).max(max).step(step);
+    if (c && decimals !== undefined) c.decimals(decimals);
+    c?.updateDisplay();
+  }
+
+  /** Takes the declared defaults and ranges again (after the server published its own). */
+  refreshDeclared(names: SettingName[]): void {
+    for (const name of names) {
+      const d = SETTINGS[name];
+      if (!(name in this.settings)) continue;
+      this.set(name as GuiKey & SettingName, d.default);
+      this.setRange(name as GuiKey, d.min, d.max, d.step);
+    }
   }
 
   show(key: GuiKey, on: boolean): void {

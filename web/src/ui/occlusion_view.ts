@@ -6,6 +6,7 @@ import { num } from "../results";
 import { h } from "./dom";
 import { fixed, integer, ms, percent, point } from "./format";
 import { card, facts, headline, table, warnings } from "./results_panel";
+import type { Heading } from "./results_panel";
 
 function seconds(report: JobReport): string {
   const total = num(report.timings?.total_seconds);
@@ -55,9 +56,15 @@ export function occlusionCard(report: JobReport, names: string[] = []): HTMLElem
           integer(v.through_openings),
         ],
   );
-  const head = isMesh
+  const head: Heading[] = isMesh
     ? ["viewpoint", "position", "sees alone"]
-    : ["viewpoint", "position", "occlusion", "occl. rays", "openings"];
+    : [
+        "viewpoint",
+        "position",
+        { label: "occl.", title: "occlusion level: the share of its rays that escaped" },
+        { label: "escaped", title: "occlusion rays: rays that left through gaps" },
+        { label: "open.", title: "rays that left through the openings" },
+      ];
   const groups = isMesh ? groupTable(report) : null;
   return card(
     isRegionGrowing
@@ -70,12 +77,12 @@ export function occlusionCard(report: JobReport, names: string[] = []): HTMLElem
       facts(pairs),
       typeof polygonPath === "string" && polygonPath
         ? h("div", {
-            class: "mt-1 truncate text-xs text-teal-300",
+            class: "mt-1 break-all text-xs text-teal-300",
             text: `openings file: ${polygonPath}`,
             testid: "openings-used",
           })
         : null,
-      h("div", { class: "mt-3" }, [table(head, rows, "viewpoint-table")]),
+      h("div", { class: "mt-3" }, [table(head, rows, "viewpoint-table", true)]),
       groups,
       warnings(report.warnings),
     ],

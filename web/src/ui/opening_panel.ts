@@ -23,10 +23,16 @@ export class OpeningPanel {
   private readonly saveButton: HTMLButtonElement;
   readonly savePath: HTMLInputElement;
   private readonly openings = h("div", {
-    class: "min-w-0 flex-1 truncate text-xs text-slate-400",
+    class: "min-w-0 flex-1 break-all text-xs text-slate-400",
     testid: "openings-file",
   });
   private openingsPath = "";
+  /** Called with the openings file now in use ("" for none): the app draws its openings. */
+  onOpeningsChange: (path: string) => void = () => undefined;
+  private readonly problem = h("p", {
+    class: "mt-1 hidden text-xs text-red-300",
+    testid: "opening-problem",
+  });
 
   constructor(
     container: HTMLElement,
@@ -69,6 +75,7 @@ export class OpeningPanel {
       ]),
       h("div", { class: "mt-2" }, [this.list]),
       h("div", { class: "mt-2 flex items-center gap-1" }, [this.savePath, this.saveButton]),
+      this.problem,
       h("div", { class: "mt-2 flex items-center gap-1" }, [this.openings, clearOpenings]),
     );
     this.setPoints([]);
@@ -97,13 +104,24 @@ export class OpeningPanel {
     this.saveButton.title = points.length < 3 ? "Pick at least 3 points" : "Save to the server";
   }
 
-  setOpenings(path: string): void {
+  setOpenings(path: string, count?: number): void {
+    const changed = path !== this.openingsPath;
     this.openingsPath = path;
+    const n = count === undefined ? "" : ` (${count} opening${count === 1 ? "" : "s"}, drawn)`;
     this.openings.textContent = path
-      ? `next computation uses: ${path}`
+      ? `next computation uses: ${path}${n}`
       : "no openings file (rays leave only through gaps)";
     this.openings.dataset.path = path;
+    if (count !== undefined) this.openings.dataset.count = String(count);
+    else delete this.openings.dataset.count;
     this.openings.title = this.openings.textContent;
+    if (changed) this.onOpeningsChange(path);
+  }
+
+  /** Why the picked polygon cannot be saved ("" when it can). */
+  setProblem(reason: string): void {
+    this.problem.textContent = reason ? `Cannot save: ${reason}.` : "";
+    this.problem.classList.toggle("hidden", !reason);
   }
 
   get openingsFile(): string {

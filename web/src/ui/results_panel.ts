@@ -13,6 +13,9 @@ const TITLES: Record<ResultsTab, string> = {
 
 export class ResultsPanel {
   readonly bodies = new Map<ResultsTab, HTMLElement>();
+  /** Each scene's occlusion results, kept while another scene is shown. */
+  private readonly byScene = new Map<string, Node[]>();
+  private scene = "";
   private readonly buttons = new Map<ResultsTab, HTMLButtonElement>();
 
   constructor(container: HTMLElement) {
@@ -55,15 +58,56 @@ export class ResultsPanel {
     if (focus) this.show(tab);
   }
 
-  /** Replaces one card (by key) inside a tab, keeping the others. */
+  /**
+   * Puts a result card (by kind, `key`) on top of a tab. The card it
+   * supersedes is kept below, under "Earlier results", to compare with (its
+   * test ids prefixed "earlier-": the current card alone answers to them).
+   */
   setCard(tab: ResultsTab, key: string, card: HTMLElement): void {
     const body = this.bodies.get(tab)!;
     body.querySelector(":scope > p")?.remove();
     card.dataset.card = key;
-    const old = body.querySelector(`:scope > [data-card="${key}"]`);
-    if (old) old.replaceWith(card);
-    else body.prepend(card); // the newest kind of result on top
+    card.dataset.time = new Date().toLocaleTimeString("en-GB");
+    const old = body.querySelector<HTMLElement>(`:scope > [data-card="${key}"]`);
+    if (old) {
+      old.remove();
+      this.keepEarlier(body, old);
+    }
+    body.prepend(card); // the newest result on top
     this.show(tab);
+  }
+
+  private keepEarlier(body: HTMLElement, card: HTMLElement): void {
+    for (const e of [card, ...card.querySelectorAll<HTMLElement>("[data-testid]")]) {
+      if (e.dataset.testid) e.dataset.testid = `earlier-${e.dataset.testid}`;
+    }
+    card.classList.add("opacity-80");
+    card.prepend(
+      h("div", { class: "mb-1 text-[11px] text-slate-500", text: `computed ${card.dataset.time}` }),
+    );
+    let earlier = body.querySelector<HTMLDetailsElement>(":scope > details[data-earlier]");
+    if (!earlier) {
+      earlier = h("details", { class: "space-y-2", testid: "earlier-results" }, [
+        h("summary", { class: "cursor-pointer text-xs text-slate-400" }),
+      ]);
+      earlier.dataset.earlier = "";
+      body.append(earlier);
+    }
+    earlier.querySelector("summary")!.after(card); // newest earlier result first
+    const n = earlier.children.length - 1;
+    earlier.querySelector("summary")!.textContent =
+      `Earlier results on this scene (${n}), to compare`;
+  }
+
+  /** Shows `path`'s occlusion results, keeping those of the scene shown until now. */
+  switchScene(path: string): void {
+    const body = this.bodies.get("occlusion")!;
+    if (this.scene) this.byScene.set(this.scene, [...body.childNodes]);
+    this.scene = path;
+    clear(body);
+    const kept = this.byScene.get(path);
+    if (kept && kept.length) body.append(...kept);
+    else body.append(h("p", { class: "text-sm text-slate-500", text: placeholder("occlusion") }));
   }
 
   clearTab(tab: ResultsTab): void {

@@ -35,17 +35,20 @@ export class StatsPanel {
   }
 
   /**
-   * Counts a rendered frame; the FPS graph updates once a second. The viewer
-   * renders on demand, so a pause restarts the measurement instead of
-   * counting idle time as slow frames.
+   * Counts a rendered frame; the FPS graph updates about once a second. The
+   * viewer renders on demand: only frames drawn while the camera moves
+   * (`continuous`) are timed, so idle time is never counted as slow frames,
+   * and slow ones (a second or more each, software rendering) still show.
    */
-  frame(): void {
+  frame(continuous = true): void {
     const now = performance.now();
-    if (now - this.lastFrame > 250) {
+    const gap = now - this.lastFrame;
+    this.lastFrame = now;
+    if (!continuous || gap > 10_000) {
       this.frames = 0;
       this.windowStart = now;
+      return;
     }
-    this.lastFrame = now;
     this.frames += 1;
     const elapsed = now - this.windowStart;
     if (elapsed >= 1000) {

@@ -11,7 +11,12 @@ const BUTTONS: [ToolbarButton, string, string, boolean][] = [
   ["semantic", "Semantic Cloud", "Colour by semantic class", false],
   ["mesh", "Mesh", "Show the mesh", false],
   ["compute", "Compute Occlusion", "Occlusion from the enabled viewpoints", true],
-  ["polygons", "Extract Polygons", "Find window and door outlines", false],
+  [
+    "polygons",
+    "Extract Polygons",
+    "Fit planar polygons to the cloud (region growing + RANSAC): walls, floor, tables",
+    false,
+  ],
   ["evaluate", "Evaluate", "Compare a segmentation with the ground truth", false],
   ["upload", "Upload…", "Upload a PCD, PLY, OBJ or text cloud (or drop it anywhere)", false],
 ];

@@ -250,3 +250,60 @@ export async function canvasForeground(
 export function removeData(dataDir: string): void {
   rmSync(dirname(dataDir), { recursive: true, force: true });
 }
+
+/**
+ * Elements that stick out of their panel (header, sidebar, 3-D view, results,
+ * footer) or whose text is cut (an ellipsis, or a clipped lil-gui name),
+ * read from the DOM: "panel › tag.class 'text' (why)".
+ */
+export async function layoutProblems(page: Page): Promise<string[]> {
+  return page.evaluate(() => {
+    const problems: string[] = [];
+    const describe = (e: Element) =>
+      `${e.tagName.toLowerCase()}.${String(e.className).split(" ").slice(0, 3).join(".")} ` +
+      `'${(e.textContent ?? "").trim().slice(0, 40)}'`;
+    const panels: [string, Element | null][] = [
+      ["header", document.querySelector("header")],
+      ["sidebar", document.getElementById("sidebar")],
+      ["stage", document.getElementById("stage")],
+      ["results", document.getElementById("results")],
+      ["footer", document.querySelector("footer")],
+    ];
+    for (const [name, panel] of panels) {
+      if (!panel) {
+        problems.push(`${name}: missing`);
+        continue;
+      }
+      const box = panel.getBoundingClientRect();
+      if (box.right > window.innerWidth + 1 || box.bottom > window.innerHeight + 1) {
+        problems.push(`${name}: outside the window`);
+      }
+      for (const e of panel.querySelectorAll("*")) {
+        const r = e.getBoundingClientRect();
+        if (r.width === 0 || r.height === 0) continue;
+        const style = getComputedStyle(e);
+        if (style.visibility === "hidden") continue;
+        if (r.right > box.right + 1 || r.left < box.left - 1) {
+          problems.push(
+            `${name} › ${describe(e)} (sticks out ${Math.round(r.right - box.right)} px)`,
+          );
+        }
+        const clipped = style.textOverflow === "ellipsis" || e.classList.contains("lil-name");
+        if (clipped && e.scrollWidth > e.clientWidth + 1) {
+          problems.push(`${name} › ${describe(e)} (text cut)`);
+        }
+      }
+    }
+    const gui = document.getElementById("gui")!.getBoundingClientRect();
+    const stage = document.getElementById("stage")!.getBoundingClientRect();
+    if (
+      gui.left < stage.right &&
+      gui.right > stage.left &&
+      gui.top < stage.bottom &&
+      gui.bottom > stage.top
+    ) {
+      problems.push("the GUI panel covers the 3-D view");
+    }
+    return problems;
+  });
+}

@@ -47,7 +47,7 @@ describe("viewer (e2e)", () => {
   test("opens on the sample room mesh with a WebGL canvas", async () => {
     await page.locator("[data-testid=connection][data-state=online]").waitFor();
     await expect
-      .poll(() => page.locator("[data-testid=status-scene]").textContent())
+      .poll(() => page.locator("[data-testid=status-scene]").textContent(), { timeout: 30_000 })
       .toContain("sample_room.obj");
     const webgl = await page.evaluate(() => {
       const gl = document.querySelector("canvas")!.getContext("webgl2");
@@ -157,7 +157,16 @@ describe("viewer (e2e)", () => {
       .toContain(`(${after.map((x) => x.toFixed(2)).join(", ")})`);
   });
 
-  test("picks three points into an opening, saves it, and the next computation uses it", async () => {
+  test("picks three points into an opening, appends it to the openings in use, draws them all, and the next computation uses them", async () => {
+    // The room's openings file is in use, and its openings are drawn.
+    const inUse = await page.locator("[data-testid=openings-file]").getAttribute("data-path");
+    expect(inUse).toBe("s3dis_synthetic/openings.txt");
+    await expect
+      .poll(() => page.locator("[data-testid=openings-file]").getAttribute("data-count"))
+      .toBe("2");
+    expect(
+      await page.evaluate(() => (window as any).__occlusion.app.ctx.polygons.savedCount as number),
+    ).toBe(2);
     await page.locator("[data-testid=pick-toggle]").click();
     const canvas = await page.locator("[data-testid=viewer-canvas]").boundingBox();
     const spots = [
@@ -187,10 +196,21 @@ describe("viewer (e2e)", () => {
     );
     const saved = join(server.dataDir, "openings", "office_1.txt");
     expect(existsSync(saved)).toBe(true);
-    const lines = readFileSync(saved, "utf8")
-      .split("\n")
-      .filter((l) => /^\s*-?\d/.test(l));
-    expect(lines.length).toBe(3);
+    // The two openings in use, then the new one: appended, none dropped.
+    const numbers = (path: string) =>
+      readFileSync(path, "utf8")
+        .split("\n")
+        .filter((l) => /^\s*-?\d/.test(l));
+    const kept = numbers(join(server.dataDir, "s3dis_synthetic", "openings.txt"));
+    const lines = numbers(saved);
+    expect(lines.length).toBe(kept.length + 3);
+    expect(lines.slice(0, kept.length).map((l) => l.trim().split(/\s+/).map(Number))).toEqual(
+      kept.map((l) => l.trim().split(/\s+/).map(Number)),
+    );
+    expect(await page.locator("[data-testid=openings-file]").getAttribute("data-count")).toBe("3");
+    expect(
+      await page.evaluate(() => (window as any).__occlusion.app.ctx.polygons.savedCount as number),
+    ).toBe(3);
 
     await page.locator("[data-testid=btn-compute]").click();
     await page
@@ -256,6 +276,37 @@ describe("viewer (e2e)", () => {
         .toBeGreaterThanOrEqual(8);
       await page.locator("[data-testid=study-correlations]").waitFor();
       await screenshot(page, "06-study");
+      // One measure on x at a time, chosen by the user; a series never mixes measures.
+      const chooser = page.locator("[data-testid=study-measure]");
+      const options = await chooser
+        .locator("option")
+        .evaluateAll((o) => o.map((e) => (e as HTMLOptionElement).value));
+      expect(options).toEqual(
+        expect.arrayContaining(["visible_fraction", "occlusion_level", "session_poc"]),
+      );
+      const scatter = page.locator("[data-testid=study-scatter]");
+      await chooser.selectOption("visible_fraction");
+      expect(await scatter.getAttribute("data-measure")).toBe("visible_fraction");
+      const studyDots = await scatter.locator("circle[data-series=study]").count();
+      expect(studyDots).toBeGreaterThanOrEqual(8);
+      expect(await scatter.locator("circle[data-series=session]").count()).toBe(0);
+      expect(await page.locator("[data-testid=study-definition]").textContent()).toContain(
+        "scanned_points / points",
+      );
+      // The x axis is zoomed to the data: it spans less than the full 0–100 %.
+      const span =
+        Number(await scatter.getAttribute("data-x-max")) -
+        Number(await scatter.getAttribute("data-x-min"));
+      expect(span).toBeLessThan(1);
+      await scatter.locator("circle[data-series=study]").first().hover();
+      expect(await page.locator("[data-testid=study-hover]").textContent()).toContain("pattern_");
+      await screenshot(page, "06-study-visible-fraction");
+      await chooser.selectOption("session_poc");
+      expect(await scatter.locator("circle[data-series=study]").count()).toBe(0);
+      expect(await scatter.locator("circle[data-series=session]").count()).toBe(1);
+      expect(await page.locator("[data-testid=study-definition]").textContent()).toContain(
+        "leave through gaps",
+      );
     }
   });
 

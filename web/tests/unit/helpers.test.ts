@@ -2,7 +2,7 @@ import { describe, expect, test } from "vitest";
 import { ramp, segmentColour, visibilityColour, UNSEEN_COLOUR } from "../../src/decode/colour_maps";
 import { studyPoints } from "../../src/results";
 import { SceneCache, cacheKey } from "../../src/scene_cache";
-import { fitLine, niceMax } from "../../src/ui/scatter_plot";
+import { fitLine, measuresPresent, niceRange } from "../../src/ui/scatter_plot";
 import { assembleVisibility } from "../../src/decode/assemble";
 import { decodeFrame, encodeFrame } from "../../src/protocol/frame";
 import { patternPoints } from "../../src/scene/viewpoint_pattern";
@@ -46,31 +46,56 @@ describe("scene cache", () => {
 });
 
 describe("study", () => {
-  test("finds (occlusion_level, miou) pairs anywhere in a report", () => {
+  test("finds rows with a miou and the study's measures anywhere in a report", () => {
     const report = {
-      runs: [
-        { name: "vp1", occlusion_level: 0.2, miou: 0.7 },
-        { occlusion_level: 0.4, miou: 0.5 },
+      rows: [
+        { scene: "office_1", configuration: "pattern_1", occlusion_level: 0.2, miou: 0.7 },
+        { occlusion_level: 0.4, visible_fraction: 0.9, miou: 0.5 },
+        { occlusion_level: 0.3 }, // no miou: not a point
       ],
       other: 1,
     };
     expect(studyPoints(report, "study")).toEqual([
-      { occlusion: 0.2, miou: 0.7, label: "vp1", series: "study" },
-      { occlusion: 0.4, miou: 0.5, label: "study.runs#2", series: "study" },
+      {
+        measures: { occlusion_level: 0.2 },
+        miou: 0.7,
+        label: "office_1 pattern_1",
+        series: "study",
+      },
+      {
+        measures: { visible_fraction: 0.9, occlusion_level: 0.4 },
+        miou: 0.5,
+        label: "study.rows#2",
+        series: "study",
+      },
     ]);
   });
 
-  test("fits a line and picks round axis ends", () => {
+  test("fits a line and zooms the axes to the data with round ticks", () => {
     const line = fitLine([
-      { occlusion: 0, miou: 0.8, label: "" },
-      { occlusion: 0.5, miou: 0.3, label: "" },
+      [0, 0.8],
+      [0.5, 0.3],
     ]);
     expect(line!.a).toBeCloseTo(0.8);
     expect(line!.b).toBeCloseTo(-1);
-    expect(fitLine([{ occlusion: 0.1, miou: 0.1, label: "" }])).toBeNull();
-    expect(niceMax(0.017)).toBe(0.04);
-    expect(niceMax(0.35)).toBe(0.4);
-    expect(niceMax(3)).toBe(1);
+    expect(fitLine([[0.1, 0.1]])).toBeNull();
+    expect(niceRange(0.62, 0.71)).toEqual({ min: 0.6, max: 0.725, step: 0.025 });
+    const r = niceRange(0.013, 0.019);
+    expect(r.min).toBeCloseTo(0.012);
+    expect(r.max).toBeCloseTo(0.02);
+    expect(niceRange(0, 1)).toEqual({ min: 0, max: 1, step: 0.25 });
+    // One value: a small range around it, never beyond [0, 1].
+    const one = niceRange(1, 1);
+    expect(one.max).toBe(1);
+    expect(one.min).toBeLessThan(1);
+  });
+
+  test("lists only the measures the points have, never mixing them", () => {
+    const points = [
+      { measures: { session_poc: 0.1 }, miou: 0.5, label: "a", series: "session" as const },
+      { measures: { visible_fraction: 0.8 }, miou: 0.6, label: "b", series: "study" as const },
+    ];
+    expect(measuresPresent(points)).toEqual(["visible_fraction", "session_poc"]);
   });
 });
 

@@ -17,7 +17,40 @@ describe("parseServerMessage", () => {
       protocol: 1,
       server: "s",
       commands: { load: true, study: false },
+      keys: {},
       limits: { max_text_bytes: 1048576, max_upload_bytes: 268435456, progress_per_second: 10 },
+    });
+  });
+
+  test("hello keeps key declarations, top-level or per command", () => {
+    const declaration = { num_rays_per_vp: { default: 30000, min: 1 } };
+    const m = parseServerMessage(
+      JSON.stringify({
+        type: "hello",
+        protocol: 1,
+        commands: { cloud_occlusion: { keys: declaration }, ping: true },
+        keys: { scan: { point_radius: { default: 0.05 } } },
+      }),
+    );
+    const fromJobs = parseServerMessage(
+      JSON.stringify({
+        type: "hello",
+        protocol: 1,
+        commands: { cloud_occlusion: true },
+        jobs: {
+          cloud_occlusion: {
+            section: "occlusion.point_cloud",
+            keys: [{ name: "seed", default: 0 }],
+          },
+        },
+      }),
+    );
+    expect(fromJobs).toMatchObject({
+      keys: { cloud_occlusion: { seed: { name: "seed", default: 0 } } },
+    });
+    expect(m).toMatchObject({
+      commands: { cloud_occlusion: true, ping: true },
+      keys: { cloud_occlusion: declaration, scan: { point_radius: { default: 0.05 } } },
     });
   });
 
