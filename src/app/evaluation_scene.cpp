@@ -10,6 +10,7 @@
 #include "occlusion/analysis/label_transfer.hpp"
 #include "occlusion/app/errors.hpp"
 #include "occlusion/app/evaluate_job.hpp"
+#include "occlusion/core/exact_match.hpp"
 #include "occlusion/io/cloud_io.hpp"
 #include "occlusion/io/input_error.hpp"
 #include "occlusion/io/label_file.hpp"
@@ -84,13 +85,21 @@ SceneEvaluation evaluate_scene(const SceneInput& scene, const ClassMapping& mapp
     result.transfer = "direct";
   } else if (same_points(scene.ground_truth, prediction)) {
     result.transfer = "direct";
-  } else {
-    if (max_distance <= 0.0) {
+  } else if (max_distance <= 0.0) {
+    // The same points in another order are paired by their coordinates.
+    const ExactMatch match = match_exact_points(prediction.positions, scene.ground_truth.positions);
+    if (!match.complete()) {
       throw UsageError(scene.prediction_name + ": its points are not those of " +
-                       scene.ground_truth_name +
-                       "; --max-distance 0 needs the same points in the same order (give a "
-                       "distance > 0 to transfer labels by nearest neighbour)");
+                       scene.ground_truth_name + " (" + std::to_string(match.unmatched_targets) +
+                       " ground-truth points have no prediction point at the same coordinates); "
+                       "--max-distance 0 needs the same points (give a distance > 0 to transfer "
+                       "labels by nearest neighbour)");
     }
+    std::vector<std::int32_t> paired(match.source_of.size());
+    for (std::size_t i = 0; i < paired.size(); ++i) paired[i] = predicted[match.source_of[i]];
+    predicted = std::move(paired);
+    result.transfer = "matched_by_position";
+  } else {
     LabelTransferOptions options;
     options.max_distance = max_distance;
     options.threads = threads;
@@ -188,6 +197,33 @@ Prediction load_prediction(const std::string& path, bool skip_bad_lines) {
   return prediction;
 }
 
+namespace {
+
+// A label file is paired with the ground truth by point order alone, so the
+// order must be one the user can know: refused when reading dropped points
+// (the lines no longer line up) or when an S3DIS room's order could not be
+// checked against its <room>.txt (the labels may follow that file or the
+// Annotations, and nothing tells which).
+void check_label_order(const std::string& prediction, const std::string& ground_truth,
+                       const LoadedCloud& truth) {
+  if (truth.dropped_nan + truth.skipped_lines > 0) {
+    throw InputError(prediction, 0,
+                     "labels are given by point order, but reading " + ground_truth + " dropped " +
+                         std::to_string(truth.dropped_nan + truth.skipped_lines) +
+                         " points (NaN or skipped lines), so they no longer line up");
+  }
+  if (!truth.unverified_order.empty()) {
+    throw UsageError(
+        prediction + ": a label file is paired with " + ground_truth +
+        " by point order, and that order cannot be verified (" + joined(truth.unverified_order) +
+        "). Give each room a <room>.txt holding exactly its annotated points in the order of "
+        "your labels, or give the prediction as a cloud with coordinates (x y z label) so "
+        "points are paired by position");
+  }
+}
+
+}  // namespace
+
 LoadedScene load_scene(const std::string& ground_truth, const std::string& prediction,
                        bool skip_bad_lines) {
   LoadedScene scene;
@@ -197,12 +233,7 @@ LoadedScene load_scene(const std::string& ground_truth, const std::string& predi
   scene.input.prediction_name = prediction;
   scene.dropped_nan = truth.dropped_nan;
   scene.skipped_lines = truth.skipped_lines;
-  if (is_label_file(prediction) && truth.dropped_nan + truth.skipped_lines > 0) {
-    throw InputError(prediction, 0,
-                     "labels are given by point order, but reading " + ground_truth + " dropped " +
-                         std::to_string(truth.dropped_nan + truth.skipped_lines) +
-                         " points (NaN or skipped lines), so they no longer line up");
-  }
+  if (is_label_file(prediction)) check_label_order(prediction, ground_truth, truth);
   scene.input.prediction = load_prediction(prediction, skip_bad_lines);
   return scene;
 }

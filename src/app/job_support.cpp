@@ -58,6 +58,7 @@ LoadedCloud load_cloud(const std::string& path, bool skip_bad_lines) {
   loaded.dropped_nan = report.dropped_nan;
   loaded.skipped_lines = report.skipped_lines;
   loaded.rooms = report.rooms;
+  loaded.unverified_order = report.unverified_order;
   return loaded;
 }
 

@@ -74,7 +74,7 @@ void print_human(const MeshOcclusionReport& report) {
 
 static void print_mesh_occlusion_help() {
   std::printf(
-      "usage: occlusion -moc MESH.obj [options]\n"
+      "usage: occlusion -moc MESH.obj|MESH.ply [options]\n"
       "\n"
       "Visible-area occlusion level of a triangle mesh: every face is sampled by area,\n"
       "a shadow ray goes from each sample to each viewpoint, and a sample is visible if\n"

@@ -38,6 +38,7 @@ struct PlyHeader {
   PlyEncoding encoding = PlyEncoding::kAscii;
   std::vector<PlyElement> elements;
   std::vector<std::string> class_names;
+  std::vector<std::string> comments;  // the text of every other `comment` line, in order
   std::size_t body_offset = 0;  // first byte after the end_header line
   std::size_t body_line = 0;    // line number of that byte (ascii)
 };

@@ -116,8 +116,9 @@ TEST(WriteCloud, PlyHeaderNamesClassesAndProperties) {
   const std::string text = testing::read_bytes(path);
   for (const char* line :
        {"comment class 0 ceiling\n", "comment class 1 floor with spaces\n",
-        "comment class 2 wall\n", "property uchar red\n", "property int label\n",
-        "property int instance\n", "property float visibility\n", "property int hits\n"}) {
+        "comment class 2 wall\n", "property uchar red\n", "property int scalar_label\n",
+        "property int scalar_instance\n", "property float scalar_visibility\n",
+        "property int scalar_hits\n"}) {
     EXPECT_NE(text.find(line), std::string::npos) << line;
   }
 }
