@@ -43,7 +43,9 @@ double density_for_min_samples(const TriangleMesh& mesh, double samples_per_unit
   // this density is enough; the count only grows with the density, so
   // bisection finds the smallest one.
   double lo = samples_per_unit_area;
-  double hi = std::max(lo, (static_cast<double>(min_samples) + 0.5 * static_cast<double>(mesh.face_count()) + 1.0) / area);
+  double hi = std::max(
+      lo, (static_cast<double>(min_samples) + 0.5 * static_cast<double>(mesh.face_count()) + 1.0) /
+              area);
   for (int step = 0; step < 200 && hi - lo > 1e-9 * hi; ++step) {
     const double mid = 0.5 * (lo + hi);
     (total_samples(mesh, mid) >= min_samples ? hi : lo) = mid;

@@ -10,7 +10,8 @@
 namespace occlusion::detail {
 
 std::string_view without_scalar_prefix(std::string_view name) {
-  if (name.size() > kPlyScalarPrefix.size() && name.substr(0, kPlyScalarPrefix.size()) == kPlyScalarPrefix) {
+  if (name.size() > kPlyScalarPrefix.size() &&
+      name.substr(0, kPlyScalarPrefix.size()) == kPlyScalarPrefix) {
     name.remove_prefix(kPlyScalarPrefix.size());
   }
   return name;

@@ -60,9 +60,9 @@ class PlyMeshReader : public detail::PlySink {
       }
     }
     if (const auto degenerate = detail::find_degenerate_face(mesh_, 0)) {
-      throw InputError(path_, 0,
-                       "face " + std::to_string(polygon_of_[degenerate->face]) + ": " +
-                           degenerate->reason);
+      throw InputError(
+          path_, 0,
+          "face " + std::to_string(polygon_of_[degenerate->face]) + ": " + degenerate->reason);
     }
     return std::move(mesh_);
   }
@@ -94,8 +94,8 @@ class PlyMeshReader : public detail::PlySink {
                        "the face element has no integer list property vertex_indices");
     }
     group_ = find_property(face, {"group_id"});
-    if (group_ != kNone && (face.properties[group_].is_list ||
-                            !detail::is_integer(face.properties[group_].type))) {
+    if (group_ != kNone &&
+        (face.properties[group_].is_list || !detail::is_integer(face.properties[group_].type))) {
       group_ = kNone;  // not ours: ignored like any other face property
     }
     mesh_.vertices.reserve(std::min(vertex.count, bytes_.size() / 12));
@@ -114,8 +114,7 @@ class PlyMeshReader : public detail::PlySink {
     }
     if (p == indices_) {
       if (value < 0 || value > std::numeric_limits<std::uint32_t>::max()) {
-        return "vertex index " + std::to_string(static_cast<long long>(value)) +
-               " is out of range";
+        return "vertex index " + std::to_string(static_cast<long long>(value)) + " is out of range";
       }
       corners_.push_back(static_cast<std::uint32_t>(value));
     } else if (p == group_) {

@@ -134,8 +134,8 @@ PointCloud annotated_points(const fs::path& room, const CloudReadOptions& option
 }
 
 std::string point_text(const Eigen::Vector3f& p) {
-  return "(" + std::to_string(p.x()) + ", " + std::to_string(p.y()) + ", " +
-         std::to_string(p.z()) + ")";
+  return "(" + std::to_string(p.x()) + ", " + std::to_string(p.y()) + ", " + std::to_string(p.z()) +
+         ")";
 }
 
 // The room's points in their documented order (cloud_io.hpp): <room>.txt's
@@ -156,8 +156,8 @@ void append_room(const fs::path& room, const CloudReadOptions& options, CloudRea
     problem = name + ": no " + name + ".txt, so its points are in Annotations order";
   } else {
     const std::string path = room_file.string();
-    PointCloud listed = parse_text_cloud(read_file_bytes(path), path, kS3disColumns, options,
-                                         room_report);
+    PointCloud listed =
+        parse_text_cloud(read_file_bytes(path), path, kS3disColumns, options, room_report);
     const ExactMatch match = match_exact_points(annotated.positions, listed.positions);
     if (match.complete()) {
       listed.labels.resize(listed.size());
@@ -194,8 +194,7 @@ void append_room(const fs::path& room, const CloudReadOptions& options, CloudRea
   cloud.positions.insert(cloud.positions.end(), ordered.positions.begin(), ordered.positions.end());
   cloud.colours.insert(cloud.colours.end(), ordered.colours.begin(), ordered.colours.end());
   cloud.labels.insert(cloud.labels.end(), ordered.labels.begin(), ordered.labels.end());
-  cloud.instances.insert(cloud.instances.end(), ordered.instances.begin(),
-                         ordered.instances.end());
+  cloud.instances.insert(cloud.instances.end(), ordered.instances.begin(), ordered.instances.end());
   report.rooms.push_back(name);
 }
 

@@ -266,7 +266,8 @@ std::vector<std::int32_t> ids_in_order_of(const std::string& room_file,
     }
   }
   std::vector<std::int32_t> ids;
-  for (const auto& p : read_cloud(room_file).positions) ids.push_back(id_at.at({p.x(), p.y(), p.z()}));
+  for (const auto& p : read_cloud(room_file).positions)
+    ids.push_back(id_at.at({p.x(), p.y(), p.z()}));
   return ids;
 }
 

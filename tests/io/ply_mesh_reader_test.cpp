@@ -61,7 +61,8 @@ TEST(PlyMeshReader, Errors) {
   const std::string face = "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
   const std::string points = "0 0 0\n1 0 0\n0 1 0\n2 2 0\n";
   expect("cloud.ply", kPlyHead + "end_header\n" + points, "a point cloud, not a mesh");
-  expect("range.ply", kPlyHead + face + points + "3 0 1 4\n", "face 0: vertex index 4 is out of range");
+  expect("range.ply", kPlyHead + face + points + "3 0 1 4\n",
+         "face 0: vertex index 4 is out of range");
   expect("flat.ply", kPlyHead + face + "0 0 0\n1 0 0\n2 0 0\n3 0 0\n3 0 1 2\n",
          "face 0: degenerate face (zero area): vertices 0, 1, 2 are collinear");
   expect("mesh.stl", "solid x\n", "(.obj or .ply");

@@ -224,8 +224,8 @@ TEST(S3disSynthetic, AreaLoadsAsOneLabelledRoom) {
     const std::string stem = entry.path().stem().string();
     const std::string class_name = stem.substr(0, stem.rfind('_'));
     const auto& names = s3dis_class_names();
-    const auto label =
-        static_cast<std::int32_t>(std::find(names.begin(), names.end(), class_name) - names.begin());
+    const auto label = static_cast<std::int32_t>(std::find(names.begin(), names.end(), class_name) -
+                                                 names.begin());
     for (const auto& p : read_cloud(entry.path().string()).positions) {
       label_at[{p.x(), p.y(), p.z()}] = label;
     }

@@ -51,7 +51,9 @@ bool have(const std::string& program) {
   return run("command -v " + program + " >/dev/null").exit_code == 0;
 }
 
-std::string quoted(const std::string& path) { return "'" + path + "'"; }
+std::string quoted(const std::string& path) {
+  return "'" + path + "'";
+}
 
 // Four points with every attribute and the per-point values the jobs write:
 // -fscan's visible_count, -poc's visible_fraction, the region growing's cluster.
@@ -79,8 +81,15 @@ std::map<std::string, std::vector<double>> expected_values() {
   const PointCloud c = cloud();
   values["label"].assign(c.labels.begin(), c.labels.end());
   values["instance"].assign(c.instances.begin(), c.instances.end());
-  for (const auto& field : extra()) values[field.name].assign(field.values.begin(), field.values.end());
+  for (const auto& field : extra())
+    values[field.name].assign(field.values.begin(), field.values.end());
   return values;
+}
+
+// A value as a reader sees it: PCD (no prefix) stores labels as uint32, as
+// PCL's PointXYZL does, so the label -1 reads as 4294967295.
+double as_stored(const std::string& name, const std::string& prefix, double value) {
+  return name == "label" && prefix.empty() && value < 0 ? 4294967295.0 : value;
 }
 
 // A mesh of two triangles in two groups, as -rgoc writes it.
@@ -182,10 +191,11 @@ TEST_F(ThirdPartyReaders, CloudCompareSeesEveryScalarFieldOfOurPly) {
     GTEST_SKIP() << "CloudCompare or xvfb-run is not installed (apt-get install cloudcompare "
                     "xvfb xauth; src/scripts/setup.sh installs them)";
   }
-  const ProgramRun cc = run("cd " + quoted(dir_.path().string()) + " && " + kTimeout +
-                     "xvfb-run -a CloudCompare -SILENT -AUTO_SAVE OFF -O cloud.ply -O "
-                     "cloud_ascii.ply -O mesh.ply -C_EXPORT_FMT ASC -ADD_HEADER -SAVE_CLOUDS "
-                     "-M_EXPORT_FMT PLY -PLY_EXPORT_FMT ASCII -SAVE_MESHES");
+  const ProgramRun cc =
+      run("cd " + quoted(dir_.path().string()) + " && " + kTimeout +
+          "xvfb-run -a CloudCompare -SILENT -AUTO_SAVE OFF -O cloud.ply -O "
+          "cloud_ascii.ply -O mesh.ply -C_EXPORT_FMT ASC -ADD_HEADER -SAVE_CLOUDS "
+          "-M_EXPORT_FMT PLY -PLY_EXPORT_FMT ASCII -SAVE_MESHES");
   ASSERT_EQ(cc.exit_code, 0) << cc.output;
   expect_cloudcompare_columns(saved_by_cloudcompare(dir_.path(), "cloud", ".asc"), "cloud.ply");
   expect_cloudcompare_columns(saved_by_cloudcompare(dir_.path(), "cloud_ascii", ".asc"),
@@ -233,11 +243,7 @@ for path in sys.argv[1:]:
       const std::vector<std::string> got = words(line);
       ASSERT_EQ(got.size(), 2 + values.size()) << line;
       for (std::size_t i = 0; i < values.size(); ++i) {
-        // PCD stores labels as uint32 (PCL's PointXYZL): -1 reads as 4294967295.
-        const double want = name == "label" && prefix.empty() && values[i] < 0
-                                ? 4294967295.0
-                                : values[i];
-        EXPECT_NEAR(std::stod(got[2 + i]), want, 1e-6) << line;
+        EXPECT_NEAR(std::stod(got[2 + i]), as_stored(name, prefix, values[i]), 1e-6) << line;
       }
     }
   }
@@ -250,16 +256,16 @@ TEST_F(ThirdPartyReaders, PclToolsSeeEveryField) {
   }
   // Our PLY through PCL's PLY reader, our binary_compressed PCD through its
   // PCD reader; both written back as ascii PCD, whose header lists the fields.
-  const ProgramRun ply = run(kTimeout + std::string("pcl_ply2pcd -format 0 ") +
-                      quoted(dir_.file("cloud.ply")) + " " + quoted(dir_.file("from_ply.pcd")));
+  const ProgramRun ply =
+      run(kTimeout + std::string("pcl_ply2pcd -format 0 ") + quoted(dir_.file("cloud.ply")) + " " +
+          quoted(dir_.file("from_ply.pcd")));
   ASSERT_EQ(ply.exit_code, 0) << ply.output;
-  const ProgramRun pcd = run(kTimeout + std::string("pcl_convert_pcd_ascii_binary ") +
-                      quoted(dir_.file("cloud.pcd")) + " " + quoted(dir_.file("from_pcd.pcd")) +
-                      " 0");
+  const ProgramRun pcd =
+      run(kTimeout + std::string("pcl_convert_pcd_ascii_binary ") + quoted(dir_.file("cloud.pcd")) +
+          " " + quoted(dir_.file("from_pcd.pcd")) + " 0");
   ASSERT_EQ(pcd.exit_code, 0) << pcd.output;
-  for (const auto& [file, prefix] :
-       std::vector<std::pair<std::string, std::string>>{{"from_ply.pcd", "scalar_"},
-                                                        {"from_pcd.pcd", ""}}) {
+  for (const auto& [file, prefix] : std::vector<std::pair<std::string, std::string>>{
+           {"from_ply.pcd", "scalar_"}, {"from_pcd.pcd", ""}}) {
     const std::vector<std::string> fields = words(line_after(dir_.file(file), "FIELDS "));
     // The data rows, to check the values too.
     std::istringstream in(testing::read_bytes(dir_.file(file)));
@@ -275,10 +281,8 @@ TEST_F(ThirdPartyReaders, PclToolsSeeEveryField) {
       ASSERT_NE(at, fields.end()) << file << ": PCL shows no field " << prefix + name;
       const auto column = static_cast<std::size_t>(at - fields.begin());
       for (std::size_t i = 0; i < rows.size(); ++i) {
-        const double want = name == "label" && prefix.empty() && values[i] < 0
-                                ? 4294967295.0
-                                : values[i];
-        EXPECT_NEAR(std::stod(rows[i].at(column)), want, 1e-6) << file << " " << name;
+        EXPECT_NEAR(std::stod(rows[i].at(column)), as_stored(name, prefix, values[i]), 1e-6)
+            << file << " " << name;
       }
     }
   }
