@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <numeric>
 #include <string>
 #include <vector>
 
@@ -148,6 +149,7 @@ void append_room(const fs::path& room, const CloudReadOptions& options, CloudRea
   CloudReadReport annotation_report;
   PointCloud annotated = annotated_points(room, options, annotation_report, next_instance);
   PointCloud ordered;
+  std::vector<std::size_t> annotation_rank;  // per ordered point, its place in Annotations order
   CloudReadReport room_report;
   std::string problem;
   const fs::path room_file = room / (name + ".txt");
@@ -167,6 +169,7 @@ void append_room(const fs::path& room, const CloudReadOptions& options, CloudRea
         listed.instances[i] = annotated.instances[match.source_of[i]];
       }
       ordered = std::move(listed);
+      annotation_rank = match.source_of;
     } else {
       problem = name + ": " + name + ".txt holds " + std::to_string(listed.size()) +
                 " points and Annotations " + std::to_string(annotated.size());
@@ -187,10 +190,14 @@ void append_room(const fs::path& room, const CloudReadOptions& options, CloudRea
     report.skipped_lines += room_report.skipped_lines;
   } else {
     ordered = std::move(annotated);
+    annotation_rank.resize(ordered.size());
+    std::iota(annotation_rank.begin(), annotation_rank.end(), std::size_t{0});
     report.dropped_nan += annotation_report.dropped_nan;
     report.skipped_lines += annotation_report.skipped_lines;
     report.unverified_order.push_back(problem);
   }
+  for (const std::size_t rank : annotation_rank)
+    report.annotation_order.push_back(cloud.size() + rank);
   cloud.positions.insert(cloud.positions.end(), ordered.positions.begin(), ordered.positions.end());
   cloud.colours.insert(cloud.colours.end(), ordered.colours.begin(), ordered.colours.end());
   cloud.labels.insert(cloud.labels.end(), ordered.labels.begin(), ordered.labels.end());

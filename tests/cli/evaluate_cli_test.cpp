@@ -273,7 +273,7 @@ std::vector<std::int32_t> ids_in_order_of(const std::string& room_file,
 
 // The labels a user's network gives when it reads office_1.txt and is always
 // right: mIoU 1. The same labels in Annotations order (what -eval used to
-// assume) are misaligned and score far lower.
+// assume) would score 0.10: they are recognised as misaligned and refused.
 TEST(EvaluateCli, LabelFileFollowsTheRoomFile) {
   const TempDir dir;
   const std::vector<std::int32_t> ids = ids_in_order_of(kRoomPath + "/office_1.txt", kRoomPath);
@@ -296,9 +296,22 @@ TEST(EvaluateCli, LabelFileFollowsTheRoomFile) {
                             kTable.at(stem.substr(0, stem.rfind('_'))));
   }
   write_label_file(dir.file("annotation_order.labels"), annotation_order);
-  const Json::Value misaligned =
-      run_json("-eval " + kRoom + " --prediction '" + dir.file("annotation_order.labels") + "'");
-  EXPECT_LT(misaligned["miou"].asDouble(), 0.5);
+  const CliRun misaligned =
+      run_cli("-eval " + kRoom + " --prediction '" + dir.file("annotation_order.labels") + "' -q");
+  EXPECT_EQ(misaligned.exit_code, 2);
+  EXPECT_NE(misaligned.err.find("on 100.0% if read in Annotations order"), std::string::npos)
+      << misaligned.err;
+  EXPECT_NE(misaligned.err.find("Write them in the order of <room>.txt"), std::string::npos)
+      << misaligned.err;
+
+  // A poor prediction in the right order is scored, not refused: every chair
+  // called a table still agrees best in its own order.
+  std::vector<std::int32_t> poor = ids;
+  for (auto& id : poor) id = id == kChair ? kTableId : id;
+  write_label_file(dir.file("poor.labels"), poor);
+  EXPECT_LT(run_json("-eval " + kRoom + " --prediction '" + dir.file("poor.labels") + "'")["miou"]
+                .asDouble(),
+            1.0);
 }
 
 // Shuffled room file and shuffled annotation files: the labels still follow

@@ -50,6 +50,11 @@ struct Prediction {
 struct SceneInput {
   std::string ground_truth_name;
   PointCloud ground_truth;
+  // For an S3DIS ground truth, each point's place in Annotations order
+  // (CloudReadReport::annotation_order): a label file that agrees with the
+  // ground truth far better in that order than in the points' own is refused
+  // as misaligned. Empty: no other order to suspect.
+  std::vector<std::size_t> annotation_order;
   std::string prediction_name;
   Prediction prediction;
 };

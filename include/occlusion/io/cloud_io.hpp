@@ -62,6 +62,10 @@ struct CloudReadReport {
   // missing or holds other points, one sentence each saying which and why.
   // Labels given by point order cannot be checked against such a room.
   std::vector<std::string> unverified_order;
+  // S3DIS folders: for each point read, its place in Annotations order (rooms
+  // in natural order, each room's annotation files in natural order), so that
+  // labels given in that order can be recognised. Empty for files.
+  std::vector<std::size_t> annotation_order;
   // PLY and PCD properties other than those the cloud holds, in file order,
   // one value per kept point (points dropped for NaN are dropped here too).
   std::vector<ScalarField> extra_fields;
