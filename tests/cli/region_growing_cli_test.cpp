@@ -168,6 +168,13 @@ TEST(RegionGrowingCli, SmallSceneGetsTheMinimumSampleBudget) {
   const double density = sampling["samples_per_unit_area"].asDouble();
   EXPECT_NEAR(density * json["total_area"].asDouble(), 10000.0, 0.01 * 10000);
   EXPECT_LT(json["occlusion_level"].asDouble(), 0.01);  // a closed empty room hides nothing
+  EXPECT_EQ(json["parameters"]["min_samples"].asUInt64(), 10000u);
+
+  // --min-samples 0 keeps the density asked for: about one sample per face.
+  const Json::Value unbudgeted = run_json("-rgoc '" + dir.file("box.txt") + "' --min-samples 0");
+  EXPECT_FALSE(unbudgeted["mesh"]["sampling"]["raised"].asBool());
+  EXPECT_EQ(unbudgeted["parameters"]["min_samples"].asUInt64(), 0u);
+  EXPECT_LT(unbudgeted["mesh"]["samples"].asUInt64(), 2 * unbudgeted["mesh"]["faces"].asUInt64());
 
   const std::string viewpoints = viewpoint_options(json);
   std::ostringstream moc_density;
