@@ -1,5 +1,6 @@
 #include "occlusion/analysis/mesh_sampling.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -18,13 +19,46 @@ namespace {
 // Samples between two cancel checks: a few milliseconds of work.
 constexpr std::size_t kSamplesPerBlock = std::size_t{1} << 16;
 
-}  // namespace
-
-MeshSamples sample_mesh(const TriangleMesh& mesh, double samples_per_unit_area, std::uint64_t seed,
-                        const Progress& progress) {
+void check_density(double samples_per_unit_area) {
   if (!std::isfinite(samples_per_unit_area) || samples_per_unit_area <= 0.0) {
     throw std::invalid_argument("samples_per_unit_area must be a finite number > 0");
   }
+}
+
+}  // namespace
+
+std::size_t total_samples(const TriangleMesh& mesh, double samples_per_unit_area) {
+  std::size_t total = 0;
+  for (std::size_t f = 0; f < mesh.face_count(); ++f) {
+    total += samples_for_area(mesh.face_area(f), samples_per_unit_area);
+  }
+  return total;
+}
+
+double density_for_min_samples(const TriangleMesh& mesh, double samples_per_unit_area,
+                               std::size_t min_samples) {
+  check_density(samples_per_unit_area);
+  if (total_samples(mesh, samples_per_unit_area) >= min_samples) return samples_per_unit_area;
+  double area = 0.0;
+  for (std::size_t f = 0; f < mesh.face_count(); ++f) area += mesh.face_area(f);
+  if (!(area > 0.0)) return samples_per_unit_area;  // no area to sample more densely
+  // Each face gets at least round(area_f * d) >= area_f * d - 1/2 samples, so
+  // this density is enough; the count only grows with the density, so
+  // bisection finds the smallest one.
+  double lo = samples_per_unit_area;
+  double hi = std::max(
+      lo, (static_cast<double>(min_samples) + 0.5 * static_cast<double>(mesh.face_count()) + 1.0) /
+              area);
+  for (int step = 0; step < 200 && hi - lo > 1e-9 * hi; ++step) {
+    const double mid = 0.5 * (lo + hi);
+    (total_samples(mesh, mid) >= min_samples ? hi : lo) = mid;
+  }
+  return hi;
+}
+
+MeshSamples sample_mesh(const TriangleMesh& mesh, double samples_per_unit_area, std::uint64_t seed,
+                        const Progress& progress) {
+  check_density(samples_per_unit_area);
   const std::size_t face_count = mesh.face_count();
   MeshSamples samples;
   samples.first.resize(face_count + 1);

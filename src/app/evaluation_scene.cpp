@@ -10,6 +10,7 @@
 #include "occlusion/analysis/label_transfer.hpp"
 #include "occlusion/app/errors.hpp"
 #include "occlusion/app/evaluate_job.hpp"
+#include "occlusion/core/exact_match.hpp"
 #include "occlusion/io/cloud_io.hpp"
 #include "occlusion/io/input_error.hpp"
 #include "occlusion/io/label_file.hpp"
@@ -54,6 +55,49 @@ std::vector<std::int32_t> prediction_ids(const SceneInput& scene, const ClassMap
   return ids;
 }
 
+// The fraction of scored ground-truth points (labelled, not ignored) that
+// predicted[at(i)] gets right, point i taking the label at(i).
+template <typename At>
+double agreement(const std::vector<std::int32_t>& truth, const std::vector<std::int32_t>& predicted,
+                 std::int32_t ignore_id, At at) {
+  std::size_t scored = 0;
+  std::size_t right = 0;
+  for (std::size_t i = 0; i < truth.size(); ++i) {
+    if (truth[i] < 0 || truth[i] == ignore_id) continue;
+    ++scored;
+    right += predicted[at(i)] == truth[i] ? 1 : 0;
+  }
+  return scored == 0 ? 0.0 : static_cast<double>(right) / static_cast<double>(scored);
+}
+
+// A label file written in Annotations order for an S3DIS room, whose points
+// follow <room>.txt, scores like noise while being right: the misalignment of
+// issue 12. Where both orders exist, a file that agrees with the ground truth
+// far better in Annotations order (over half the points, and 25 points more in
+// a hundred) is refused; a real prediction in the right order cannot do that,
+// since its labels would then have to match two unrelated pairings at once.
+void refuse_annotation_order(const SceneInput& scene, const std::vector<std::int32_t>& truth,
+                             const std::vector<std::int32_t>& predicted, std::int32_t ignore_id) {
+  const std::vector<std::size_t>& order = scene.annotation_order;
+  if (order.size() != truth.size()) return;
+  bool differs = false;
+  for (std::size_t i = 0; i < order.size() && !differs; ++i) differs = order[i] != i;
+  if (!differs) return;
+  const double as_given = agreement(truth, predicted, ignore_id, [](std::size_t i) { return i; });
+  const double as_annotations =
+      agreement(truth, predicted, ignore_id, [&](std::size_t i) { return order[i]; });
+  if (as_annotations >= 0.5 && as_annotations >= as_given + 0.25) {
+    throw UsageError(
+        scene.prediction_name + ": its labels match " + scene.ground_truth_name + " on " +
+        job::format_number("%.1f%%", 100.0 * as_given) + " of the points in the order labels " +
+        "follow (<room>.txt's, docs/formats.md) but on " +
+        job::format_number("%.1f%%", 100.0 * as_annotations) +
+        " if read in Annotations order: they were written in the annotation files' order. "
+        "Write them in the order of <room>.txt, or give the prediction as a cloud with "
+        "coordinates (x y z label)");
+  }
+}
+
 bool same_points(const PointCloud& ground_truth, const Prediction& prediction) {
   return prediction.positions.size() == ground_truth.size() &&
          std::equal(prediction.positions.begin(), prediction.positions.end(),
@@ -81,16 +125,25 @@ SceneEvaluation evaluate_scene(const SceneInput& scene, const ClassMapping& mapp
                            std::to_string(truth.size()) + " points of " + scene.ground_truth_name +
                            " (a label file has one label per ground-truth point, in order)");
     }
+    refuse_annotation_order(scene, truth, predicted, mapping.ignore_id());
     result.transfer = "direct";
   } else if (same_points(scene.ground_truth, prediction)) {
     result.transfer = "direct";
-  } else {
-    if (max_distance <= 0.0) {
+  } else if (max_distance <= 0.0) {
+    // The same points in another order are paired by their coordinates.
+    const ExactMatch match = match_exact_points(prediction.positions, scene.ground_truth.positions);
+    if (!match.complete()) {
       throw UsageError(scene.prediction_name + ": its points are not those of " +
-                       scene.ground_truth_name +
-                       "; --max-distance 0 needs the same points in the same order (give a "
-                       "distance > 0 to transfer labels by nearest neighbour)");
+                       scene.ground_truth_name + " (" + std::to_string(match.unmatched_targets) +
+                       " ground-truth points have no prediction point at the same coordinates); "
+                       "--max-distance 0 needs the same points (give a distance > 0 to transfer "
+                       "labels by nearest neighbour)");
     }
+    std::vector<std::int32_t> paired(match.source_of.size());
+    for (std::size_t i = 0; i < paired.size(); ++i) paired[i] = predicted[match.source_of[i]];
+    predicted = std::move(paired);
+    result.transfer = "matched_by_position";
+  } else {
     LabelTransferOptions options;
     options.max_distance = max_distance;
     options.threads = threads;
@@ -188,6 +241,33 @@ Prediction load_prediction(const std::string& path, bool skip_bad_lines) {
   return prediction;
 }
 
+namespace {
+
+// A label file is paired with the ground truth by point order alone, so the
+// order must be one the user can know: refused when reading dropped points
+// (the lines no longer line up) or when an S3DIS room's order could not be
+// checked against its <room>.txt (the labels may follow that file or the
+// Annotations, and nothing tells which).
+void check_label_order(const std::string& prediction, const std::string& ground_truth,
+                       const LoadedCloud& truth) {
+  if (truth.dropped_nan + truth.skipped_lines > 0) {
+    throw InputError(prediction, 0,
+                     "labels are given by point order, but reading " + ground_truth + " dropped " +
+                         std::to_string(truth.dropped_nan + truth.skipped_lines) +
+                         " points (NaN or skipped lines), so they no longer line up");
+  }
+  if (!truth.unverified_order.empty()) {
+    throw UsageError(
+        prediction + ": a label file is paired with " + ground_truth +
+        " by point order, and that order cannot be verified (" + joined(truth.unverified_order) +
+        "). Give each room a <room>.txt holding exactly its annotated points in the order of "
+        "your labels, or give the prediction as a cloud with coordinates (x y z label) so "
+        "points are paired by position");
+  }
+}
+
+}  // namespace
+
 LoadedScene load_scene(const std::string& ground_truth, const std::string& prediction,
                        bool skip_bad_lines) {
   LoadedScene scene;
@@ -197,11 +277,9 @@ LoadedScene load_scene(const std::string& ground_truth, const std::string& predi
   scene.input.prediction_name = prediction;
   scene.dropped_nan = truth.dropped_nan;
   scene.skipped_lines = truth.skipped_lines;
-  if (is_label_file(prediction) && truth.dropped_nan + truth.skipped_lines > 0) {
-    throw InputError(prediction, 0,
-                     "labels are given by point order, but reading " + ground_truth + " dropped " +
-                         std::to_string(truth.dropped_nan + truth.skipped_lines) +
-                         " points (NaN or skipped lines), so they no longer line up");
+  if (is_label_file(prediction)) {
+    check_label_order(prediction, ground_truth, truth);
+    scene.input.annotation_order = std::move(truth.annotation_order);
   }
   scene.input.prediction = load_prediction(prediction, skip_bad_lines);
   return scene;

@@ -182,6 +182,8 @@ LoadedCloud load_cloud(const std::string& path, bool skip_bad_lines) {
   loaded.dropped_nan = report.dropped_nan;
   loaded.skipped_lines = report.skipped_lines;
   loaded.rooms = report.rooms;
+  loaded.unverified_order = report.unverified_order;
+  loaded.annotation_order = std::move(report.annotation_order);
   return loaded;
 }
 

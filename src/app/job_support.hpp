@@ -68,6 +68,8 @@ struct LoadedCloud {
   std::size_t dropped_nan = 0;
   std::size_t skipped_lines = 0;
   std::vector<std::string> rooms;
+  std::vector<std::string> unverified_order;  // CloudReadReport::unverified_order
+  std::vector<std::size_t> annotation_order;  // CloudReadReport::annotation_order
 };
 LoadedCloud load_cloud(const std::string& path, bool skip_bad_lines);
 

@@ -12,7 +12,7 @@
 #include "occlusion/app/memory_budget.hpp"
 #include "occlusion/io/atomic_file.hpp"
 #include "occlusion/io/csv_file.hpp"
-#include "occlusion/io/obj_reader.hpp"
+#include "occlusion/io/mesh_reader.hpp"
 #include "occlusion/io/ply_mesh_writer.hpp"
 
 namespace occlusion {
@@ -48,7 +48,7 @@ MeshOcclusionReport run_mesh_occlusion(const MeshOcclusionRequest& request,
   report.request = request;
 
   progress("loading", 0.0);
-  const TriangleMesh mesh = read_obj(request.path);
+  const TriangleMesh mesh = read_mesh(request.path);
   report.load_seconds = job::seconds_since(start);
   progress.check_cancel();
 

@@ -8,7 +8,7 @@ namespace occlusion {
 const Keys<MeshOcclusionRequest>& mesh_occlusion_keys() {
   using R = MeshOcclusionRequest;
   static const Keys<R> keys = join<R>({
-      {input_key(&R::path, "triangle mesh: Wavefront OBJ")},
+      {input_key(&R::path, "triangle mesh: Wavefront OBJ or PLY (io/mesh_reader.hpp)")},
       viewpoint_keys(&R::viewpoints),
       {samples_per_unit_area_key(&R::samples_per_unit_area),
        octree_resolution_key(&R::octree_resolution),

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "job_support.hpp"
+#include "occlusion/analysis/mesh_sampling.hpp"
 #include "occlusion/app/errors.hpp"
 #include "occlusion/app/json_output.hpp"
 #include "occlusion/app/memory_budget.hpp"
@@ -77,7 +78,9 @@ RegionGrowingReport run_region_growing_occlusion(const RegionGrowingRequest& req
                                             viewpoints.positions.size()),
                       request.max_memory_mb);
   MeshOcclusionOptions options;
-  options.samples_per_unit_area = request.samples_per_unit_area;
+  report.samples_per_unit_area = density_for_min_samples(
+      report.estimate.mesh, request.samples_per_unit_area, request.min_samples);
+  options.samples_per_unit_area = report.samples_per_unit_area;
   options.octree.min_cell_size = static_cast<float>(request.octree_resolution);
   options.octree.enable_acceleration = request.enable_acceleration;
   options.seed = request.seed;
@@ -110,6 +113,15 @@ Json::Value to_json(const RegionGrowingReport& report) {
   mesh["vertices"] = Json::UInt64(e.mesh.vertices.size());
   mesh["faces"] = Json::UInt64(r.faces);
   mesh["samples"] = Json::UInt64(r.samples);
+  // The sample budget: the density asked for, the minimum count, and the
+  // density used (raised when the asked one gave fewer samples).
+  Json::Value sampling(Json::objectValue);
+  sampling["requested_samples_per_unit_area"] = q.samples_per_unit_area;
+  sampling["min_samples"] = Json::UInt64(q.min_samples);
+  sampling["samples_per_unit_area"] = report.samples_per_unit_area;
+  sampling["samples"] = Json::UInt64(r.samples);
+  sampling["raised"] = report.samples_per_unit_area > q.samples_per_unit_area;
+  mesh["sampling"] = sampling;
   mesh["rays"] = Json::UInt64(r.rays);
   json["mesh"] = mesh;
 

@@ -19,6 +19,11 @@ const Keys<RegionGrowingRequest>& region_growing_keys() {
       viewpoint_keys(&R::viewpoints),
       mount(estimation_keys(), &R::estimation),
       {samples_per_unit_area_key(&R::samples_per_unit_area),
+       key("min_samples", &R::min_samples)
+           .range(0, 1e12)
+           .metavar("N")
+           .doc("the sampling density is raised until the mesh gets at least N samples (0: "
+                "never); the JSON's mesh.sampling reports the budget"),
        octree_resolution_key(&R::octree_resolution),
        enable_acceleration_key(&R::enable_acceleration), seed_key(&R::seed),
        threads_key(&R::threads), skip_bad_lines_key(&R::skip_bad_lines),

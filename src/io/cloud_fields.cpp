@@ -9,6 +9,14 @@
 
 namespace occlusion::detail {
 
+std::string_view without_scalar_prefix(std::string_view name) {
+  if (name.size() > kPlyScalarPrefix.size() &&
+      name.substr(0, kPlyScalarPrefix.size()) == kPlyScalarPrefix) {
+    name.remove_prefix(kPlyScalarPrefix.size());
+  }
+  return name;
+}
+
 bool is_label_name(std::string_view name) {
   return name == "label" || name == "class";
 }

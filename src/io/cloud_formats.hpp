@@ -36,6 +36,15 @@ void write_pcd(const std::string& path, const PointCloud& cloud,
 void write_ply(const std::string& path, const PointCloud& cloud,
                const std::vector<ScalarField>& extra, bool binary);
 
+// CloudCompare (2.11, in its command-line mode and by default in its PLY
+// dialog) loads a PLY vertex property as a scalar field only when its name
+// contains "SCAL" (it strips a leading `scalar_`, the prefix it writes itself),
+// or names an intensity. So our PLY writers store every per-point value as
+// `scalar_<name>`, and the PLY readers take `scalar_<name>` as `<name>`;
+// Open3D and PCL read any property name, and PCD keeps the plain names.
+inline constexpr std::string_view kPlyScalarPrefix = "scalar_";
+std::string_view without_scalar_prefix(std::string_view name);
+
 // Property names that mean a semantic label or an instance id, in the files
 // other tools write; the writers use the first of each.
 bool is_label_name(std::string_view name);

@@ -12,14 +12,13 @@
 #include <vector>
 
 #include "file_bytes.hpp"
+#include "mesh_checks.hpp"
 #include "occlusion/io/input_error.hpp"
 #include "text_tokens.hpp"
 
 namespace occlusion {
 namespace {
 
-// Relative to the squared bounding-box diagonal, so the test does not depend on units.
-constexpr double kDegenerateAreaScale = 1e-12;
 constexpr std::uint32_t kUnresolvedGroup = std::numeric_limits<std::uint32_t>::max();
 
 using detail::is_blank;
@@ -205,31 +204,8 @@ class ObjParser {
   }
 
   void check_no_degenerate_faces() const {
-    Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
-    Eigen::Vector3d hi = -lo;
-    for (const auto& face : mesh_.faces) {
-      for (const std::uint32_t index : face) {
-        lo = lo.cwiseMin(mesh_.vertices[index]);
-        hi = hi.cwiseMax(mesh_.vertices[index]);
-      }
-    }
-    const double min_area = kDegenerateAreaScale * (hi - lo).squaredNorm();
-    for (std::size_t f = 0; f < mesh_.faces.size(); ++f) {
-      const auto& [a, b, c] = mesh_.faces[f];
-      if (a == b || b == c || a == c) {
-        const std::uint32_t repeated = (a == b || a == c) ? a : b;
-        fail(face_line_[f], "degenerate face (zero area): vertex " +
-                                std::to_string(std::size_t{repeated} + 1) +
-                                " is used twice in one triangle");
-      }
-      const Eigen::Vector3d& p = mesh_.vertices[a];
-      const double area = 0.5 * (mesh_.vertices[b] - p).cross(mesh_.vertices[c] - p).norm();
-      if (area <= min_area) {
-        fail(face_line_[f], "degenerate face (zero area): vertices " +
-                                std::to_string(std::size_t{a} + 1) + ", " +
-                                std::to_string(std::size_t{b} + 1) + ", " +
-                                std::to_string(std::size_t{c} + 1) + " are collinear");
-      }
+    if (const auto degenerate = detail::find_degenerate_face(mesh_, 1)) {
+      fail(face_line_[degenerate->face], degenerate->reason);
     }
   }
 

@@ -16,6 +16,7 @@
 #include "cloud_formats.hpp"
 #include "file_bytes.hpp"
 #include "occlusion/io/input_error.hpp"
+#include "ply_body.hpp"
 #include "ply_header.hpp"
 #include "text_tokens.hpp"
 
@@ -34,8 +35,10 @@ Role role_of(const PlyProperty& property) {
   if (name == "red" || name == "r" || name == "diffuse_red") return Role::kRed;
   if (name == "green" || name == "g" || name == "diffuse_green") return Role::kGreen;
   if (name == "blue" || name == "b" || name == "diffuse_blue") return Role::kBlue;
-  if (is_label_name(name)) return Role::kLabel;
-  if (is_instance_name(name)) return Role::kInstance;
+  // Per-point values may carry CloudCompare's scalar_ prefix (cloud_formats.hpp).
+  const std::string_view value_name = without_scalar_prefix(name);
+  if (is_label_name(value_name)) return Role::kLabel;
+  if (is_instance_name(value_name)) return Role::kInstance;
   return Role::kExtra;
 }
 
@@ -62,7 +65,7 @@ const char* role_name(Role role) {
   }
 }
 
-class PlyCloudReader {
+class PlyCloudReader : public PlySink {
  public:
   PlyCloudReader(std::string_view bytes, const std::string& path, CloudReadReport& report)
       : bytes_(bytes), path_(path), report_(report) {}
@@ -71,11 +74,8 @@ class PlyCloudReader {
     header_ = parse_header(bytes_, path_);
     assign_roles();
     cloud_.class_names = header_.class_names;
-    if (header_.encoding == PlyEncoding::kAscii) {
-      read_ascii_body();
-    } else {
-      read_binary_body();
-    }
+    extra_values_.assign(extra_.size(), 0.0f);
+    read_ply_body(bytes_, path_, header_, *this);
     for (std::size_t f = 0; f < extra_.size(); ++f) {
       report_.extra_fields.push_back(std::move(extra_[f]));
     }
@@ -83,6 +83,17 @@ class PlyCloudReader {
   }
 
  private:
+  bool wants(std::size_t e) const override { return e == vertex_element_; }
+
+  std::string take(std::size_t, std::size_t p, std::size_t, double value) override {
+    return take(p, value);
+  }
+
+  std::string end_instance(std::size_t) override {
+    commit_vertex();
+    return "";
+  }
+
   void assign_roles() {
     for (std::size_t e = 0; e < header_.elements.size(); ++e) {
       if (header_.elements[e].name == "vertex") {
@@ -99,7 +110,8 @@ class PlyCloudReader {
       extra_index_.push_back(kNone);
       if (role == Role::kExtra) {
         extra_index_.back() = extra_.size();
-        extra_.push_back({property.name, {}, is_integer(property.type)});
+        extra_.push_back(
+            {std::string(without_scalar_prefix(property.name)), {}, is_integer(property.type)});
         continue;
       }
       if (role == Role::kSkip) continue;
@@ -206,235 +218,6 @@ class PlyCloudReader {
     for (std::size_t f = 0; f < extra_.size(); ++f) extra_[f].values.push_back(extra_values_[f]);
   }
 
-  // --- ascii: one element instance per line -------------------------------
-
-  void read_ascii_body() {
-    extra_values_.assign(extra_.size(), 0.0f);
-    Lines lines(bytes_.substr(header_.body_offset), header_.body_line);
-    std::string_view line;
-    for (std::size_t e = 0; e < header_.elements.size(); ++e) {
-      const PlyElement& element = header_.elements[e];
-      for (std::size_t i = 0; i < element.count; ++i) {
-        do {
-          if (!lines.next(line)) {
-            throw InputError(path_, lines.number(),
-                             "the file ends after " + std::to_string(i) + " of the " +
-                                 std::to_string(element.count) + " " + element.name +
-                                 " lines the header declares");
-          }
-        } while (is_blank_line(line));
-        read_ascii_instance(element, e == vertex_element_, line, lines.number());
-      }
-    }
-    while (lines.next(line)) {
-      if (!is_blank_line(line)) {
-        throw InputError(path_, lines.number(),
-                         "data after the last element (the header declares " + counts_text() + ")");
-      }
-    }
-  }
-
-  void read_ascii_instance(const PlyElement& element, bool is_vertex, std::string_view line,
-                           std::size_t number) {
-    Tokens tokens(line);
-    for (std::size_t p = 0; p < element.properties.size(); ++p) {
-      const PlyProperty& property = element.properties[p];
-      std::size_t items = 1;
-      if (property.is_list) {
-        const double count = ascii_value(tokens, property.count_type, element, property, number);
-        if (count < 0) throw InputError(path_, number, "negative list length");
-        items = static_cast<std::size_t>(count);
-      }
-      for (std::size_t k = 0; k < items; ++k) {
-        const double value = ascii_value(tokens, property.type, element, property, number);
-        if (is_vertex && !property.is_list) {
-          const std::string problem = take(p, value);
-          if (!problem.empty()) throw InputError(path_, number, problem);
-        }
-      }
-    }
-    if (!tokens.next().empty()) {
-      throw InputError(path_, number,
-                       "more values than the " + element.name + " element's " +
-                           std::to_string(element.properties.size()) + " properties");
-    }
-    if (is_vertex) commit_vertex();
-  }
-
-  double ascii_value(Tokens& tokens, PlyType type, const PlyElement& element,
-                     const PlyProperty& property, std::size_t number) {
-    const std::string_view token = tokens.next();
-    if (token.empty()) {
-      throw InputError(
-          path_, number,
-          "the line ends before " + element.name + " property '" + property.name + "'");
-    }
-    double value = 0;
-    if (is_integer(type)) {
-      std::int64_t whole = 0;
-      double lo = 0;
-      double hi = 0;
-      integer_range(type, lo, hi);
-      if (!parse_whole_number(token, whole) || static_cast<double>(whole) < lo ||
-          static_cast<double>(whole) > hi) {
-        throw InputError(path_, number,
-                         "property '" + property.name + "' value " + quoted(token) +
-                             " is not an integer of its type");
-      }
-      value = static_cast<double>(whole);
-    } else if (!parse_double(token, value)) {
-      throw InputError(
-          path_, number,
-          "property '" + property.name + "' value " + quoted(token) + " is not a number");
-    }
-    return value;
-  }
-
-  // --- binary ------------------------------------------------------------
-
-  void read_binary_body() {
-    extra_values_.assign(extra_.size(), 0.0f);
-    big_endian_ = header_.encoding == PlyEncoding::kBigEndian;
-    std::size_t at = header_.body_offset;
-    for (std::size_t e = 0; e < header_.elements.size(); ++e) {
-      const PlyElement& element = header_.elements[e];
-      check_fits(element, at);
-      if (e != vertex_element_ && fixed_size(element)) {
-        at += element.count * record_size(element);
-        continue;
-      }
-      for (std::size_t i = 0; i < element.count; ++i) {
-        read_binary_instance(element, e == vertex_element_, i, at);
-      }
-    }
-    if (at != bytes_.size()) {
-      throw InputError(path_, 0,
-                       std::to_string(bytes_.size() - at) +
-                           " bytes after the end of the data at byte " + std::to_string(at) +
-                           " (the header declares " + counts_text() + ")");
-    }
-  }
-
-  static bool fixed_size(const PlyElement& element) {
-    for (const PlyProperty& property : element.properties) {
-      if (property.is_list) return false;
-    }
-    return true;
-  }
-
-  // Bytes of one instance, counting each list as empty: a lower bound.
-  static std::size_t record_size(const PlyElement& element) {
-    std::size_t size = 0;
-    for (const PlyProperty& property : element.properties) {
-      size += type_size(property.is_list ? property.count_type : property.type);
-    }
-    return size;
-  }
-
-  // Reports truncation before reading (or allocating for) an element whose
-  // instances cannot all fit in what is left of the file.
-  void check_fits(const PlyElement& element, std::size_t at) const {
-    const std::size_t size = record_size(element);
-    if (size == 0) return;
-    const std::size_t left = bytes_.size() - at;
-    if (element.count <= left / size) return;
-    throw InputError(path_, 0,
-                     "truncated: the file ends at byte " + std::to_string(bytes_.size()) +
-                         ", after " + std::to_string(left / size) + " of the " +
-                         std::to_string(element.count) + " " + element.name +
-                         " records the header declares (" + std::to_string(size) +
-                         " bytes each from byte " + std::to_string(at) + ")");
-  }
-
-  void read_binary_instance(const PlyElement& element, bool is_vertex, std::size_t index,
-                            std::size_t& at) {
-    for (std::size_t p = 0; p < element.properties.size(); ++p) {
-      const PlyProperty& property = element.properties[p];
-      if (property.is_list) {
-        const double count = binary_value(property.count_type, element, property, index, at);
-        if (count < 0) {
-          throw InputError(path_, 0,
-                           "negative list length at byte " +
-                               std::to_string(at - type_size(property.count_type)));
-        }
-        const std::size_t item = type_size(property.type);
-        const auto items = static_cast<std::size_t>(count);
-        if (items > (bytes_.size() - at) / item) truncated(element, property, index, at);
-        at += items * item;
-        continue;
-      }
-      const std::size_t start = at;
-      const double value = binary_value(property.type, element, property, index, at);
-      if (is_vertex) {
-        const std::string problem = take(p, value);
-        if (!problem.empty()) {
-          throw InputError(path_, 0,
-                           "at byte " + std::to_string(start) + " (vertex " +
-                               std::to_string(index) + "): " + problem);
-        }
-      }
-    }
-    if (is_vertex) commit_vertex();
-  }
-
-  [[noreturn]] void truncated(const PlyElement& element, const PlyProperty& property,
-                              std::size_t index, std::size_t at) const {
-    throw InputError(path_, 0,
-                     "truncated: the file ends at byte " + std::to_string(bytes_.size()) +
-                         ", inside " + element.name + " " + std::to_string(index) + " of the " +
-                         std::to_string(element.count) + " the header declares (property '" +
-                         property.name + "' at byte " + std::to_string(at) + ")");
-  }
-
-  double binary_value(PlyType type, const PlyElement& element, const PlyProperty& property,
-                      std::size_t index, std::size_t& at) const {
-    const std::size_t size = type_size(type);
-    if (size > bytes_.size() - at) truncated(element, property, index, at);
-    const auto* data = reinterpret_cast<const unsigned char*>(bytes_.data() + at);
-    at += size;
-    // Assembling the bits by shifts reads either byte order on any host.
-    std::uint64_t bits = 0;
-    for (std::size_t k = 0; k < size; ++k) {
-      const std::size_t shift = big_endian_ ? 8 * (size - 1 - k) : 8 * k;
-      bits |= std::uint64_t{data[k]} << shift;
-    }
-    switch (type) {
-      case PlyType::kInt8:
-        return static_cast<std::int8_t>(bits);
-      case PlyType::kUint8:
-        return static_cast<double>(bits);
-      case PlyType::kInt16:
-        return static_cast<std::int16_t>(bits);
-      case PlyType::kUint16:
-        return static_cast<double>(bits);
-      case PlyType::kInt32:
-        return static_cast<std::int32_t>(bits);
-      case PlyType::kUint32:
-        return static_cast<double>(bits);
-      case PlyType::kFloat32: {
-        const auto narrow = static_cast<std::uint32_t>(bits);
-        float value;
-        std::memcpy(&value, &narrow, sizeof value);
-        return value;
-      }
-      case PlyType::kFloat64: {
-        double value;
-        std::memcpy(&value, &bits, sizeof value);
-        return value;
-      }
-    }
-    return 0;
-  }
-
-  std::string counts_text() const {
-    std::string text;
-    for (const PlyElement& element : header_.elements) {
-      if (!text.empty()) text += ", ";
-      text += std::to_string(element.count) + " " + element.name;
-    }
-    return text;
-  }
-
   static constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
 
   std::string_view bytes_;
@@ -448,7 +231,6 @@ class PlyCloudReader {
   bool has_colours_ = false;
   bool has_labels_ = false;
   bool has_instances_ = false;
-  bool big_endian_ = false;
   PointCloud cloud_;
 
   // The vertex being read, committed once all its properties are checked.

@@ -24,10 +24,12 @@ std::string header(const PointCloud& cloud, const std::vector<ScalarField>& extr
       << '\n'
       << "property float x\nproperty float y\nproperty float z\n";
   if (cloud.has_colours()) out << "property uchar red\nproperty uchar green\nproperty uchar blue\n";
-  if (cloud.has_labels()) out << "property int label\n";
-  if (cloud.has_instances()) out << "property int instance\n";
+  // The scalar_ prefix makes CloudCompare load them (cloud_formats.hpp).
+  if (cloud.has_labels()) out << "property int " << kPlyScalarPrefix << "label\n";
+  if (cloud.has_instances()) out << "property int " << kPlyScalarPrefix << "instance\n";
   for (const ScalarField& field : extra) {
-    out << "property " << (field.integer ? "int " : "float ") << field.name << '\n';
+    out << "property " << (field.integer ? "int " : "float ") << kPlyScalarPrefix << field.name
+        << '\n';
   }
   out << "end_header\n";
   return out.str();

@@ -99,6 +99,8 @@ PlyHeader parse_header(std::string_view bytes, const std::string& path) {
     } else if (keyword == "comment") {
       if (const auto comment = parse_class_comment(tokens.rest())) {
         class_names.add(*comment, path, number);
+      } else {
+        header.comments.emplace_back(tokens.rest());
       }
     } else if (keyword == "obj_info" || keyword.empty()) {
       continue;

@@ -38,8 +38,9 @@ struct PlyHeader {
   PlyEncoding encoding = PlyEncoding::kAscii;
   std::vector<PlyElement> elements;
   std::vector<std::string> class_names;
-  std::size_t body_offset = 0;  // first byte after the end_header line
-  std::size_t body_line = 0;    // line number of that byte (ascii)
+  std::vector<std::string> comments;  // the text of every other `comment` line, in order
+  std::size_t body_offset = 0;        // first byte after the end_header line
+  std::size_t body_line = 0;          // line number of that byte (ascii)
 };
 
 // InputError, with the header line, for anything that is not a PLY header.

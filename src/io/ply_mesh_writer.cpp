@@ -7,13 +7,14 @@
 #include <stdexcept>
 
 #include "binary_writer.hpp"
+#include "cloud_formats.hpp"
 #include "occlusion/io/atomic_file.hpp"
 #include "occlusion/io/colour_ramp.hpp"
 
 namespace occlusion {
 namespace {
 
-constexpr std::size_t kVertexBytes = 3 * 4 + 3 + 4;
+constexpr std::size_t kVertexBytes = 3 * 4 + 3 + 4 + 4;
 constexpr std::size_t kFaceBytes = 1 + 3 * 4 + 4 + 4;
 
 bool is_identifier(const std::string& name) {
@@ -51,9 +52,9 @@ std::string header(const TriangleMesh& mesh, const std::string& value_name) {
   out << "ply\n"
       << "format binary_little_endian 1.0\n"
       << "comment written by occlusion\n"
-      << "comment " << value_name
-      << ": one value per face, repeated on the face's own 3 vertices so that it"
-         " loads as a scalar field\n"
+      << "comment " << value_name << " and group_id: one value per face, repeated on the face's"
+      << " own 3 vertices as scalar_" << value_name
+      << " and scalar_group_id so that CloudCompare loads them as scalar fields\n"
       << "comment colour: viridis ramp of " << value_name
       << " clamped to [0,1], grey where it is NaN (no data)\n";
   for (std::size_t g = 0; g < mesh.group_names.size(); ++g) {
@@ -66,7 +67,8 @@ std::string header(const TriangleMesh& mesh, const std::string& value_name) {
       << "property uchar red\n"
       << "property uchar green\n"
       << "property uchar blue\n"
-      << "property float " << value_name << '\n'
+      << "property float " << detail::kPlyScalarPrefix << value_name << '\n'
+      << "property int " << detail::kPlyScalarPrefix << "group_id\n"
       << "element face " << mesh.face_count() << '\n'
       << "property list uchar int vertex_indices\n"
       << "property float " << value_name << '\n'
@@ -92,6 +94,7 @@ std::string body(const TriangleMesh& mesh, const std::vector<float>& face_values
       out.u8(rgb[1]);
       out.u8(rgb[2]);
       out.f32(face_values[f]);
+      out.i32(static_cast<std::int32_t>(mesh.face_group[f]));
     }
   }
   for (std::size_t f = 0; f < faces; ++f) {

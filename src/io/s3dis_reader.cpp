@@ -1,11 +1,13 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <numeric>
 #include <string>
 #include <vector>
 
 #include "cloud_formats.hpp"
 #include "file_bytes.hpp"
+#include "occlusion/core/exact_match.hpp"
 #include "occlusion/io/input_error.hpp"
 
 namespace occlusion {
@@ -113,11 +115,12 @@ std::vector<AnnotationFile> annotation_files(const fs::path& room) {
   return files;
 }
 
-// Each annotation file is one instance of its class; the room's own
-// <room>.txt is the union of them without labels, so it is not read.
-// Instance ids continue from `next_instance`, so they stay unique across an Area.
-void append_room(const fs::path& room, const CloudReadOptions& options, CloudReadReport& report,
-                 PointCloud& cloud, std::int32_t& next_instance) {
+// A room as its annotation files give it: each file one instance of its
+// class, the files in natural order. Instance ids continue from
+// `next_instance`, so they stay unique across an Area.
+PointCloud annotated_points(const fs::path& room, const CloudReadOptions& options,
+                            CloudReadReport& report, std::int32_t& next_instance) {
+  PointCloud cloud;
   for (const AnnotationFile& file : annotation_files(room)) {
     const std::string path = file.path.string();
     const std::string bytes = read_file_bytes(path);
@@ -128,7 +131,78 @@ void append_room(const fs::path& room, const CloudReadOptions& options, CloudRea
     cloud.instances.resize(cloud.positions.size(), next_instance);
     ++next_instance;
   }
-  report.rooms.push_back(room.filename().string());
+  return cloud;
+}
+
+std::string point_text(const Eigen::Vector3f& p) {
+  return "(" + std::to_string(p.x()) + ", " + std::to_string(p.y()) + ", " + std::to_string(p.z()) +
+         ")";
+}
+
+// The room's points in their documented order (cloud_io.hpp): <room>.txt's
+// order when that file holds exactly the annotations' points, each point
+// labelled from the annotation file holding the same coordinates; otherwise
+// Annotations order, with the reason recorded in report.unverified_order.
+void append_room(const fs::path& room, const CloudReadOptions& options, CloudReadReport& report,
+                 PointCloud& cloud, std::int32_t& next_instance) {
+  const std::string name = room.filename().string();
+  CloudReadReport annotation_report;
+  PointCloud annotated = annotated_points(room, options, annotation_report, next_instance);
+  PointCloud ordered;
+  std::vector<std::size_t> annotation_rank;  // per ordered point, its place in Annotations order
+  CloudReadReport room_report;
+  std::string problem;
+  const fs::path room_file = room / (name + ".txt");
+  std::error_code status;
+  if (!fs::is_regular_file(room_file, status)) {
+    problem = name + ": no " + name + ".txt, so its points are in Annotations order";
+  } else {
+    const std::string path = room_file.string();
+    PointCloud listed =
+        parse_text_cloud(read_file_bytes(path), path, kS3disColumns, options, room_report);
+    const ExactMatch match = match_exact_points(annotated.positions, listed.positions);
+    if (match.complete()) {
+      listed.labels.resize(listed.size());
+      listed.instances.resize(listed.size());
+      for (std::size_t i = 0; i < listed.size(); ++i) {
+        listed.labels[i] = annotated.labels[match.source_of[i]];
+        listed.instances[i] = annotated.instances[match.source_of[i]];
+      }
+      ordered = std::move(listed);
+      annotation_rank = match.source_of;
+    } else {
+      problem = name + ": " + name + ".txt holds " + std::to_string(listed.size()) +
+                " points and Annotations " + std::to_string(annotated.size());
+      if (match.unmatched_targets > 0) {
+        problem += "; " + std::to_string(match.unmatched_targets) + " of " + name +
+                   ".txt's points are in no annotation file, the first " +
+                   point_text(listed.positions[match.first_unmatched_target]);
+      }
+      if (match.unmatched_sources > 0) {
+        problem += "; " + std::to_string(match.unmatched_sources) +
+                   " annotation points are not in " + name + ".txt";
+      }
+      problem += ", so its points are in Annotations order";
+    }
+  }
+  if (problem.empty()) {
+    report.dropped_nan += room_report.dropped_nan;
+    report.skipped_lines += room_report.skipped_lines;
+  } else {
+    ordered = std::move(annotated);
+    annotation_rank.resize(ordered.size());
+    std::iota(annotation_rank.begin(), annotation_rank.end(), std::size_t{0});
+    report.dropped_nan += annotation_report.dropped_nan;
+    report.skipped_lines += annotation_report.skipped_lines;
+    report.unverified_order.push_back(problem);
+  }
+  for (const std::size_t rank : annotation_rank)
+    report.annotation_order.push_back(cloud.size() + rank);
+  cloud.positions.insert(cloud.positions.end(), ordered.positions.begin(), ordered.positions.end());
+  cloud.colours.insert(cloud.colours.end(), ordered.colours.begin(), ordered.colours.end());
+  cloud.labels.insert(cloud.labels.end(), ordered.labels.begin(), ordered.labels.end());
+  cloud.instances.insert(cloud.instances.end(), ordered.instances.begin(), ordered.instances.end());
+  report.rooms.push_back(name);
 }
 
 bool is_room(const fs::path& directory) {

@@ -49,5 +49,25 @@ TEST(MeshSampling, RejectsNonPositiveDensity) {
   EXPECT_THROW(sample_mesh(mesh, NAN, 0), std::invalid_argument);
 }
 
+// A 10 cm box at 100 samples per square metre: one sample per face, a level
+// that is rounding. The budget raises the density until the box gets at
+// least min_samples, and no further.
+TEST(MeshSampling, DensityIsRaisedToTheMinimumCount) {
+  TriangleMesh box;
+  testing::add_box(box, {0, 0, 0}, {0.1, 0.1, 0.1}, "box", 1);  // 12 faces, 0.06 m^2
+  EXPECT_EQ(total_samples(box, 100), 12u);
+  const double density = density_for_min_samples(box, 100, 6000);
+  EXPECT_GE(total_samples(box, density), 6000u);
+  EXPECT_LT(total_samples(box, density * (1 - 1e-6)), 6000u);  // the smallest such density
+  // 12 half-squares of 0.005 m^2 need 500 samples each.
+  EXPECT_NEAR(density, 99900, 100);  // round(0.005 d) >= 500 from d = 99,900
+  EXPECT_EQ(total_samples(box, density), 6000u);
+
+  // A density that already gives enough samples, or no minimum, is kept.
+  EXPECT_EQ(density_for_min_samples(box, 2e6, 6000), 2e6);
+  EXPECT_EQ(density_for_min_samples(box, 100, 0), 100);
+  EXPECT_THROW(density_for_min_samples(box, 0, 10), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace occlusion

@@ -5,8 +5,13 @@
 #include <gtest/gtest.h>
 #include <json/reader.h>
 
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
 #include <map>
+#include <random>
 #include <sstream>
+#include <tuple>
 
 #include "occlusion/io/cloud_io.hpp"
 #include "occlusion/io/label_file.hpp"
@@ -223,6 +228,168 @@ TEST(EvaluateCli, Errors) {
                                     dir.file("short.labels") + "' -q");
   EXPECT_EQ(unlabelled.exit_code, 3);
   EXPECT_NE(unlabelled.err.find("has no labels"), std::string::npos) << unlabelled.err;
+}
+
+// --- Pairing a label file with an S3DIS room: by <room>.txt's order --------
+
+namespace fs = std::filesystem;
+
+std::vector<std::string> lines_of(const std::string& path) {
+  std::ifstream in(path);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+void write_lines(const std::string& path, const std::vector<std::string>& lines) {
+  std::ofstream out(path);
+  for (const auto& line : lines) out << line << "\n";
+}
+
+void shuffle_lines(const std::string& path, unsigned seed) {
+  std::vector<std::string> lines = lines_of(path);
+  std::shuffle(lines.begin(), lines.end(), std::mt19937(seed));
+  write_lines(path, lines);
+}
+
+// Evaluation ids of the points of `room_file`, in its order, found by their
+// coordinates in the annotation files (each read as a plain text cloud, so
+// independently of the S3DIS reader).
+std::vector<std::int32_t> ids_in_order_of(const std::string& room_file,
+                                          const std::string& room_folder) {
+  std::map<std::tuple<float, float, float>, std::int32_t> id_at;
+  for (const auto& entry : fs::directory_iterator(room_folder + "/Annotations")) {
+    const std::string stem = entry.path().stem().string();
+    const std::int32_t id = kTable.at(stem.substr(0, stem.rfind('_')));
+    for (const auto& p : read_cloud(entry.path().string()).positions) {
+      id_at[{p.x(), p.y(), p.z()}] = id;
+    }
+  }
+  std::vector<std::int32_t> ids;
+  for (const auto& p : read_cloud(room_file).positions)
+    ids.push_back(id_at.at({p.x(), p.y(), p.z()}));
+  return ids;
+}
+
+// The labels a user's network gives when it reads office_1.txt and is always
+// right: mIoU 1. The same labels in Annotations order (what -eval used to
+// assume) would score 0.10: they are recognised as misaligned and refused.
+TEST(EvaluateCli, LabelFileFollowsTheRoomFile) {
+  const TempDir dir;
+  const std::vector<std::int32_t> ids = ids_in_order_of(kRoomPath + "/office_1.txt", kRoomPath);
+  ASSERT_EQ(ids.size(), room().ids.size());
+  write_label_file(dir.file("room_order.labels"), ids);
+  const Json::Value json =
+      run_json("-eval " + kRoom + " --prediction '" + dir.file("room_order.labels") + "'");
+  EXPECT_EQ(json["miou"].asDouble(), 1.0);
+  EXPECT_EQ(json["overall_accuracy"].asDouble(), 1.0);
+
+  std::vector<std::int32_t> annotation_order;
+  std::vector<fs::path> files;
+  for (const auto& entry : fs::directory_iterator(kRoomPath + "/Annotations")) {
+    files.push_back(entry.path());
+  }
+  std::sort(files.begin(), files.end());  // no 10s in this room: plain order is natural
+  for (const auto& file : files) {
+    const std::string stem = file.stem().string();
+    annotation_order.resize(annotation_order.size() + read_cloud(file.string()).size(),
+                            kTable.at(stem.substr(0, stem.rfind('_'))));
+  }
+  write_label_file(dir.file("annotation_order.labels"), annotation_order);
+  const CliRun misaligned =
+      run_cli("-eval " + kRoom + " --prediction '" + dir.file("annotation_order.labels") + "' -q");
+  EXPECT_EQ(misaligned.exit_code, 2);
+  EXPECT_NE(misaligned.err.find("on 100.0% if read in Annotations order"), std::string::npos)
+      << misaligned.err;
+  EXPECT_NE(misaligned.err.find("Write them in the order of <room>.txt"), std::string::npos)
+      << misaligned.err;
+
+  // A poor prediction in the right order is scored, not refused: every chair
+  // called a table still agrees best in its own order.
+  std::vector<std::int32_t> poor = ids;
+  for (auto& id : poor) id = id == kChair ? kTableId : id;
+  write_label_file(dir.file("poor.labels"), poor);
+  EXPECT_LT(run_json("-eval " + kRoom + " --prediction '" + dir.file("poor.labels") + "'")["miou"]
+                .asDouble(),
+            1.0);
+}
+
+// Shuffled room file and shuffled annotation files: the labels still follow
+// the room file, whatever order it has.
+TEST(EvaluateCli, ShuffledRoomFileAndAnnotations) {
+  const TempDir dir;
+  const std::string copy = dir.file("office_1");
+  fs::copy(kRoomPath, copy, fs::copy_options::recursive);
+  unsigned seed = 1;
+  for (const auto& entry : fs::directory_iterator(copy + "/Annotations")) {
+    shuffle_lines(entry.path().string(), ++seed);
+  }
+  shuffle_lines(copy + "/office_1.txt", 99);
+  write_label_file(dir.file("shuffled.labels"), ids_in_order_of(copy + "/office_1.txt", copy));
+  const Json::Value json =
+      run_json("-eval '" + copy + "' --prediction '" + dir.file("shuffled.labels") + "'");
+  EXPECT_EQ(json["miou"].asDouble(), 1.0);
+  EXPECT_EQ(json["overall_accuracy"].asDouble(), 1.0);
+}
+
+// Without a room file, or with one that holds other points, nothing tells
+// which order the labels follow: refused, saying how to fix it.
+TEST(EvaluateCli, LabelFileForAnUnverifiableOrderIsRefused) {
+  const TempDir dir;
+  const std::string copy = dir.file("office_1");
+  fs::copy(kRoomPath, copy, fs::copy_options::recursive);
+  write_label_file(dir.file("room.labels"), room().ids);
+  const std::string command = "-eval '" + copy + "' --prediction '" + dir.file("room.labels") + "'";
+
+  std::vector<std::string> lines = lines_of(copy + "/office_1.txt");
+  lines.back() = "0.123 0.456 0.789 0 0 0";  // a point no annotation holds
+  write_lines(copy + "/office_1.txt", lines);
+  const CliRun other = run_cli(command + " -q");
+  EXPECT_EQ(other.exit_code, 2);
+  EXPECT_NE(other.err.find("cannot be verified"), std::string::npos) << other.err;
+  EXPECT_NE(other.err.find("are in no annotation file, the first (0.123"), std::string::npos)
+      << other.err;
+
+  fs::remove(copy + "/office_1.txt");
+  const CliRun missing = run_cli(command + " -q");
+  EXPECT_EQ(missing.exit_code, 2);
+  EXPECT_NE(missing.err.find("no office_1.txt"), std::string::npos) << missing.err;
+  EXPECT_NE(missing.err.find("Give each room a <room>.txt"), std::string::npos) << missing.err;
+  EXPECT_NE(missing.err.find("as a cloud with coordinates"), std::string::npos) << missing.err;
+
+  // A prediction cloud is still paired by position (its labels name their
+  // classes, so they are mapped like the ground truth's).
+  write_cloud(dir.file("prediction.ply"), read_cloud(copy));
+  EXPECT_EQ(run_json("-eval '" + copy + "' --prediction '" + dir.file("prediction.ply") +
+                     "' --max-distance 0")["miou"]
+                .asDouble(),
+            1.0);
+}
+
+// A prediction cloud of the ground truth's points in another order is paired
+// by coordinates even with --max-distance 0; one moved point is refused.
+TEST(EvaluateCli, ShuffledPredictionCloudIsPairedByPosition) {
+  const TempDir dir;
+  std::vector<std::size_t> order(room().ids.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::shuffle(order.begin(), order.end(), std::mt19937(4));
+  PointCloud shuffled;
+  for (const auto k : order) {
+    shuffled.positions.push_back(room().cloud.positions[k]);
+    shuffled.labels.push_back(room().ids[k]);
+  }
+  write_cloud(dir.file("shuffled.ply"), shuffled);
+  const std::string base = "-eval " + kRoom + " --max-distance 0 --prediction '";
+  const Json::Value json = run_json(base + dir.file("shuffled.ply") + "'");
+  EXPECT_EQ(json["miou"].asDouble(), 1.0);
+  EXPECT_EQ(json["scenes"][0]["transfer"].asString(), "matched_by_position");
+
+  shuffled.positions[10].x() += 0.001f;
+  write_cloud(dir.file("moved.ply"), shuffled);
+  const CliRun moved = run_cli(base + dir.file("moved.ply") + "' -q");
+  EXPECT_EQ(moved.exit_code, 2);
+  EXPECT_NE(moved.err.find("1 ground-truth points have no prediction point"), std::string::npos)
+      << moved.err;
 }
 
 }  // namespace

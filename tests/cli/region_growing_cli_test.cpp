@@ -33,10 +33,10 @@ double jitter(std::uint64_t& state) {
 }
 
 // The six faces of the box [0, 3] x [0, 2.5] x [0, 2.2] as `x y z` lines,
-// points about 4 cm apart.
-std::string box_room_text() {
-  const double size[3] = {3.0, 2.5, 2.2};
-  const double step = 0.04;
+// points about 4 cm apart; `scale` shrinks box and spacing alike.
+std::string box_room_text(double scale = 1.0) {
+  const double size[3] = {3.0 * scale, 2.5 * scale, 2.2 * scale};
+  const double step = 0.04 * scale;
   std::uint64_t state = 1;
   std::ostringstream text;
   for (int axis = 0; axis < 3; ++axis) {
@@ -55,6 +55,21 @@ std::string box_room_text() {
     }
   }
   return text.str();
+}
+
+// `--viewpoint x,y,z` for each viewpoint of a report, to the last digit, so
+// that -moc measures from exactly the same points.
+std::string viewpoint_options(const Json::Value& json) {
+  std::string options;
+  for (const auto& vp : json["viewpoints"]) {
+    const Json::Value& p = vp["position"];
+    std::ostringstream option;
+    option.precision(17);
+    option << " --viewpoint " << p[0].asDouble() << ',' << p[1].asDouble() << ','
+           << p[2].asDouble();
+    options += option.str();
+  }
+  return options;
 }
 
 TEST(RegionGrowingCli, RealScanEndToEnd) {
@@ -81,24 +96,24 @@ TEST(RegionGrowingCli, RealScanEndToEnd) {
   EXPECT_NE(ply.find("property int group_id"), std::string::npos);
   const std::string segmented = read_text(dir.file("room_scan1.segmented.ply"));
   EXPECT_NE(segmented.find("element vertex 112586\n"), std::string::npos);
-  EXPECT_NE(segmented.find("property int cluster\n"), std::string::npos);
+  EXPECT_NE(segmented.find("property int scalar_cluster\n"), std::string::npos);
   const Json::Value written = parse_json(read_text(dir.file("room_scan1.rgoc.json")));
   EXPECT_EQ(written["occlusion_level"], json["occlusion_level"]);
 
   // The written mesh, measured by -moc from the same viewpoints, gives the
   // same level: -rgoc measures exactly as -moc does.
-  std::string viewpoints;
-  for (const auto& vp : json["viewpoints"]) {
-    const Json::Value& p = vp["position"];
-    std::ostringstream option;
-    option.precision(17);
-    option << " --viewpoint " << p[0].asDouble() << ',' << p[1].asDouble() << ','
-           << p[2].asDouble();
-    viewpoints += option.str();
-  }
+  const std::string viewpoints = viewpoint_options(json);
   const Json::Value moc = run_json("-moc '" + dir.file("room_scan1.rgoc.obj") + "'" + viewpoints);
   EXPECT_EQ(moc["faces"].asUInt64(), json["mesh"]["faces"].asUInt64());
   EXPECT_NEAR(moc["occlusion_level"].asDouble(), json["occlusion_level"].asDouble(), 1e-12);
+  // So does the PLY mesh (its vertices are float: the samples move by ~1e-7 m).
+  const Json::Value moc_ply =
+      run_json("-moc '" + dir.file("room_scan1.rgoc.ply") + "'" + viewpoints);
+  EXPECT_EQ(moc_ply["faces"].asUInt64(), json["mesh"]["faces"].asUInt64());
+  EXPECT_NEAR(moc_ply["occlusion_level"].asDouble(), json["occlusion_level"].asDouble(), 1e-4);
+  // A large room needs no raised density: the budget is met as asked.
+  EXPECT_FALSE(json["mesh"]["sampling"]["raised"].asBool());
+  EXPECT_GE(json["mesh"]["sampling"]["samples"].asUInt64(), 10000u);
 }
 
 TEST(RegionGrowingCli, BoxRoomOptionsAndConfig) {
@@ -129,6 +144,46 @@ TEST(RegionGrowingCli, BoxRoomOptionsAndConfig) {
   const CliRun dropped = run_cli("-rgoc " + room + " --max-cluster-size 1000 -q");
   EXPECT_EQ(dropped.exit_code, 2);
   EXPECT_NE(dropped.err.find("raise max_cluster_size"), std::string::npos) << dropped.err;
+}
+
+// A 30 cm box at 100 samples per square metre would get one sample per face
+// (0.39 m^2 in a dozen triangles): the density is raised until the mesh has
+// the minimum of 10,000 samples, and the JSON says so. -moc at the reported
+// density measures the written mesh the same.
+TEST(RegionGrowingCli, SmallSceneGetsTheMinimumSampleBudget) {
+  const TempDir dir;
+  dir.write("box.txt", box_room_text(0.1));
+  const Json::Value json =
+      run_json("-rgoc '" + dir.file("box.txt") + "' --out '" + dir.path() + "'");
+  ASSERT_EQ(json["clusters_used"].asUInt64(), 6u);
+  const Json::Value& sampling = json["mesh"]["sampling"];
+  EXPECT_TRUE(sampling["raised"].asBool());
+  EXPECT_EQ(sampling["requested_samples_per_unit_area"].asDouble(), 100.0);
+  EXPECT_EQ(sampling["min_samples"].asUInt64(), 10000u);
+  const auto samples = json["mesh"]["samples"].asUInt64();
+  EXPECT_EQ(sampling["samples"].asUInt64(), samples);
+  // At least the minimum, and not much more: each face rounds by at most one.
+  EXPECT_GE(samples, 10000u);
+  EXPECT_LE(samples, 10000u + json["mesh"]["faces"].asUInt64());
+  const double density = sampling["samples_per_unit_area"].asDouble();
+  EXPECT_NEAR(density * json["total_area"].asDouble(), 10000.0, 0.01 * 10000);
+  EXPECT_LT(json["occlusion_level"].asDouble(), 0.01);  // a closed empty room hides nothing
+  EXPECT_EQ(json["parameters"]["min_samples"].asUInt64(), 10000u);
+
+  // --min-samples 0 keeps the density asked for: about one sample per face.
+  const Json::Value unbudgeted = run_json("-rgoc '" + dir.file("box.txt") + "' --min-samples 0");
+  EXPECT_FALSE(unbudgeted["mesh"]["sampling"]["raised"].asBool());
+  EXPECT_EQ(unbudgeted["parameters"]["min_samples"].asUInt64(), 0u);
+  EXPECT_LT(unbudgeted["mesh"]["samples"].asUInt64(), 2 * unbudgeted["mesh"]["faces"].asUInt64());
+
+  const std::string viewpoints = viewpoint_options(json);
+  std::ostringstream moc_density;
+  moc_density.precision(17);
+  moc_density << density;
+  const Json::Value moc = run_json("-moc '" + dir.file("box.rgoc.obj") + "'" + viewpoints +
+                                   " --samples-per-unit-area " + moc_density.str());
+  EXPECT_EQ(moc["samples"].asUInt64(), samples);
+  EXPECT_NEAR(moc["occlusion_level"].asDouble(), json["occlusion_level"].asDouble(), 1e-12);
 }
 
 TEST(RegionGrowingCli, ExampleConfigRuns) {

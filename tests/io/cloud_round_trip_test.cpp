@@ -114,10 +114,10 @@ TEST(WriteCloud, PlyHeaderNamesClassesAndProperties) {
   const std::string path = dir.file("c.ply");
   write_cloud(path, testing::labelled_cloud(), extra_fields(), CloudFormat::kPlyAscii);
   const std::string text = testing::read_bytes(path);
-  for (const char* line :
-       {"comment class 0 ceiling\n", "comment class 1 floor with spaces\n",
-        "comment class 2 wall\n", "property uchar red\n", "property int label\n",
-        "property int instance\n", "property float visibility\n", "property int hits\n"}) {
+  for (const char* line : {"comment class 0 ceiling\n", "comment class 1 floor with spaces\n",
+                           "comment class 2 wall\n", "property uchar red\n",
+                           "property int scalar_label\n", "property int scalar_instance\n",
+                           "property float scalar_visibility\n", "property int scalar_hits\n"}) {
     EXPECT_NE(text.find(line), std::string::npos) << line;
   }
 }

@@ -80,8 +80,9 @@ TEST(PlyMeshWriter, HeaderDeclaresUnsharedVerticesValuesAndGroups) {
       "ply",
       "format binary_little_endian 1.0",
       "comment written by occlusion",
-      "comment visible_fraction: one value per face, repeated on the face's own 3 vertices so "
-      "that it loads as a scalar field",
+      "comment visible_fraction and group_id: one value per face, repeated on the face's own 3 "
+      "vertices as scalar_visible_fraction and scalar_group_id so that CloudCompare loads them "
+      "as scalar fields",
       "comment colour: viridis ramp of visible_fraction clamped to [0,1], grey where it is NaN "
       "(no data)",
       "comment group 0 floor",
@@ -93,7 +94,8 @@ TEST(PlyMeshWriter, HeaderDeclaresUnsharedVerticesValuesAndGroups) {
       "property uchar red",
       "property uchar green",
       "property uchar blue",
-      "property float visible_fraction",
+      "property float scalar_visible_fraction",
+      "property int scalar_group_id",
       "element face 2",
       "property list uchar int vertex_indices",
       "property float visible_fraction",
@@ -110,7 +112,7 @@ TEST(PlyMeshWriter, BodyHoldsPositionsColoursValuesAndGroups) {
   const std::vector<float> values = {0.25f, 1.0f};
   write_mesh_ply(path, mesh, values, "visible_fraction");
   const PlyFile ply = read_ply(path);
-  constexpr std::size_t kVertexBytes = 19, kFaceBytes = 21;
+  constexpr std::size_t kVertexBytes = 23, kFaceBytes = 21;
   ASSERT_EQ(ply.bytes.size(), ply.body_offset + 6 * kVertexBytes + 2 * kFaceBytes);
 
   LittleEndianReader in(ply.bytes, ply.body_offset);
@@ -125,6 +127,7 @@ TEST(PlyMeshWriter, BodyHoldsPositionsColoursValuesAndGroups) {
       EXPECT_EQ(in.u8(), rgb[1]);
       EXPECT_EQ(in.u8(), rgb[2]);
       EXPECT_EQ(in.f32(), values[f]);
+      EXPECT_EQ(in.i32(), static_cast<std::int32_t>(mesh.face_group[f]));
     }
   }
   for (std::size_t f = 0; f < 2; ++f) {

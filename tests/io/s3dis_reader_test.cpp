@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <map>
 #include <set>
 #include <string>
+#include <tuple>
 
 #include "io/cloud_test_support.hpp"
 #include "io/scratch_directory.hpp"
@@ -49,12 +51,65 @@ TEST(S3dis, RoomIsLabelledFromItsAnnotations) {
   const PointCloud cloud = read_cloud(room.string() + "/", {}, &report);
   EXPECT_EQ(cloud.class_names, s3dis_class_names());
   ASSERT_EQ(cloud.size(), 5u);
+  // The points in office_7.txt's order (chair_10's point first, as written);
   // chair_2 before chair_10: instances follow the numbers in the names.
-  EXPECT_EQ(cloud.positions[0], Eigen::Vector3f(2, 2, 2));
+  EXPECT_EQ(cloud.positions[0], Eigen::Vector3f(1, 1, 1));
+  EXPECT_EQ(cloud.positions[1], Eigen::Vector3f(2, 2, 2));
   EXPECT_EQ(cloud.labels, (std::vector<std::int32_t>{kChair, kChair, kChair, kFloor, kClutter}));
-  EXPECT_EQ(cloud.instances, (std::vector<std::int32_t>{0, 0, 1, 2, 3}));
-  EXPECT_EQ(cloud.colours[2], (std::array<std::uint8_t, 3>{10, 10, 10}));
+  EXPECT_EQ(cloud.instances, (std::vector<std::int32_t>{1, 0, 0, 2, 3}));
+  EXPECT_EQ(cloud.colours[0], (std::array<std::uint8_t, 3>{10, 10, 10}));
   EXPECT_EQ(report.rooms, std::vector<std::string>{"office_7"});
+  EXPECT_TRUE(report.unverified_order.empty());
+}
+
+// A user's labels follow <room>.txt, whatever order the scanner wrote it in;
+// each point is labelled from the annotation holding its coordinates, also
+// for a point stored twice (in two annotation files).
+TEST(S3dis, PointsFollowTheRoomFileInAnyOrder) {
+  testing::ScratchDirectory dir;
+  const fs::path room = dir.path() / "office_3";
+  make_room(room, {{"floor_1.txt", "0 0 0 1 1 1\n1 0 0 1 1 1\n"},
+                   {"wall_1.txt", "0 0 2 2 2 2\n5 5 5 2 2 2\n"},
+                   {"chair_1.txt", "0.5 0.5 0.5 3 3 3\n5 5 5 3 3 3\n"}});
+  testing::write_text((room / "office_3.txt").string(),
+                      "5 5 5 2 2 2\n0 0 2 2 2 2\n0.5 0.5 0.5 3 3 3\n1 0 0 1 1 1\n5 5 5 3 3 3\n"
+                      "0 0 0 1 1 1\n");
+  CloudReadReport report;
+  const PointCloud cloud = read_cloud(room.string(), {}, &report);
+  EXPECT_TRUE(report.unverified_order.empty());
+  ASSERT_EQ(cloud.size(), 6u);
+  EXPECT_EQ(cloud.positions[2], Eigen::Vector3f(0.5f, 0.5f, 0.5f));
+  EXPECT_EQ(cloud.positions[5], Eigen::Vector3f(0, 0, 0));
+  // Annotations order is chair_1, floor_1, wall_1 (instances 0, 1, 2); the
+  // duplicated (5,5,5) pairs in order of appearance: chair_1's copy first.
+  EXPECT_EQ(cloud.labels,
+            (std::vector<std::int32_t>{kChair, kWall, kChair, kFloor, kWall, kFloor}));
+  EXPECT_EQ(cloud.instances, (std::vector<std::int32_t>{0, 2, 0, 1, 2, 1}));
+  EXPECT_EQ(cloud.colours[0], (std::array<std::uint8_t, 3>{2, 2, 2}));  // the room file's
+}
+
+TEST(S3dis, WithoutAMatchingRoomFileThePointsAreInAnnotationsOrder) {
+  testing::ScratchDirectory dir;
+  const fs::path room = dir.path() / "office_4";
+  make_room(room, {{"wall_1.txt", "9 9 9 1 1 1\n"}, {"floor_1.txt", "0 0 0 1 1 1\n"}});
+  fs::remove(room / "office_4.txt");
+  CloudReadReport report;
+  PointCloud cloud = read_cloud(room.string(), {}, &report);
+  EXPECT_EQ(cloud.labels, (std::vector<std::int32_t>{kFloor, kWall}));
+  ASSERT_EQ(report.unverified_order.size(), 1u);
+  EXPECT_NE(report.unverified_order[0].find("no office_4.txt"), std::string::npos);
+
+  // A room file with a point no annotation holds, and missing one.
+  testing::write_text((room / "office_4.txt").string(), "9 9 9 1 1 1\n0 0 0.5 1 1 1\n");
+  report = {};
+  cloud = read_cloud(room.string(), {}, &report);
+  EXPECT_EQ(cloud.labels, (std::vector<std::int32_t>{kFloor, kWall}));
+  ASSERT_EQ(report.unverified_order.size(), 1u);
+  const std::string& why = report.unverified_order[0];
+  EXPECT_NE(why.find("1 of office_4.txt's points are in no annotation file, the first (0.0"),
+            std::string::npos)
+      << why;
+  EXPECT_NE(why.find("1 annotation points are not in office_4.txt"), std::string::npos) << why;
 }
 
 TEST(S3dis, UnknownClassNamesTheFile) {
@@ -160,8 +215,28 @@ TEST(S3disSynthetic, AreaLoadsAsOneLabelledRoom) {
   EXPECT_NEAR(hi.y(), 5.0, 0.01);
   EXPECT_NEAR(hi.z(), 3.0, 0.01);
 
-  // The room's own file holds the same points as its annotations together.
-  EXPECT_EQ(read_cloud(kSyntheticArea + "/office_1/office_1.txt").size(), cloud.size());
+  // The points are office_1.txt's, in its order, and each carries the class
+  // of the annotation file that holds it (checked file by file, by brute force).
+  EXPECT_TRUE(report.unverified_order.empty());
+  EXPECT_EQ(read_cloud(kSyntheticArea + "/office_1/office_1.txt").positions, cloud.positions);
+  std::map<std::tuple<float, float, float>, std::int32_t> label_at;
+  for (const auto& entry : fs::directory_iterator(kSyntheticArea + "/office_1/Annotations")) {
+    const std::string stem = entry.path().stem().string();
+    const std::string class_name = stem.substr(0, stem.rfind('_'));
+    const auto& names = s3dis_class_names();
+    const auto label = static_cast<std::int32_t>(std::find(names.begin(), names.end(), class_name) -
+                                                 names.begin());
+    for (const auto& p : read_cloud(entry.path().string()).positions) {
+      label_at[{p.x(), p.y(), p.z()}] = label;
+    }
+  }
+  ASSERT_EQ(label_at.size(), cloud.size());
+  std::size_t agree = 0;
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    const auto& p = cloud.positions[i];
+    agree += label_at.at({p.x(), p.y(), p.z()}) == cloud.labels[i] ? 1 : 0;
+  }
+  EXPECT_EQ(agree, cloud.size());
 }
 
 TEST(S3disSynthetic, OpeningsOutlineHolesInTheWalls) {

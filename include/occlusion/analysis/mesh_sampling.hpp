@@ -34,4 +34,15 @@ MeshSamples sample_mesh(const TriangleMesh& mesh, double samples_per_unit_area, 
 // Number of samples face f of the given area gets (the rule above).
 std::size_t samples_for_area(double area, double samples_per_unit_area);
 
+// How many samples sample_mesh would draw at this density.
+std::size_t total_samples(const TriangleMesh& mesh, double samples_per_unit_area);
+
+// A density fitted to the mesh's scale: samples_per_unit_area when it already
+// gives at least `min_samples` samples, else the smallest density (to 1e-9
+// relative) that does. A density per unit area means nothing across scales: a
+// 30 cm object at 100 per square metre would get one sample per face and a
+// level that is pure rounding. Same std::invalid_argument as sample_mesh.
+double density_for_min_samples(const TriangleMesh& mesh, double samples_per_unit_area,
+                               std::size_t min_samples);
+
 }  // namespace occlusion

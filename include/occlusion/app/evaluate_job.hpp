@@ -52,6 +52,11 @@ struct Prediction {
 struct SceneInput {
   std::string ground_truth_name;
   PointCloud ground_truth;
+  // For an S3DIS ground truth, each point's place in Annotations order
+  // (CloudReadReport::annotation_order): a label file that agrees with the
+  // ground truth far better in that order than in the points' own is refused
+  // as misaligned. Empty: no other order to suspect.
+  std::vector<std::size_t> annotation_order;
   std::string prediction_name;
   Prediction prediction;
 };
@@ -60,7 +65,9 @@ struct SceneEvaluation {
   std::string name;  // the ground truth's file stem
   std::string ground_truth;
   std::string prediction;
-  std::string transfer;               // "direct" or "nearest_neighbour"
+  // "direct" (same order), "matched_by_position" (the same points in another
+  // order, max_distance 0) or "nearest_neighbour"
+  std::string transfer;
   std::size_t points = 0;             // ground-truth points
   std::size_t prediction_points = 0;  // predicted labels given
   std::size_t unlabelled = 0;         // ground-truth points left without a prediction
@@ -96,11 +103,14 @@ ClassMapping resolve_mapping(const std::string& mapping_path,
                              const std::vector<std::string>& ignored_classes);
 
 // Evaluates one scene. Predictions on the ground truth's own points (same
-// count and positions, or a label file) are compared directly; others are
-// transferred by nearest neighbour within max_distance. InputError naming
+// count and positions, or a label file) are compared directly; with
+// max_distance 0, the same points in another order are paired by identical
+// coordinates; others are transferred by nearest neighbour within max_distance. InputError naming
 // the file for a ground truth without labels or class names and for a label
 // count that differs from the point count; UsageError for classes the
 // mapping does not know, or other points with max_distance 0.
+// load_scene (evaluation_support.hpp) refuses, before this, a label file whose
+// pairing by order cannot be verified.
 SceneEvaluation evaluate_scene(const SceneInput& scene, const ClassMapping& mapping,
                                double max_distance, unsigned threads,
                                const Progress& progress = {});

@@ -18,7 +18,7 @@
 namespace occlusion {
 
 struct MeshOcclusionRequest {
-  std::string path;  // OBJ mesh
+  std::string path;  // OBJ or PLY mesh (io/mesh_reader.hpp)
   ViewpointChoice viewpoints = ViewpointChoice::from_pattern(7);
   double samples_per_unit_area = 100.0;
   double octree_resolution = 0.0;  // smallest octree cell edge, scene units; 0 = no limit

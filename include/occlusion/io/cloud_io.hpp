@@ -14,6 +14,13 @@
 //                       are comments
 //   a directory         an S3DIS room (<room>/Annotations/<class>_<k>.txt) or an
 //                       S3DIS Area (a directory of rooms, concatenated)
+// The order of a folder's points, which a label file (one label per point, by
+// order) must follow: rooms in natural order of their names (office_2 before
+// office_10); within a room, the order of <room>/<room>.txt when that file holds
+// exactly the points of the annotation files (compared by coordinates, as a
+// multiset), each point labelled from the annotation file that holds it;
+// otherwise the annotation files in natural order, each file's lines in order,
+// and the room is listed in CloudReadReport::unverified_order.
 // Points with a NaN or infinite coordinate (organised Kinect frames mark missing
 // depth that way) are dropped and counted in CloudReadReport::dropped_nan.
 // Properties the cloud has no slot for (PLY and PCD) are returned in the report.
@@ -51,6 +58,14 @@ struct CloudReadReport {
   std::size_t dropped_nan = 0;     // points dropped for a non-finite coordinate
   std::size_t skipped_lines = 0;   // bad text lines skipped (skip_bad_lines)
   std::vector<std::string> rooms;  // S3DIS room folder names, in reading order
+  // S3DIS rooms whose points are in Annotations order because <room>.txt is
+  // missing or holds other points, one sentence each saying which and why.
+  // Labels given by point order cannot be checked against such a room.
+  std::vector<std::string> unverified_order;
+  // S3DIS folders: for each point read, its place in Annotations order (rooms
+  // in natural order, each room's annotation files in natural order), so that
+  // labels given in that order can be recognised. Empty for files.
+  std::vector<std::size_t> annotation_order;
   // PLY and PCD properties other than those the cloud holds, in file order,
   // one value per kept point (points dropped for NaN are dropped here too).
   std::vector<ScalarField> extra_fields;

@@ -25,6 +25,7 @@
 
 namespace occlusion {
 
+// read_mesh (mesh_reader.hpp) chooses this or the PLY reader by extension.
 TriangleMesh read_obj(const std::string& path);
 
 // Parses OBJ text; `source_name` is only used in error messages.

@@ -4,11 +4,13 @@
 //
 // Vertices are not shared: face f owns vertices 3f, 3f+1, 3f+2, so every face
 // can carry its own uniform colour. Layout:
-//   vertex: float x, y, z; uchar red, green, blue; float <value_name>
+//   vertex: float x, y, z; uchar red, green, blue; float scalar_<value_name>;
+//           int scalar_group_id
 //   face:   list uchar int vertex_indices; float <value_name>; int group_id
 // The colour is colour_ramp(value) (viridis, clamped to [0, 1], grey for NaN);
-// the value is repeated on the vertices because CloudCompare shows vertex
-// properties, not face properties, as scalar fields. The header has one
+// the value and the group are repeated on the vertices because CloudCompare
+// shows vertex properties, not face properties, as scalar fields, and only
+// those whose name contains "scalar" (it shows scalar_<name> as "<name>"). The header has one
 // `comment group <id> <name>` line per group of the mesh.
 
 #include <string>

@@ -1,0 +1,28 @@
+#pragma once
+// Triangle meshes from disk, by extension: `.obj` (obj_reader.hpp) or `.ply`.
+//
+// PLY (ascii or binary, either byte order): element `vertex` with float or
+// double x y z (other vertex properties ignored), element `face` with an
+// integer list property `vertex_indices` (or `vertex_index`), 0-based.
+// Polygons are fan-triangulated as in OBJ. An integer face property
+// `group_id` puts each face in a group, named by `comment group <id> <name>`
+// header lines (as write_mesh_ply writes them; unnamed ids become "group <id>");
+// without it every face is in group "default". So the meshes -rgoc writes
+// (ply_mesh_writer.hpp) can be measured again with -moc.
+//
+// InputError naming the file for what the OBJ reader refuses too (an index
+// out of range, a face with fewer than 3 corners, a degenerate triangle, no
+// faces, a non-finite coordinate), with the line (ascii) or byte offset, and
+// for a PLY without a vertex element, x y z, or a face index list. An
+// extension other than .obj or .ply is an InputError saying which are read.
+
+#include <string>
+
+#include "occlusion/core/mesh.hpp"
+
+namespace occlusion {
+
+TriangleMesh read_mesh(const std::string& path);
+TriangleMesh read_ply_mesh(const std::string& path);
+
+}  // namespace occlusion

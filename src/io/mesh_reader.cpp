@@ -1,0 +1,22 @@
+#include "occlusion/io/mesh_reader.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+
+#include "occlusion/io/input_error.hpp"
+#include "occlusion/io/obj_reader.hpp"
+
+namespace occlusion {
+
+TriangleMesh read_mesh(const std::string& path) {
+  std::string extension = std::filesystem::path(path).extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (extension == ".obj") return read_obj(path);
+  if (extension == ".ply") return read_ply_mesh(path);
+  throw InputError(path, 0,
+                   "is not a mesh file this tool reads (.obj or .ply; a cloud goes to -poc)");
+}
+
+}  // namespace occlusion
