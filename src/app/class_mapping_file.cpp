@@ -3,12 +3,12 @@
 #include <json/reader.h>
 
 #include <charconv>
-#include <fstream>
 #include <limits>
-#include <sstream>
 #include <stdexcept>
 
 #include "occlusion/app/errors.hpp"
+#include "occlusion/io/file_bytes.hpp"
+#include "occlusion/io/input_error.hpp"
 
 namespace occlusion {
 
@@ -84,11 +84,12 @@ ClassMapping parse_class_mapping(const Json::Value& root, const std::string& whe
 }
 
 ClassMapping load_class_mapping(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) fail(path, "cannot open class mapping file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  const std::string body = text.str();
+  std::string body;
+  try {
+    body = read_file_bytes(path);
+  } catch (const InputError& e) {
+    fail(path, "cannot read class mapping file: " + e.reason);
+  }
   Json::CharReaderBuilder builder;
   builder["collectComments"] = false;
   builder["rejectDupKeys"] = true;

@@ -4,13 +4,13 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <initializer_list>
 #include <limits>
 #include <map>
-#include <sstream>
 
 #include "occlusion/app/errors.hpp"
+#include "occlusion/io/file_bytes.hpp"
+#include "occlusion/io/input_error.hpp"
 
 namespace occlusion {
 
@@ -261,11 +261,13 @@ std::string resolve(const Config& config, const std::string& path) {
 Config load_config(const std::string& path) {
   Config config;
   config.path = path;
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw UsageError(path + ": cannot open config file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  const std::string body = text.str();
+  std::string body;
+  try {
+    body = read_file_bytes(path);
+  } catch (const InputError& e) {
+    // A config that cannot be read is a usage error (exit 2), like its keys.
+    throw UsageError(path + ": cannot read config file: " + e.reason);
+  }
 
   Json::CharReaderBuilder builder;
   builder["collectComments"] = false;
