@@ -1,14 +1,13 @@
 #include "occlusion/app/class_mapping_file.hpp"
 
-#include <json/reader.h>
+#include <json/value.h>
 
 #include <charconv>
 #include <limits>
 #include <stdexcept>
 
 #include "occlusion/app/errors.hpp"
-#include "occlusion/io/file_bytes.hpp"
-#include "occlusion/io/input_error.hpp"
+#include "occlusion/app/json_file.hpp"
 
 namespace occlusion {
 
@@ -84,21 +83,7 @@ ClassMapping parse_class_mapping(const Json::Value& root, const std::string& whe
 }
 
 ClassMapping load_class_mapping(const std::string& path) {
-  std::string body;
-  try {
-    body = read_file_bytes(path);
-  } catch (const InputError& e) {
-    fail(path, "cannot read class mapping file: " + e.reason);
-  }
-  Json::CharReaderBuilder builder;
-  builder["collectComments"] = false;
-  builder["rejectDupKeys"] = true;
-  const std::unique_ptr<Json::CharReader> reader(builder.newCharReader());
-  Json::Value root;
-  std::string errors;
-  if (!reader->parse(body.data(), body.data() + body.size(), &root, &errors)) {
-    fail(path, "not valid JSON: " + errors);
-  }
+  const Json::Value root = read_json_file(path, "class mapping file");
   return parse_class_mapping(root, path);
 }
 

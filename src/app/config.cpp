@@ -1,6 +1,6 @@
 #include "occlusion/app/config.hpp"
 
-#include <json/reader.h>
+#include <json/value.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -9,8 +9,7 @@
 #include <map>
 
 #include "occlusion/app/errors.hpp"
-#include "occlusion/io/file_bytes.hpp"
-#include "occlusion/io/input_error.hpp"
+#include "occlusion/app/json_file.hpp"
 
 namespace occlusion {
 
@@ -261,22 +260,7 @@ std::string resolve(const Config& config, const std::string& path) {
 Config load_config(const std::string& path) {
   Config config;
   config.path = path;
-  std::string body;
-  try {
-    body = read_file_bytes(path);
-  } catch (const InputError& e) {
-    // A config that cannot be read is a usage error (exit 2), like its keys.
-    throw UsageError(path + ": cannot read config file: " + e.reason);
-  }
-
-  Json::CharReaderBuilder builder;
-  builder["collectComments"] = false;
-  builder["rejectDupKeys"] = true;
-  const std::unique_ptr<Json::CharReader> reader(builder.newCharReader());
-  std::string errors;
-  if (!reader->parse(body.data(), body.data() + body.size(), &config.root, &errors)) {
-    throw UsageError(path + ": not valid JSON: " + errors);
-  }
+  config.root = read_json_file(path, "config file");
   config.directory = std::filesystem::path(path).parent_path().string();
   check(config);
   return config;

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Installs every build and test dependency from Debian 12 packages. Idempotent:
+# Installs every build and test dependency from Debian 12 packages (clang-14
+# and libFuzzer for src/scripts/fuzz.sh). Idempotent:
 # packages already installed are skipped, and apt-get runs only when one is missing.
 # Usage: setup.sh [--bench]   (--bench adds Intel Embree, used only by bench/)
 set -euo pipefail
@@ -9,6 +10,7 @@ packages=(
   libeigen3-dev libjsoncpp-dev libgtest-dev
   libpcl-dev libflann-dev
   libwebsocketpp-dev libboost-dev libboost-system-dev
+  clang-14 libfuzzer-14-dev libclang-rt-14-dev
 )
 if [[ "${1:-}" == "--bench" ]]; then
   packages+=(libembree-dev)
