@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "occlusion/io/file_bytes.hpp"
 #include "occlusion/io/atomic_file.hpp"
+#include "occlusion/io/file_bytes.hpp"
 #include "occlusion/io/input_error.hpp"
 
 namespace occlusion {

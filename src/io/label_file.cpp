@@ -5,9 +5,9 @@
 #include <filesystem>
 #include <limits>
 
-#include "occlusion/io/file_bytes.hpp"
 #include "file_names.hpp"
 #include "occlusion/io/atomic_file.hpp"
+#include "occlusion/io/file_bytes.hpp"
 #include "occlusion/io/input_error.hpp"
 #include "text_tokens.hpp"
 

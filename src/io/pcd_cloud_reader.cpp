@@ -147,13 +147,12 @@ class PcdCloudReader {
                         " can hold (the file ends at byte " + std::to_string(bytes_.size()) + ")";
       if (data != "ascii" && data != "binary") {
         why = "the " + std::to_string(most_bytes) + " bytes that " + std::to_string(available) +
-              " bytes of " + std::string(data) + " data may expand to (" +
-              pcd_expansion_rule() + ")";
+              " bytes of " + std::string(data) + " data may expand to (" + pcd_expansion_rule() +
+              ")";
       }
       throw InputError(path_, 0,
                        "truncated or corrupt: the header declares " + std::to_string(claimed) +
-                           " points of " + std::to_string(point_size) + " bytes, more than " +
-                           why);
+                           " points of " + std::to_string(point_size) + " bytes, more than " + why);
     }
     declared_bytes_ = claimed * point_size;
   }

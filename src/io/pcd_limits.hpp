@@ -27,8 +27,8 @@ inline std::uint64_t most_pcd_decoded_bytes(std::uint64_t compressed) {
 
 // The rule above, for messages.
 inline std::string pcd_expansion_rule() {
-  return "a compressed PCD may expand " + std::to_string(kMaxPcdExpansionRatio) +
-         "-fold or to " + std::to_string(kPcdExpansionFloorBytes >> 20) + " MiB";
+  return "a compressed PCD may expand " + std::to_string(kMaxPcdExpansionRatio) + "-fold or to " +
+         std::to_string(kPcdExpansionFloorBytes >> 20) + " MiB";
 }
 
 }  // namespace occlusion::detail

@@ -5,8 +5,8 @@
 #include <ostream>
 #include <stdexcept>
 
-#include "occlusion/io/file_bytes.hpp"
 #include "occlusion/io/atomic_file.hpp"
+#include "occlusion/io/file_bytes.hpp"
 #include "occlusion/io/input_error.hpp"
 #include "text_tokens.hpp"
 

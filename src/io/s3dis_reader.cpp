@@ -5,8 +5,8 @@
 #include <vector>
 
 #include "cloud_formats.hpp"
-#include "occlusion/io/file_bytes.hpp"
 #include "file_names.hpp"
+#include "occlusion/io/file_bytes.hpp"
 #include "occlusion/io/input_error.hpp"
 
 namespace occlusion {

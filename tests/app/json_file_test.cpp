@@ -8,8 +8,8 @@
 #include <unistd.h>
 
 #include <filesystem>
-#include <functional>
 #include <fstream>
+#include <functional>
 #include <string>
 
 #include "occlusion/app/config.hpp"
@@ -53,8 +53,7 @@ TEST_F(JsonFile, ReadsCommentsAndRefusesDuplicateKeys) {
 }
 
 TEST_F(JsonFile, DeepNestingIsAUsageErrorNotAnInternalOne) {
-  const std::string deep =
-      write("deep.json", std::string(100000, '[') + std::string(100000, ']'));
+  const std::string deep = write("deep.json", std::string(100000, '[') + std::string(100000, ']'));
   const std::string message = usage_error([&] { load_config(deep); });
   EXPECT_NE(message.find("deep.json: not valid JSON"), std::string::npos) << message;
 }

@@ -26,8 +26,8 @@ TEST(ValidUtf8, ReplacesEachInvalidByte) {
   EXPECT_EQ(valid_utf8("a\x80z"), "a" + kReplacement + "z");
   EXPECT_EQ(valid_utf8("\xC0\xAF"), kReplacement + kReplacement);
   EXPECT_EQ(valid_utf8("\xED\xA0\x80"), kReplacement + kReplacement + kReplacement);
-  EXPECT_EQ(valid_utf8("\xF4\x90\x80\x80"), kReplacement + kReplacement + kReplacement +
-                                                kReplacement);
+  EXPECT_EQ(valid_utf8("\xF4\x90\x80\x80"),
+            kReplacement + kReplacement + kReplacement + kReplacement);
   EXPECT_EQ(valid_utf8("x\xE2\x82"), "x" + kReplacement + kReplacement);
 }
 

@@ -16,9 +16,8 @@ TEST(NonUtf8Names, JsonReportStaysValidUtf8) {
   const std::string name = "r\xE9union.obj";  // Latin-1 "réunion"
   std::filesystem::copy_file(std::string(OCCLUSION_SOURCE_DIR) + "/files/sample_room.obj",
                              dir.file(name));
-  const testing::CliRun run =
-      testing::run_cli("-moc '" + dir.file(name) +
-                       "' --pattern 1 --samples-per-unit-area 20 --seed 1 --json -q");
+  const testing::CliRun run = testing::run_cli(
+      "-moc '" + dir.file(name) + "' --pattern 1 --samples-per-unit-area 20 --seed 1 --json -q");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const Json::Value json = testing::parse_json(run.out);
   EXPECT_EQ(json["job"].asString(), "mesh_occlusion");

@@ -25,9 +25,9 @@ inline std::string_view as_text(const std::uint8_t* data, std::size_t size) {
 inline const std::filesystem::path& scratch_directory() {
   static const std::filesystem::path directory = [] {
     std::error_code ignored;
-    const std::filesystem::path base =
-        std::filesystem::is_directory("/dev/shm", ignored) ? std::filesystem::path("/dev/shm")
-                                                           : std::filesystem::temp_directory_path();
+    const std::filesystem::path base = std::filesystem::is_directory("/dev/shm", ignored)
+                                           ? std::filesystem::path("/dev/shm")
+                                           : std::filesystem::temp_directory_path();
     std::filesystem::path made = base / ("occlusion_fuzz_" + std::to_string(::getpid()));
     std::filesystem::remove_all(made, ignored);
     std::filesystem::create_directories(made);

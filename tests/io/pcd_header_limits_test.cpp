@@ -20,8 +20,8 @@ std::string header(const std::string& count_line, const std::string& width,
                    const std::string& points, const std::string& data) {
   return "# .PCD v0.7 - Point Cloud Data file format\nVERSION 0.7\nFIELDS x y z\n"
          "SIZE 4 4 4\nTYPE F F F\n" +
-         count_line + "\nWIDTH " + width + "\nHEIGHT 1\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS " +
-         points + "\nDATA " + data + "\n";
+         count_line + "\nWIDTH " + width + "\nHEIGHT 1\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS " + points +
+         "\nDATA " + data + "\n";
 }
 
 std::string uint32_pair(std::uint32_t first, std::uint32_t second) {
@@ -82,8 +82,7 @@ TEST(PcdHeaderLimits, DecompressionBombIsRefusedWithTheSizes) {
   const std::uint32_t compressed = 1000000;
   const std::uint32_t expanded = 840000000;
   testing::write_text(path, header("COUNT 1 1 1", "70000000", "70000000", "binary_compressed") +
-                                uint32_pair(compressed, expanded) +
-                                std::string(compressed, '\0'));
+                                uint32_pair(compressed, expanded) + std::string(compressed, '\0'));
   testing::expect_input_error([&] { read_cloud(path); }, "bomb.pcd", 0,
                               "declares 70000000 points of 12 bytes, more than the 67108864 bytes "
                               "that 1000008 bytes of binary_compressed data may expand to (a "
