@@ -179,6 +179,7 @@ class PcdCloudReader {
                            " bytes, more than its checked size of " +
                            std::to_string(declared_bytes_) + " bytes");
     }
+    check_field_layout();
     blob_.data.resize(points_ * blob_.point_step);
 
     // Class names ride in comments, which PCL skips.
@@ -194,6 +195,26 @@ class PcdCloudReader {
     class_names_ = names.finish(path_);
     data_line_ = 1 + static_cast<std::size_t>(
                          std::count(bytes_.begin(), bytes_.begin() + data_index_, '\n'));
+  }
+
+  // Every value is read and written at its field's offset with its type's
+  // size, so both must be what the header declared and inside the point.
+  void check_field_layout() const {
+    for (const Field& field : blob_.fields) {
+      if (!is_known_type(field.datatype)) {
+        throw InputError(path_, 0,
+                         "field '" + field.name +
+                             "' has a TYPE and SIZE that are no PCD type (TYPE I or U with SIZE "
+                             "1, 2, 4 or 8; F with 4 or 8)");
+      }
+      const std::uint64_t end =
+          std::uint64_t{field.offset} + std::uint64_t{field_size(field.datatype)} * field.count;
+      if (end > blob_.point_step) {
+        throw InputError(path_, 0,
+                         "field '" + field.name + "' ends at byte " + std::to_string(end) +
+                             " of a " + std::to_string(blob_.point_step) + "-byte point");
+      }
+    }
   }
 
   void check_binary_size(std::size_t expected) const {

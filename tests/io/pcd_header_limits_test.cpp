@@ -75,6 +75,25 @@ TEST(PcdHeaderLimits, OddFieldSizeIsAnError) {
                               "field 3 has SIZE 3; PCD fields are 1, 2, 4 or 8 bytes");
 }
 
+// Found by fuzz_pcd_ascii: PCL gives an unknown TYPE letter a type number of
+// its own, whose values were then written 8 bytes wide into a 1-byte field.
+TEST(PcdHeaderLimits, UnknownTypeOrTypeSizeMismatchIsAnError) {
+  testing::ScratchDirectory dir;
+  const std::string path = dir.file("type.pcd");
+  const std::string body = "0 0 1 1 2 3\n1 0 1 4 5 6\n";
+  const std::string head =
+      "VERSION 0.7\nFIELDS x y z r g b\nSIZE 4 4 4 1 1 1\nTYPE F F F \xA3U U U\n"
+      "COUNT 1 1 1 1 1 1\nWIDTH 2\nHEIGHT 1\nPOINTS 2\nDATA ascii\n";
+  testing::write_text(path, head + body);
+  testing::expect_input_error([&] { read_cloud(path); }, "type.pcd", 0,
+                              "field 'r' has a TYPE and SIZE that are no PCD type");
+  std::string float_byte = head;
+  float_byte.replace(float_byte.find("\xA3U"), 2, "F");
+  testing::write_text(path, float_byte + body);
+  testing::expect_input_error([&] { read_cloud(path); }, "type.pcd", 0,
+                              "field 'r' has a TYPE and SIZE that are no PCD type");
+}
+
 TEST(PcdHeaderLimits, DecompressionBombIsRefusedWithTheSizes) {
   testing::ScratchDirectory dir;
   const std::string path = dir.file("bomb.pcd");
