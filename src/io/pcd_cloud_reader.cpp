@@ -131,11 +131,13 @@ class PcdCloudReader {
     // Both below kMaxPcdHeaderNumber = 2^32, so the product fits.
     const std::uint64_t declared = width.empty() ? points[0] : width[0] * rows;
     const std::uint64_t available = bytes_.size() > data_end ? bytes_.size() - data_end : 0;
-    // At most: ascii, a value and a separator (2 bytes) per value; binary, the
-    // bytes there are; binary_compressed, what pcd_limits.hpp allows.
+    // At most: ascii, a value and a separator (2 bytes) per value, or the
+    // claim any header may make; binary, the bytes there are;
+    // binary_compressed, what pcd_limits.hpp allows.
     std::uint64_t most_bytes = available;
     if (data == "ascii") {
       most_bytes = values_per_point == 0 ? 0 : (available / 2 + 1) / values_per_point * point_size;
+      most_bytes = std::max(most_bytes, kPcdExpansionFloorBytes);
     } else if (data != "binary") {
       most_bytes = most_pcd_decoded_bytes(available);
     }
