@@ -20,7 +20,8 @@ Json::Value read_json_file(const std::string& path, const std::string& what) {
   Json::CharReaderBuilder builder;
   builder["collectComments"] = false;
   builder["rejectDupKeys"] = true;
-  builder["stackLimit"] = 256;
+  // These files are a few levels deep; deeper is a mistake or an attack.
+  builder["stackLimit"] = 64;
   const std::unique_ptr<Json::CharReader> reader(builder.newCharReader());
   Json::Value root;
   std::string errors;
