@@ -107,10 +107,43 @@ ClassMetrics class_metrics(const ConfusionMatrix& matrix, std::size_t c) {
   return m;
 }
 
+// Whether `rule` averages class m in, and so counts an undefined figure as 0.
+bool averaged(const ClassMetrics& m, MeanOver rule) {
+  switch (rule) {
+    case MeanOver::support:
+      return m.support > 0;
+    case MeanOver::scannet:
+      return m.iou.has_value();
+    case MeanOver::pointcept:
+      return true;
+  }
+  return false;
+}
+
 }  // namespace
 
-SegmentationMetrics compute_metrics(const ConfusionMatrix& matrix) {
+const char* to_string(MeanOver rule) {
+  switch (rule) {
+    case MeanOver::support:
+      return "support";
+    case MeanOver::scannet:
+      return "scannet";
+    case MeanOver::pointcept:
+      return "pointcept";
+  }
+  return "support";
+}
+
+std::optional<MeanOver> parse_mean_over(const std::string& text) {
+  for (const MeanOver rule : {MeanOver::support, MeanOver::scannet, MeanOver::pointcept}) {
+    if (text == to_string(rule)) return rule;
+  }
+  return std::nullopt;
+}
+
+SegmentationMetrics compute_metrics(const ConfusionMatrix& matrix, MeanOver mean_over) {
   SegmentationMetrics metrics;
+  metrics.mean_over = mean_over;
   metrics.points = matrix.total();
   metrics.skipped = matrix.skipped();
   double iou_sum = 0.0;
@@ -119,15 +152,16 @@ SegmentationMetrics compute_metrics(const ConfusionMatrix& matrix) {
     ClassMetrics m = class_metrics(matrix, c);
     metrics.correct += m.tp;
     metrics.other += matrix.count(c, matrix.other_column());
-    if (m.support > 0) {
-      ++metrics.classes_with_support;
-      iou_sum += *m.iou;
-      recall_sum += *m.recall;
+    if (m.support > 0) ++metrics.classes_with_support;
+    if (averaged(m, mean_over)) {
+      ++metrics.classes_averaged;
+      iou_sum += m.iou.value_or(0.0);
+      recall_sum += m.recall.value_or(0.0);
     }
     metrics.classes.push_back(std::move(m));
   }
-  if (metrics.classes_with_support > 0) {
-    const auto n = static_cast<double>(metrics.classes_with_support);
+  if (metrics.classes_averaged > 0) {
+    const auto n = static_cast<double>(metrics.classes_averaged);
     metrics.miou = iou_sum / n;
     metrics.mean_class_accuracy = recall_sum / n;
   }

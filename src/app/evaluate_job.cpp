@@ -101,6 +101,7 @@ EvaluateReport run_evaluate(const EvaluateRequest& request, const Progress& prog
 
     SceneEvaluation scene = evaluate_scene(loaded.input, report.mapping, request.max_distance,
                                            request.threads, progress);
+    scene.metrics = compute_metrics(scene.confusion, request.mean_over);
     scene.dropped_nan = loaded.dropped_nan;
     scene.skipped_lines = loaded.skipped_lines;
     report.transfer_seconds += scene.transfer_seconds;
@@ -108,7 +109,7 @@ EvaluateReport run_evaluate(const EvaluateRequest& request, const Progress& prog
     report.confusion += scene.confusion;
     report.scenes.push_back(std::move(scene));
   }
-  report.metrics = compute_metrics(report.confusion);
+  report.metrics = compute_metrics(report.confusion, request.mean_over);
   progress("done", 1.0);
 
   if (!request.out.empty()) {
@@ -137,6 +138,8 @@ Json::Value to_json(const SegmentationMetrics& metrics) {
   json["miou"] = to_json(metrics.miou);
   json["overall_accuracy"] = to_json(metrics.overall_accuracy);
   json["mean_class_accuracy"] = to_json(metrics.mean_class_accuracy);
+  json["mean_over"] = to_string(metrics.mean_over);
+  json["classes_averaged"] = Json::UInt64(metrics.classes_averaged);
   json["classes_with_support"] = Json::UInt64(metrics.classes_with_support);
   json["points"] = Json::UInt64(metrics.points);
   json["correct_points"] = Json::UInt64(metrics.correct);

@@ -122,7 +122,8 @@ std::vector<JobInfo> make_jobs() {
                   "Conventions: ground truth outside the evaluation classes is skipped; a\n"
                   "prediction outside them is a miss of the true class, no class's false\n"
                   "positive; a class with neither ground truth nor predictions has no IoU.\n"
-                  "mIoU and mean class accuracy average the classes that have ground truth.",
+                  "mIoU and mean class accuracy average the classes mean_over names (default:\n"
+                  "those with ground truth; docs/metrics.md has the three rules).",
                   {},
                   {}},
           &evaluate_keys, &run_evaluate),

@@ -10,11 +10,24 @@ namespace occlusion::job {
 // `text` as one shell word: 'it'\''s' for it's.
 std::string shell_quote(const std::string& text);
 
+struct ShellResult {
+  // The exit status; a command killed by signal s gives 128 + s, as the
+  // shell reports it.
+  int status = 0;
+  bool timed_out = false;  // killed because it ran longer than the limit
+  // The last bytes (at most kShellOutputTail) of what it wrote on stdout and
+  // stderr: why it failed, for a report.
+  std::string output_tail;
+};
+inline constexpr std::size_t kShellOutputTail = 2000;
+
 // Runs `command` with /bin/sh -c in its own process group, stdin from
-// /dev/null and its stdout on our stderr (our stdout carries --json's one
-// object). Returns the exit status; a command killed by signal s returns
-// 128 + s, as the shell reports it. On cancel the whole group is killed and
-// Cancelled thrown. std::runtime_error when no process can be started.
-int run_shell_command(const std::string& command, const Progress& progress);
+// /dev/null and its stdout and stderr forwarded to our stderr (our stdout
+// carries --json's one object) while their tail is kept. With
+// timeout_seconds > 0 the whole group is killed once it has run that long.
+// On cancel the whole group is killed and Cancelled thrown.
+// std::runtime_error when no process can be started.
+ShellResult run_shell_command(const std::string& command, const Progress& progress,
+                              double timeout_seconds = 0.0);
 
 }  // namespace occlusion::job

@@ -1,5 +1,7 @@
 #include "occlusion/app/study_job.hpp"
 
+#include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <limits>
 #include <map>
@@ -43,10 +45,32 @@ std::vector<std::string> scene_names(const std::vector<std::string>& scenes) {
   return names;
 }
 
-// A run's steps as stages of the whole shard: "[2/6] office_1 pattern_4:
-// scanning", with the fraction of the shard's runs done.
-Progress run_progress(const Progress& outer, const std::string& prefix, std::size_t position,
-                      std::size_t runs) {
+// "4:05" or "1:02:03".
+std::string duration(double seconds) {
+  const auto whole = static_cast<long long>(seconds + 0.5);
+  char text[32];
+  if (whole >= 3600) {
+    std::snprintf(text, sizeof text, "%lld:%02lld:%02lld", whole / 3600, whole / 60 % 60,
+                  whole % 60);
+  } else {
+    std::snprintf(text, sizeof text, "%lld:%02lld", whole / 60, whole % 60);
+  }
+  return text;
+}
+
+// A run's steps as stages of the whole shard: "[run 2/6, 0:42 elapsed, ~1:24
+// left] office_1 pattern_4: scanning", with the fraction of the runs to make
+// that is done. The estimate is the mean time of the runs made so far times
+// the runs left (this one included); none before the first run ends.
+Progress run_progress(const Progress& outer, const std::string& name, std::size_t position,
+                      std::size_t runs, double elapsed) {
+  std::string prefix = "[run " + std::to_string(position) + "/" + std::to_string(runs) + ", " +
+                       duration(elapsed) + " elapsed";
+  if (position > 1) {
+    const double per_run = elapsed / static_cast<double>(position - 1);
+    prefix += ", ~" + duration(per_run * static_cast<double>(runs - position + 1)) + " left";
+  }
+  prefix += "] " + name + ": ";
   Progress inner;
   inner.cancel = outer.cancel;
   inner.report = [=](const std::string& stage, double fraction) {
@@ -56,7 +80,76 @@ Progress run_progress(const Progress& outer, const std::string& prefix, std::siz
   return inner;
 }
 
+// The rows of `table` for this study's runs that were made with other
+// parameters: UsageError naming the keys that differ.
+void check_fingerprints(const CsvTable& table, const std::map<std::string, std::string>& expected,
+                        const Json::Value& now, const std::string& out) {
+  std::size_t stale = 0;
+  std::set<std::string> configurations;
+  const std::size_t fingerprint = table.column("fingerprint");
+  for (const auto& row : table.rows) {
+    const auto it = expected.find(job::run_key(table, row));
+    if (it == expected.end() || row[fingerprint] == it->second) continue;
+    ++stale;
+    configurations.insert(row[table.column("configuration")]);
+  }
+  if (stale == 0) return;
+  const std::string path = job::parameters_path(out);
+  std::string keys;
+  if (const auto before = job::read_parameters(path)) {
+    keys = job::describe_differences(job::row_parameters_of(*before), job::row_parameters_of(now));
+    // The configurations' viewpoints are in the fingerprint too.
+    for (const auto& name : configurations) {
+      const Json::Value was = job::configuration_of(*before, name),
+                        is = job::configuration_of(now, name);
+      if (!job::differing_keys(was, is).empty() || was.isNull() != is.isNull())
+        keys += std::string(keys.empty() ? "" : ", ") + "configuration '" + name + "'";
+    }
+    if (keys.empty()) keys = "none that " + path + " records (was it edited?)";
+  } else {
+    keys = "unknown (" + path + " is missing)";
+  }
+  throw UsageError(out + "/study.csv has " + std::to_string(stale) +
+                   " rows made with other parameters; keys that differ: " + keys +
+                   ". Resume with the same parameters, give another --out, or start again "
+                   "with --fresh (which drops the rows in study.csv)");
+}
+
+// The shards' study.parameters.json (beside each CSV), which must agree.
+Json::Value merged_parameters(const std::vector<std::string>& inputs,
+                              std::vector<std::string>& warnings) {
+  std::optional<Json::Value> first;
+  std::string first_path;
+  for (const auto& input : inputs) {
+    const std::string path = job::parameters_path(fs::path(input).parent_path().string());
+    const auto parameters = job::read_parameters(path);
+    if (!parameters) {
+      warnings.push_back(input + ": no " + path +
+                         " beside it, so its parameters are not checked against the others'");
+      continue;
+    }
+    if (!first) {
+      first = parameters;
+      first_path = path;
+    } else {
+      // Where the scenes and files are may differ from machine to machine.
+      Json::Value a = job::row_parameters_of(*first), b = job::row_parameters_of(*parameters);
+      a["configurations"] = (*first)["configurations"];
+      b["configurations"] = (*parameters)["configurations"];
+      if (!job::differing_keys(a, b).empty()) {
+        throw UsageError("study merge: " + path + " and " + first_path + " differ: " +
+                         job::describe_differences(a, b) + "; only shards of one study merge");
+      }
+    }
+  }
+  return first.value_or(Json::Value(Json::objectValue));
+}
+
 void finish(StudyReport& report, const std::string& out, job::Clock::time_point start) {
+  report.runs_failed = 0;
+  for (const auto& row : report.table.rows) {
+    if (job::failed_row(report.table, row)) ++report.runs_failed;
+  }
   report.total_seconds = job::seconds_since(start);
   job::write_study_summary(report, out);
 }
@@ -143,54 +236,84 @@ StudyReport run_study(const StudyRequest& request, const Progress& progress) {
   const StudyShard shard = parse_shard(request.shard);
   job::StudyContext context{request, resolve_mapping(request.mapping_path, request.ignored_classes),
                             read_openings(request.tracing.polygon_path),
-                            (fs::path(request.out) / "runs").string()};
+                            (fs::path(request.out) / "runs").string(),
+                            job::row_parameters(request)};
   ensure_directory(context.runs_dir);
   const std::string csv_path = (fs::path(request.out) / "study.csv").string();
   StudyReport report;
   report.request = request;
-  report.table = job::read_study_table(csv_path, job::study_columns(context.mapping));
-  std::set<std::string> done;
-  for (const auto& row : report.table.rows) done.insert(job::run_key(report.table, row));
+  report.parameters = job::study_parameters(request);
+  const std::vector<std::string> columns = job::study_columns(context.mapping);
+  report.table = request.fresh ? CsvTable{columns, {}} : job::read_study_table(csv_path, columns);
 
   const std::vector<std::string> names = scene_names(request.scenes);
   const std::size_t configurations = request.configurations.size();
-  report.runs_total = names.size() * configurations;
-  for (std::size_t k = shard.index; k < report.runs_total; k += shard.count) ++report.runs_in_shard;
-  std::size_t position = 0;  // among this shard's runs, for progress
-  for (std::size_t s = 0; s < names.size(); ++s) {
-    std::optional<job::LoadedCloud> scene;  // loaded once, for its first run to be made
-    for (std::size_t c = 0; c < configurations; ++c) {
-      const std::size_t k = s * configurations + c;
-      if (k % shard.count != shard.index) continue;
-      ++position;
-      const NamedViewpointChoice& configuration = request.configurations[c];
-      if (done.count(names[s] + '\n' + configuration.name) > 0) {
-        ++report.runs_skipped;
-        continue;
-      }
-      if (!scene) {
-        progress("loading " + names[s],
-                 static_cast<double>(position - 1) / static_cast<double>(report.runs_in_shard));
-        scene = job::load_cloud(request.scenes[s], request.tracing.skip_bad_lines);
-        job::check_ground_truth(request.scenes[s], scene->cloud, context.mapping);
-        if (scene->dropped_nan + scene->skipped_lines > 0) {
-          report.warnings.push_back(request.scenes[s] + ": reading dropped " +
-                                    std::to_string(scene->dropped_nan + scene->skipped_lines) +
-                                    " points (NaN or bad lines)");
-        }
-      }
-      const job::StudyRunInput run{k, names[s], request.scenes[s], &scene->cloud, &configuration};
-      const std::string prefix = "[" + std::to_string(position) + "/" +
-                                 std::to_string(report.runs_in_shard) + "] " + names[s] + " " +
-                                 configuration.name + ": ";
-      const job::StudyRow row = job::run_study_once(
-          context, run, run_progress(progress, prefix, position, report.runs_in_shard),
-          report.warnings);
-      report.table.rows.push_back(job::study_cells(row, context.mapping));
-      job::sort_by_run(report.table);
-      write_csv(csv_path, report.table);
-      ++report.runs_computed;
+  std::map<std::string, std::string> fingerprints;  // run key -> the fingerprint it must have
+  for (const auto& name : names) {
+    for (const auto& configuration : request.configurations) {
+      fingerprints[name + '\n' + configuration.name] =
+          job::row_fingerprint(context.row_parameters, configuration);
     }
+  }
+  check_fingerprints(report.table, fingerprints, report.parameters, request.out);
+  // Failed rows are made again, unless asked to keep them.
+  if (!request.skip_failed) {
+    auto& rows = report.table.rows;
+    rows.erase(std::remove_if(rows.begin(), rows.end(),
+                              [&](const auto& row) {
+                                return job::failed_row(report.table, row) &&
+                                       fingerprints.count(job::run_key(report.table, row)) > 0;
+                              }),
+               rows.end());
+  }
+  std::set<std::string> done;
+  for (const auto& row : report.table.rows) done.insert(job::run_key(report.table, row));
+  // Before the first run, so that an interrupted study has it too.
+  job::write_parameters(job::parameters_path(request.out), report.parameters);
+  if (request.fresh) write_csv(csv_path, report.table);
+
+  // The runs to make now, in run order: (scene, configuration).
+  report.runs_total = names.size() * configurations;
+  std::vector<std::pair<std::size_t, std::size_t>> todo;
+  for (std::size_t k = shard.index; k < report.runs_total; k += shard.count) {
+    ++report.runs_in_shard;
+    const std::size_t s = k / configurations, c = k % configurations;
+    if (done.count(names[s] + '\n' + request.configurations[c].name) > 0) {
+      ++report.runs_skipped;
+    } else {
+      todo.emplace_back(s, c);
+    }
+  }
+  const auto runs_start = job::Clock::now();
+  std::optional<job::LoadedCloud> scene;  // the scene of the previous run, loaded once
+  std::size_t loaded = names.size();
+  for (std::size_t i = 0; i < todo.size(); ++i) {
+    const auto [s, c] = todo[i];
+    const NamedViewpointChoice& configuration = request.configurations[c];
+    const double elapsed = job::seconds_since(runs_start);
+    const Progress run_steps =
+        run_progress(progress, names[s] + " " + configuration.name, i + 1, todo.size(), elapsed);
+    if (loaded != s) {
+      scene.reset();
+      run_steps("loading the scene", 0.0);
+      scene = job::load_cloud(request.scenes[s], request.tracing.skip_bad_lines);
+      loaded = s;
+      job::check_ground_truth(request.scenes[s], scene->cloud, context.mapping);
+      if (scene->dropped_nan + scene->skipped_lines > 0) {
+        report.warnings.push_back(request.scenes[s] + ": reading dropped " +
+                                  std::to_string(scene->dropped_nan + scene->skipped_lines) +
+                                  " points (NaN or bad lines)");
+      }
+    }
+    const job::StudyRunInput run{s * configurations + c, names[s], request.scenes[s], &scene->cloud,
+                                 &configuration};
+    const job::StudyRow row = job::run_study_once(context, run, run_steps, report.warnings);
+    report.table.rows.push_back(job::study_cells(row, context.mapping));
+    job::sort_by_run(report.table);
+    // Whole rows only: the file is replaced, never appended to, so an
+    // interruption (Ctrl-C, a scheduler's SIGTERM) leaves every finished row.
+    write_csv(csv_path, report.table);
+    ++report.runs_computed;
   }
   progress("summary", 1.0);
   finish(report, request.out, start);
@@ -207,6 +330,7 @@ StudyReport run_study_merge(const std::vector<std::string>& inputs, const std::s
   std::vector<CsvTable> tables;
   for (const auto& input : inputs) tables.push_back(read_csv(input));
   report.table = job::merge_study_tables(tables, inputs, report.warnings);
+  report.parameters = merged_parameters(inputs, report.warnings);
   ensure_directory(out);
   write_csv((fs::path(out) / "study.csv").string(), report.table);
   finish(report, out, start);
@@ -236,6 +360,7 @@ Json::Value to_json(const StudyReport& report) {
   json["runs_in_shard"] = Json::UInt64(report.runs_in_shard);
   json["runs_skipped"] = Json::UInt64(report.runs_skipped);
   json["runs_computed"] = Json::UInt64(report.runs_computed);
+  json["runs_failed"] = Json::UInt64(report.runs_failed);
 
   Json::Value rows(Json::arrayValue);
   for (const auto& row : table.rows) {
@@ -249,9 +374,13 @@ Json::Value to_json(const StudyReport& report) {
   }
   json["rows"] = rows;
 
-  Json::Value parameters(Json::objectValue);
+  Json::Value parameters = report.parameters;
   if (report.job == "study") {
-    parameters = parameters_json(study_keys(), q);
+    // The fingerprinted parameters, then every declared key they leave out.
+    const Json::Value declared = parameters_json(study_keys(), q);
+    for (const auto& name : declared.getMemberNames()) {
+      if (!parameters.isMember(name)) parameters[name] = declared[name];
+    }
     parameters["segmenter"] = job::segmenter_name(q.segmenter);
   } else {
     parameters["inputs"] = to_json(report.inputs);

@@ -83,6 +83,17 @@ const Keys<StudyRequest>& study_keys() {
            .doc("'baseline' (a geometric baseline on the region-growing planes, not a network) "
                 "or a command with {input} (the scanned cloud) and {output} (its prediction, "
                 "evaluation ids), e.g. 'python infer.py {input} {output}'"),
+       key("segmenter_timeout", &R::segmenter_timeout)
+           .range(0, 1e9)
+           .unit("seconds")
+           .metavar("S")
+           .doc("a segmenter still running after S seconds is killed and its run fails; 0: no "
+                "limit"),
+       key("skip_failed", &R::skip_failed)
+           .doc("a resumed study leaves failed runs as they are instead of retrying them"),
+       key("fresh", &R::fresh)
+           .doc("start the study again in OUT, dropping its rows, instead of resuming (needed "
+                "when parameters changed)"),
        key("segmenter_output", &R::segmenter_output)
            .choices({"labels", "label", "ply", "pcd", "txt"})
            .doc("extension of {output}"),

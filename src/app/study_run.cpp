@@ -8,6 +8,7 @@
 #include "job_support.hpp"
 #include "occlusion/app/errors.hpp"
 #include "occlusion/io/cloud_io.hpp"
+#include "occlusion/io/input_error.hpp"
 #include "study_support.hpp"
 
 namespace occlusion::job {
@@ -69,6 +70,8 @@ StudyRow run_study_once(const StudyContext& context, const StudyRunInput& run,
   row.configuration = run.configuration->name;
   row.points = cloud.size();
   row.segmenter = segmenter_name(request.segmenter);
+  row.metrics.mean_over = request.mean_over;
+  row.fingerprint = row_fingerprint(context.row_parameters, *run.configuration);
   const std::string stem = run_file_stem(run.scene_name, run.configuration->name);
 
   progress("scanning", 0.0);
@@ -107,23 +110,37 @@ StudyRow run_study_once(const StudyContext& context, const StudyRunInput& run,
   row.occlusion_seconds = seconds_since(start);
   progress.check_cancel();
 
-  progress("segmenting", 0.5);
-  start = Clock::now();
-  SceneInput scene;
-  scene.prediction = segment_scanned_cloud(context, scanned, scanned_path, stem, inner,
-                                           scene.prediction_name, warnings);
-  row.segmentation_seconds = seconds_since(start);
-  progress.check_cancel();
+  // A segmenter that fails, or a prediction that cannot be scored, fails
+  // this run alone: its row says why, and the study goes on.
+  std::string output_tail;
+  try {
+    progress("segmenting", 0.5);
+    start = Clock::now();
+    SceneInput scene;
+    scene.prediction = segment_scanned_cloud(context, scanned, scanned_path, stem, inner,
+                                             scene.prediction_name, output_tail, warnings);
+    row.segmentation_seconds = seconds_since(start);
+    progress.check_cancel();
 
-  progress("scoring", 0.75);
-  start = Clock::now();
-  scene.ground_truth_name = scanned_path;
-  scene.ground_truth = std::move(scanned);
-  const SceneEvaluation evaluation =
-      evaluate_scene(scene, context.mapping, request.max_distance, request.tracing.threads, inner);
-  add_scene_warnings(evaluation, request.max_distance, warnings);
-  row.metrics = evaluation.metrics;
-  row.evaluation_seconds = seconds_since(start);
+    progress("scoring", 0.75);
+    start = Clock::now();
+    scene.ground_truth_name = scanned_path;
+    scene.ground_truth = std::move(scanned);
+    const SceneEvaluation evaluation = evaluate_scene(scene, context.mapping, request.max_distance,
+                                                      request.tracing.threads, inner);
+    add_scene_warnings(evaluation, request.max_distance, warnings);
+    row.metrics = compute_metrics(evaluation.confusion, request.mean_over);
+    row.evaluation_seconds = seconds_since(start);
+  } catch (const RunFailure& e) {
+    row.failure = e.what();
+    output_tail = e.output_tail;
+  } catch (const InputError& e) {
+    row.failure = std::string("its prediction cannot be scored: ") + e.what();
+  }
+  if (!row.failure.empty()) {
+    if (!output_tail.empty()) row.failure += "; segmenter output ends: " + output_tail;
+    warnings.push_back(row.scene + " " + row.configuration + ": run failed: " + row.failure);
+  }
   return row;
 }
 

@@ -1,7 +1,6 @@
 // The study's segmentation step: the built-in baseline, or the user's command.
 
 #include <filesystem>
-#include <stdexcept>
 
 #include "evaluation_support.hpp"
 #include "occlusion/analysis/baseline_segmenter.hpp"
@@ -71,9 +70,18 @@ Prediction baseline(const StudyContext& context, const PointCloud& scanned, cons
   return prediction;
 }
 
+// The output's last lines on one line, for a CSV cell and a message.
+std::string one_line(std::string text) {
+  while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
+  for (char& c : text) {
+    if (c == '\n' || c == '\r') c = '|';
+  }
+  return text;
+}
+
 Prediction external(const StudyContext& context, const std::string& scanned_path,
-                    const std::string& stem, const Progress& progress,
-                    std::string& prediction_path) {
+                    const std::string& stem, const Progress& progress, std::string& prediction_path,
+                    std::string& output_tail) {
   const StudyRequest& request = context.request;
   prediction_path =
       (std::filesystem::path(context.runs_dir) / (stem + ".prediction." + request.segmenter_output))
@@ -83,14 +91,20 @@ Prediction external(const StudyContext& context, const std::string& scanned_path
   const std::string command =
       replaced(replaced(request.segmenter, kInput, shell_quote(scanned_path)), kOutput,
                shell_quote(prediction_path));
-  const int status = run_shell_command(command, progress);
-  if (status != 0) {
-    throw std::runtime_error("the segmenter failed (exit status " + std::to_string(status) +
-                             ") on " + scanned_path + ": " + command);
+  const ShellResult result = run_shell_command(command, progress, request.segmenter_timeout);
+  output_tail = one_line(result.output_tail);
+  if (result.timed_out) {
+    throw RunFailure("the segmenter timed out after " + std::to_string(request.segmenter_timeout) +
+                         " s (segmenter_timeout) and was killed",
+                     output_tail);
+  }
+  if (result.status != 0) {
+    throw RunFailure("the segmenter failed (exit status " + std::to_string(result.status) + ")",
+                     output_tail);
   }
   if (!std::filesystem::exists(prediction_path)) {
-    throw std::runtime_error("the segmenter wrote nothing to {output} (" + prediction_path +
-                             "): " + command);
+    throw RunFailure("the segmenter wrote nothing to {output} (" + prediction_path + ")",
+                     output_tail);
   }
   return load_prediction(prediction_path, request.tracing.skip_bad_lines);
 }
@@ -115,11 +129,11 @@ void validate_segmenter(const StudyRequest& request) {
 Prediction segment_scanned_cloud(const StudyContext& context, const PointCloud& scanned,
                                  const std::string& scanned_path, const std::string& stem,
                                  const Progress& progress, std::string& prediction_path,
-                                 std::vector<std::string>& warnings) {
+                                 std::string& output_tail, std::vector<std::string>& warnings) {
   if (is_baseline(context.request.segmenter)) {
     return baseline(context, scanned, stem, progress, prediction_path, warnings);
   }
-  return external(context, scanned_path, stem, progress, prediction_path);
+  return external(context, scanned_path, stem, progress, prediction_path, output_tail);
 }
 
 }  // namespace occlusion::job

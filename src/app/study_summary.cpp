@@ -1,5 +1,6 @@
 // What the study's rows say together: correlations, the plot, the report.
 
+#include <algorithm>
 #include <filesystem>
 #include <ostream>
 
@@ -55,11 +56,50 @@ std::vector<std::string> segmenters(const CsvTable& table) {
   return names;
 }
 
+bool constant(const std::vector<double>& values) {
+  return std::all_of(values.begin(), values.end(), [&](double v) { return v == values.front(); });
+}
+
+std::string joined(const Json::Value& list) {
+  std::string text;
+  for (const auto& item : list) text += (text.empty() ? "" : ", ") + item.asString();
+  return text;
+}
+
+// A panel's title: the measure as this study took it (the parameters say
+// from where, and which classes block the exterior rays).
+std::string panel_title(const Measure& measure, const Json::Value& parameters) {
+  const std::string column = measure.column;
+  if (column == "visible_fraction" || !parameters.isMember("occlusion_num_vp"))
+    return measure.label;
+  const unsigned grid = parameters["occlusion_num_vp"].asUInt();
+  const std::string from = grid == 0 ? "from each configuration's viewpoints"
+                                     : "from " + std::to_string(grid) + " grid viewpoints";
+  if (column == "exterior_occlusion_level") {
+    return "exterior occlusion level (-poc " + from +
+           "; blocking: " + joined(parameters["exterior_classes"]) + ")";
+  }
+  return "occlusion level (-poc " + from + ")";
+}
+
+// The plot's title: what was measured, with which settings.
+std::string plot_title(const StudyReport& report) {
+  const Json::Value& p = report.parameters;
+  std::string title = "mIoU against occlusion, one point per run (" +
+                      std::to_string(report.table.rows.size() - report.runs_failed) + " runs";
+  if (p.isMember("point_radius")) {
+    title += "; " + p["segmenter"].asString() + ", mIoU over " + p["mean_over"].asString() +
+             " classes, point radius " + format_number("%g", p["point_radius"].asDouble()) + ", " +
+             std::to_string(p["num_rays_per_vp"].asUInt64()) + " rays per viewpoint";
+  }
+  return title + ")";
+}
+
 std::string plot(const StudyReport& report) {
   std::vector<ScatterPanel> panels;
   for (const auto& measure : kMeasures) {
     ScatterPanel panel;
-    panel.title = measure.label;
+    panel.title = panel_title(measure, report.parameters);
     panel.x_label = measure.column;
     panel.y_label = "mIoU";
     pairs(report.table, measure.column, panel.x, panel.y);
@@ -74,8 +114,7 @@ std::string plot(const StudyReport& report) {
       panels.push_back(panel);
     }
   }
-  return scatter_plot_svg(panels, "mIoU against occlusion, one point per run (" +
-                                      std::to_string(report.table.rows.size()) + " runs)");
+  return scatter_plot_svg(panels, plot_title(report));
 }
 
 void write_markdown(std::ostream& out, const StudyReport& report, const std::string& svg_name) {
@@ -91,13 +130,19 @@ void write_markdown(std::ostream& out, const StudyReport& report, const std::str
   }
   out << table.rows.size() << " runs";
   if (report.job == "study") {
-    out << " (" << report.runs_computed << " computed now, " << report.runs_skipped
-        << " already in study.csv; shard " << report.request.shard << " of " << report.runs_total
-        << " runs in all)";
+    out << " (" << report.runs_failed << " failed; " << report.runs_computed << " computed now, "
+        << report.runs_skipped << " already in study.csv; shard " << report.request.shard << " of "
+        << report.runs_total << " runs in all)";
   } else {
-    out << ", merged from " << report.inputs.size() << " CSV files";
+    out << " (" << report.runs_failed << " failed), merged from " << report.inputs.size()
+        << " CSV files";
   }
-  out << ".\n\n## Correlation with mIoU\n\n"
+  out << ".";
+  if (report.parameters.isMember("mean_over")) {
+    out << " mIoU averages over the `" << report.parameters["mean_over"].asString()
+        << "` classes (mean_over, docs/metrics.md).";
+  }
+  out << "\n\n## Correlation with mIoU\n\n"
       << "| measure | runs | Pearson r | Spearman ρ | fitted line |\n"
       << "|---|---:|---:|---:|---|\n";
   for (const auto& m : report.correlations) {
@@ -111,18 +156,29 @@ void write_markdown(std::ostream& out, const StudyReport& report, const std::str
   out << "\nA correlation needs at least 3 runs and a measure that varies; – marks one that is "
          "undefined.\n\n"
       << "![mIoU against occlusion](" << svg_name << ")\n\n## Runs\n\n"
-      << "| scene | configuration | viewpoints | visible fraction | occlusion level | exterior "
-         "occlusion level | mIoU | overall accuracy |\n"
-      << "|---|---|---:|---:|---:|---:|---:|---:|\n";
+      << "| scene | configuration | status | viewpoints | visible fraction | occlusion level | "
+         "exterior occlusion level | mIoU | overall accuracy |\n"
+      << "|---|---|---|---:|---:|---:|---:|---:|---:|\n";
   const auto cell = [&](const std::vector<std::string>& row, const char* column) {
     return row[table.column(column)];
   };
   for (const auto& row : table.rows) {
     out << "| " << markdown_cell(cell(row, "scene")) << " | "
-        << markdown_cell(cell(row, "configuration")) << " | " << cell(row, "viewpoints") << " | "
-        << fixed(cell(row, "visible_fraction")) << " | " << fixed(cell(row, "occlusion_level"))
-        << " | " << fixed(cell(row, "exterior_occlusion_level")) << " | "
-        << fixed(cell(row, "miou")) << " | " << fixed(cell(row, "overall_accuracy")) << " |\n";
+        << markdown_cell(cell(row, "configuration")) << " | " << cell(row, "status") << " | "
+        << cell(row, "viewpoints") << " | " << fixed(cell(row, "visible_fraction")) << " | "
+        << fixed(cell(row, "occlusion_level")) << " | "
+        << fixed(cell(row, "exterior_occlusion_level")) << " | " << fixed(cell(row, "miou"))
+        << " | " << fixed(cell(row, "overall_accuracy")) << " |\n";
+  }
+  if (report.runs_failed > 0) {
+    out << "\n## Failed runs\n\nThey have no mIoU and stay out of the correlations; a resume "
+           "makes them again.\n\n| scene | configuration | why |\n|---|---|---|\n";
+    for (const auto& row : table.rows) {
+      if (!failed_row(table, row)) continue;
+      out << "| " << markdown_cell(cell(row, "scene")) << " | "
+          << markdown_cell(cell(row, "configuration")) << " | "
+          << markdown_cell(cell(row, "failure")) << " |\n";
+    }
   }
   std::vector<std::size_t> classes;
   for (std::size_t c = 0; c < table.columns.size(); ++c) {
@@ -154,7 +210,21 @@ void write_study_summary(StudyReport& report, const std::string& out) {
     std::vector<double> x, y;
     pairs(report.table, measure.column, x, y);
     if (x.empty() && std::string(measure.column) == "exterior_occlusion_level") continue;
-    report.correlations.push_back({measure.column, correlate(x, y)});
+    Correlation correlation = correlate(x, y);
+    // Rounding can leave a constant's variance a hair above 0 and make a
+    // number of it: a constant has no correlation.
+    for (const auto* values : {&x, &y}) {
+      if (values->size() < 2 || !constant(*values)) continue;
+      correlation.pearson.reset();
+      correlation.spearman.reset();
+      correlation.fit.reset();
+      report.warnings.push_back(std::string(values == &x ? measure.column : "miou") +
+                                " is the same (" + format_number("%.10g", values->front()) +
+                                ") in all " + std::to_string(values->size()) + " runs, so its " +
+                                "correlation with " + (values == &x ? "miou" : measure.column) +
+                                " is undefined");
+    }
+    report.correlations.push_back({measure.column, correlation});
   }
   ensure_directory(out);
   const auto path = [&](const char* name) { return (std::filesystem::path(out) / name).string(); };

@@ -3,7 +3,10 @@
 // segmentation (study_segmenter.cpp), the CSV table (study_table.cpp) and the
 // summary (study_summary.cpp). study_job.cpp puts them together.
 
+#include <json/value.h>
+
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -20,7 +23,16 @@ struct StudyContext {
   const StudyRequest& request;
   ClassMapping mapping;
   std::vector<PlanarPolygon> openings;
-  std::string runs_dir;  // OUT/runs: scanned clouds and predictions
+  std::string runs_dir;        // OUT/runs: scanned clouds and predictions
+  Json::Value row_parameters;  // row_parameters(request), for the fingerprints
+};
+
+// Why one run failed on its own (the segmenter crashed, timed out or wrote a
+// bad prediction): the study records a failed row and goes on.
+struct RunFailure : std::runtime_error {
+  RunFailure(const std::string& reason, std::string tail)
+      : std::runtime_error(reason), output_tail(std::move(tail)) {}
+  std::string output_tail;  // the end of the segmenter's stdout and stderr
 };
 
 // One run's figures, as a CSV row holds them.
@@ -33,7 +45,9 @@ struct StudyRow {
   double occlusion_level = 0.0;
   std::optional<double> exterior_occlusion_level, interior_exterior_ratio;
   std::string segmenter;
-  SegmentationMetrics metrics;
+  SegmentationMetrics metrics;  // empty for a failed run
+  std::string failure;          // empty: the run succeeded; else why not, and the stderr tail
+  std::string fingerprint;      // row_fingerprint of the parameters it was made with
   double scan_seconds = 0.0, occlusion_seconds = 0.0, segmentation_seconds = 0.0,
          evaluation_seconds = 0.0;
 };
@@ -61,14 +75,41 @@ std::string run_file_stem(const std::string& scene, const std::string& configura
 std::string segmenter_name(const std::string& segmenter);
 // The scanned cloud's labels as the segmenter predicts them, in evaluation ids
 // (the baseline) or as the command wrote them. `prediction_path` receives the
-// file the prediction is in.
+// file the prediction is in, `output_tail` the end of the command's output.
+// RunFailure for a command that fails, times out or writes nothing;
+// InputError for a prediction that cannot be read.
 Prediction segment_scanned_cloud(const StudyContext& context, const PointCloud& scanned,
                                  const std::string& scanned_path, const std::string& stem,
                                  const Progress& progress, std::string& prediction_path,
-                                 std::vector<std::string>& warnings);
+                                 std::string& output_tail, std::vector<std::string>& warnings);
 // UsageError unless the segmenter is the baseline or a template with {input}
 // and {output}, and segmenter_output an extension -eval reads.
 void validate_segmenter(const StudyRequest& request);
+
+// Every parameter that changes a row's figures (not the scenes, the
+// configurations, the shard, the threads or the output folder), by key; the
+// openings and mapping files by a digest of their contents (polygon_file,
+// mapping_file), so that the rows do not depend on where the files are.
+Json::Value row_parameters(const StudyRequest& request);
+// row_parameters with the scenes, configurations, polygon_path and
+// mapping_path: study.json's list and study.parameters.json's content.
+Json::Value study_parameters(const StudyRequest& request);
+// study_parameters without the scenes, configurations and paths: the row parameters.
+Json::Value row_parameters_of(const Json::Value& study_parameters);
+// The entry of study_parameters' configurations called `name`; null when none is.
+Json::Value configuration_of(const Json::Value& study_parameters, const std::string& name);
+// 16 hex digits hashing the row parameters and the configuration's viewpoints.
+std::string row_fingerprint(const Json::Value& row_parameters,
+                            const NamedViewpointChoice& configuration);
+// Keys whose values differ between two parameter objects, or that only one has.
+std::vector<std::string> differing_keys(const Json::Value& before, const Json::Value& now);
+// "point_radius (was 0.06, now 0.05), ..." for those keys.
+std::string describe_differences(const Json::Value& before, const Json::Value& now);
+// OUT/study.parameters.json: the parameters of the rows in OUT/study.csv.
+std::string parameters_path(const std::string& out);
+// Nothing when the file does not exist; InputError when it is not JSON.
+std::optional<Json::Value> read_parameters(const std::string& path);
+void write_parameters(const std::string& path, const Json::Value& parameters);
 
 // The CSV columns: the run's identity and figures, one iou_<class> per
 // evaluation class of the mapping, then the timings (columns ending _seconds).
@@ -76,6 +117,8 @@ std::vector<std::string> study_columns(const ClassMapping& mapping);
 std::vector<std::string> study_cells(const StudyRow& row, const ClassMapping& mapping);
 // A cell as a number; nothing for an empty cell or text.
 std::optional<double> cell_number(const std::string& cell);
+// Whether a row's `status` is "failed".
+bool failed_row(const CsvTable& table, const std::vector<std::string>& row);
 // "scene\nconfiguration": what makes a run the same run in another CSV.
 std::string run_key(const CsvTable& table, const std::vector<std::string>& row);
 // The study's CSV, or an empty table with `columns` when there is none yet.

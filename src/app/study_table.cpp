@@ -17,6 +17,7 @@ namespace {
 const std::vector<std::string> kRunColumns = {"run",
                                               "scene",
                                               "configuration",
+                                              "status",
                                               "viewpoints",
                                               "viewpoint_positions",
                                               "points",
@@ -26,9 +27,12 @@ const std::vector<std::string> kRunColumns = {"run",
                                               "exterior_occlusion_level",
                                               "interior_exterior_ratio",
                                               "segmenter",
+                                              "mean_over",
                                               "miou",
                                               "overall_accuracy",
                                               "mean_class_accuracy"};
+// After the classes: why a run failed, and what it was made with.
+const std::vector<std::string> kRecordColumns = {"failure", "fingerprint"};
 const std::vector<std::string> kTimingColumns = {"scan_seconds", "occlusion_seconds",
                                                  "segmentation_seconds", "evaluation_seconds"};
 
@@ -66,6 +70,7 @@ bool same_figures(const CsvTable& table, const std::vector<std::string>& a,
 std::vector<std::string> study_columns(const ClassMapping& mapping) {
   std::vector<std::string> columns = kRunColumns;
   for (const auto& c : mapping.evaluation_classes()) columns.push_back("iou_" + c.name);
+  columns.insert(columns.end(), kRecordColumns.begin(), kRecordColumns.end());
   columns.insert(columns.end(), kTimingColumns.begin(), kTimingColumns.end());
   return columns;
 }
@@ -75,6 +80,7 @@ std::vector<std::string> study_cells(const StudyRow& row, const ClassMapping& ma
   std::vector<std::string> cells = {std::to_string(row.run),
                                     row.scene,
                                     row.configuration,
+                                    row.failure.empty() ? "ok" : "failed",
                                     std::to_string(row.viewpoints.size()),
                                     positions(row.viewpoints),
                                     std::to_string(row.points),
@@ -84,6 +90,7 @@ std::vector<std::string> study_cells(const StudyRow& row, const ClassMapping& ma
                                     number(row.exterior_occlusion_level),
                                     number(row.interior_exterior_ratio),
                                     row.segmenter,
+                                    to_string(m.mean_over),
                                     number(m.miou),
                                     number(m.overall_accuracy),
                                     number(m.mean_class_accuracy)};
@@ -92,6 +99,8 @@ std::vector<std::string> study_cells(const StudyRow& row, const ClassMapping& ma
                                       [&](const ClassMetrics& k) { return k.id == c.id; });
     cells.push_back(metrics == m.classes.end() ? "" : number(metrics->iou));
   }
+  cells.push_back(row.failure);
+  cells.push_back(row.fingerprint);
   for (const double seconds : {row.scan_seconds, row.occlusion_seconds, row.segmentation_seconds,
                                row.evaluation_seconds}) {
     cells.push_back(format_number("%.3f", seconds));
@@ -105,6 +114,10 @@ std::optional<double> cell_number(const std::string& cell) {
   const double value = std::strtod(cell.c_str(), &end);
   if (end != cell.c_str() + cell.size() || !std::isfinite(value)) return std::nullopt;
   return value;
+}
+
+bool failed_row(const CsvTable& table, const std::vector<std::string>& row) {
+  return row.at(table.column("status")) == "failed";
 }
 
 std::string run_key(const CsvTable& table, const std::vector<std::string>& row) {

@@ -7,6 +7,7 @@
 
 #include "commands.hpp"
 #include "common_options.hpp"
+#include "interrupt.hpp"
 #include "occlusion/app/config.hpp"
 #include "occlusion/app/errors.hpp"
 #include "progress_printer.hpp"
@@ -78,14 +79,16 @@ int run_job_command(const JobInfo& job, const std::vector<std::string>& args) {
   if (!face.config.empty()) sources.push_back(config_source(load_config(face.config), job));
   sources.push_back(
       source_from_arguments(job_args, job.keys, job.cli_names.front(), job.positional));
-  const JobRun run = job.run(sources, make_progress_printer(job.tag, face.quiet));
+  Progress progress = make_progress_printer(job.tag, face.quiet);
+  progress.cancel = cancel_on_interrupt();
+  const JobRun run = job.run(sources, progress);
   print_warnings(run.warnings);
   if (face.json) {
     print_json(run.json);
   } else {
     printers().at(job.name)(run, face);
   }
-  return 0;
+  return job.name == "study" ? study_exit_status(run) : 0;
 }
 
 }  // namespace occlusion::cli

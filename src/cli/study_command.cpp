@@ -3,6 +3,7 @@
 
 #include "commands.hpp"
 #include "common_options.hpp"
+#include "interrupt.hpp"
 #include "occlusion/app/errors.hpp"
 #include "occlusion/app/job_registry.hpp"
 #include "occlusion/app/study_job.hpp"
@@ -17,9 +18,11 @@ std::string figure(const std::optional<double>& value) {
 
 void print_human(const StudyReport& report) {
   if (report.job == "study") {
-    std::printf("occlusion study: %zu runs made, %zu already in study.csv (shard %s of %zu runs)\n",
-                report.runs_computed, report.runs_skipped, report.request.shard.c_str(),
-                report.runs_total);
+    std::printf(
+        "occlusion study: %zu runs made, %zu already in study.csv (shard %s of %zu runs), %zu "
+        "failed\n",
+        report.runs_computed, report.runs_skipped, report.request.shard.c_str(), report.runs_total,
+        report.runs_failed);
   } else {
     std::printf("occlusion study: %zu runs merged from %zu CSV files\n", report.table.rows.size(),
                 report.inputs.size());
@@ -31,6 +34,13 @@ void print_human(const StudyReport& report) {
   }
   std::printf("  time %.3f s\n", report.total_seconds);
   for (const auto& path : report.outputs) std::printf("  wrote %s\n", path.c_str());
+}
+
+// The study goes on past a failed run, but must not look like a success.
+int failed_status(std::size_t failed) {
+  if (failed == 0) return 0;
+  std::fprintf(stderr, "occlusion: %zu runs failed (status 'failed' in study.csv)\n", failed);
+  return 1;
 }
 
 }  // namespace
@@ -68,7 +78,11 @@ int run_study_merge_command(const std::vector<std::string>& args) {
   } else {
     print_human(report);
   }
-  return 0;
+  return failed_status(report.runs_failed);
+}
+
+int study_exit_status(const JobRun& run) {
+  return failed_status(run.report_as<StudyReport>().runs_failed);
 }
 
 }  // namespace occlusion::cli

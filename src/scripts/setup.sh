@@ -10,6 +10,9 @@ packages=(
   libeigen3-dev libjsoncpp-dev libgtest-dev
   libpcl-dev libflann-dev
   libwebsocketpp-dev libboost-dev libboost-system-dev
+  # The study's sharding recipes, run for real by tests/scripts/study_*_test.sh.
+  slurm-wlm munge parallel
+  # libFuzzer targets with ASan + UBSan (src/scripts/fuzz.sh).
   clang-14 libfuzzer-14-dev libclang-rt-14-dev
 )
 if [[ "${1:-}" == "--bench" ]]; then

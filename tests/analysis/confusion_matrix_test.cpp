@@ -100,6 +100,57 @@ TEST(ConfusionMatrix, MetricsMatchHandComputedValues) {
   EXPECT_EQ(metrics.skipped, 4u);
 }
 
+// The three averaging rules on the worked example: wall 3/7, floor 1/2 and
+// chair 1/3 have ground truth; table (IoU 0, no recall) was only predicted;
+// sofa has neither. Per-class figures do not change with the rule.
+TEST(ConfusionMatrix, MeanOverRulesMatchHandComputedValues) {
+  const ConfusionMatrix m = worked_example();
+  const SegmentationMetrics support = compute_metrics(m, MeanOver::support);
+  EXPECT_EQ(support.classes_averaged, 3u);
+  EXPECT_DOUBLE_EQ(*support.miou, 53.0 / 126.0);
+  EXPECT_DOUBLE_EQ(*support.mean_class_accuracy, 43.0 / 90.0);
+
+  // ScanNet: table's 0 joins the mean, sofa's 0/0 (NaN there) does not.
+  const SegmentationMetrics scannet = compute_metrics(m, MeanOver::scannet);
+  EXPECT_EQ(scannet.mean_over, MeanOver::scannet);
+  EXPECT_EQ(scannet.classes_averaged, 4u);
+  EXPECT_DOUBLE_EQ(*scannet.miou, 53.0 / 168.0);  // (3/7 + 1/2 + 1/3 + 0) / 4
+  EXPECT_DOUBLE_EQ(*scannet.mean_class_accuracy, 43.0 / 120.0);
+
+  // Pointcept: all five classes, sofa and table at 0.
+  const SegmentationMetrics pointcept = compute_metrics(m, MeanOver::pointcept);
+  EXPECT_EQ(pointcept.classes_averaged, 5u);
+  EXPECT_DOUBLE_EQ(*pointcept.miou, 53.0 / 210.0);
+  EXPECT_DOUBLE_EQ(*pointcept.mean_class_accuracy, 43.0 / 150.0);
+
+  for (const auto* metrics : {&scannet, &pointcept}) {
+    EXPECT_DOUBLE_EQ(*metrics->overall_accuracy, 0.5);
+    EXPECT_EQ(metrics->classes_with_support, 3u);
+    ASSERT_EQ(metrics->classes.size(), support.classes.size());
+    for (std::size_t c = 0; c < support.classes.size(); ++c) {
+      EXPECT_EQ(metrics->classes[c].iou, support.classes[c].iou);
+    }
+  }
+}
+
+// A scene where every class has ground truth: the rules agree.
+TEST(ConfusionMatrix, MeanOverRulesAgreeWhenEveryClassOccurs) {
+  ConfusionMatrix m({{0, "wall"}, {1, "floor"}});
+  m.add({0, 0, 1, 1}, {0, 1, 1, 1});  // wall 1/2, floor 2/3
+  for (const MeanOver rule : {MeanOver::support, MeanOver::scannet, MeanOver::pointcept}) {
+    EXPECT_DOUBLE_EQ(*compute_metrics(m, rule).miou, (1.0 / 2.0 + 2.0 / 3.0) / 2.0)
+        << to_string(rule);
+  }
+}
+
+TEST(ConfusionMatrix, MeanOverNamesRoundTrip) {
+  for (const MeanOver rule : {MeanOver::support, MeanOver::scannet, MeanOver::pointcept}) {
+    EXPECT_EQ(parse_mean_over(to_string(rule)), rule);
+  }
+  EXPECT_FALSE(parse_mean_over("ScanNet"));
+  EXPECT_FALSE(parse_mean_over(""));
+}
+
 TEST(ConfusionMatrix, ScenesAreSummedNotAveraged) {
   const std::vector<EvaluationClass> classes = {{0, "wall"}, {1, "floor"}};
   ConfusionMatrix a(classes);

@@ -5,9 +5,12 @@
 
 #include <sstream>
 
+#include "io/scratch_directory.hpp"
 #include "occlusion/app/class_mapping_file.hpp"
 #include "occlusion/app/errors.hpp"
+#include "occlusion/io/cloud_io.hpp"
 #include "occlusion/io/input_error.hpp"
+#include "occlusion/io/label_file.hpp"
 
 namespace occlusion {
 namespace {
@@ -121,6 +124,35 @@ Json::Value parse(const std::string& text) {
   std::istringstream in(text);
   EXPECT_TRUE(Json::parseFromStream(builder, in, &value, &errors)) << errors;
   return value;
+}
+
+// The averaging rules through the job, on files: wall 1/2, floor 1/3 and
+// chair 1/3 have ground truth; clutter (id 25) is predicted once but absent;
+// table 3.1 has 12 evaluation classes.
+TEST(EvaluateJob, MeanOverIsAppliedAndReported) {
+  const testing::ScratchDirectory dir;
+  PointCloud truth;
+  truth.class_names = {"wall", "floor", "chair"};
+  truth.positions = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {3, 0, 0}, {4, 0, 0}, {5, 0, 0}};
+  truth.labels = {0, 0, 1, 2, 2, 1};
+  write_cloud(dir.file("room.ply"), truth);
+  write_label_file(dir.file("room.labels"), {0, 1, 1, 4, 25, 4});
+  EvaluateRequest request;
+  request.ground_truth = {dir.file("room.ply")};
+  request.predictions = {dir.file("room.labels")};
+  const std::pair<MeanOver, double> cases[] = {{MeanOver::support, 7.0 / 18.0},
+                                               {MeanOver::scannet, 7.0 / 24.0},
+                                               {MeanOver::pointcept, 7.0 / 72.0}};
+  for (const auto& [rule, miou] : cases) {
+    request.mean_over = rule;
+    const EvaluateReport report = run_evaluate(request);
+    EXPECT_DOUBLE_EQ(*report.metrics.miou, miou) << to_string(rule);
+    EXPECT_DOUBLE_EQ(*report.scenes.at(0).metrics.miou, miou) << to_string(rule);
+    const Json::Value json = to_json(report);
+    EXPECT_EQ(json["mean_over"].asString(), to_string(rule));
+    EXPECT_EQ(json["parameters"]["mean_over"].asString(), to_string(rule));
+    EXPECT_DOUBLE_EQ(json["miou"].asDouble(), miou);
+  }
 }
 
 TEST(ClassMappingFile, DefaultsToTable3_1) {

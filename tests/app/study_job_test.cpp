@@ -3,6 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <filesystem>
 #include <stdexcept>
 
@@ -50,6 +53,11 @@ std::size_t count(const std::string& text, const std::string& part) {
   for (std::size_t at = text.find(part); at != std::string::npos; at = text.find(part, at + 1)) ++n;
   return n;
 }
+
+// POSIX sh: as many labels as the scanned PLY has points, all wall (id 0).
+const std::string kAllWall =
+    "n=$(head -c 2000 {input} | sed -n 's/^element vertex //p'); "
+    "awk -v n=\"$n\" 'BEGIN { for (i = 0; i < n; i++) print 0 }' > {output}";
 
 TEST(StudyJob, VisibleFractionFallsAsViewpointsAreRemoved) {
   const ScratchDirectory dir;
@@ -151,10 +159,7 @@ TEST(StudyJob, ASegmenterCommandPlugsIn) {
   const ScratchDirectory dir;
   StudyRequest request = office_study(dir.file("study"));
   request.configurations.resize(1);
-  // POSIX sh: as many labels as the scanned PLY has points, all wall (id 0).
-  request.segmenter =
-      "n=$(head -c 2000 {input} | sed -n 's/^element vertex //p'); "
-      "awk -v n=\"$n\" 'BEGIN { for (i = 0; i < n; i++) print 0 }' > {output}";
+  request.segmenter = kAllWall;
   const StudyReport report = run_study(request);
   const CsvTable& table = report.table;
   ASSERT_EQ(table.rows.size(), 1u);
@@ -173,18 +178,239 @@ TEST(StudyJob, ASegmenterCommandPlugsIn) {
   EXPECT_EQ(number(table, 0, "iou_floor+ceiling"), 0.0);
 }
 
-TEST(StudyJob, AFailingSegmenterStopsTheStudyWithoutARow) {
+std::string cell(const CsvTable& table, std::size_t row, const std::string& column) {
+  return table.rows.at(row).at(table.column(column));
+}
+
+// The figures of one row, timings left out.
+std::vector<std::string> row_figures(const CsvTable& table, std::size_t row) {
+  CsvTable one{table.columns, {table.rows.at(row)}};
+  return figures(one).front();
+}
+
+TEST(StudyJob, ARunWhoseSegmenterFailsFailsAloneAndIsRetried) {
+  const ScratchDirectory dir;
+  const std::string flag = dir.file("pattern_4_fails");
+  write_text(flag, "");
+  StudyRequest request = office_study(dir.file("study"));
+  // Fails on pattern_4 while the flag exists, saying why on stderr.
+  request.segmenter = "case {input} in *pattern_4*) if [ -e '" + flag +
+                      "' ]; then echo 'CUDA out of memory' >&2; exit 3; fi;; esac; " + kAllWall;
+  const StudyReport failing = run_study(request);
+  EXPECT_EQ(failing.runs_computed, 3u);
+  EXPECT_EQ(failing.runs_failed, 1u);
+  const CsvTable& table = failing.table;
+  ASSERT_EQ(table.rows.size(), 3u);
+  EXPECT_EQ(cell(table, 0, "status"), "ok");
+  EXPECT_EQ(cell(table, 1, "status"), "failed");
+  EXPECT_EQ(cell(table, 2, "status"), "ok");
+  const std::string why = cell(table, 1, "failure");
+  EXPECT_NE(why.find("exit status 3"), std::string::npos) << why;
+  EXPECT_NE(why.find("CUDA out of memory"), std::string::npos) << why;
+  EXPECT_EQ(cell(table, 1, "miou"), "");
+  EXPECT_NE(cell(table, 1, "visible_fraction"), "");  // the scan and measure did run
+  EXPECT_EQ(cell(table, 0, "failure"), "");
+  // The correlations leave the failed run out.
+  for (const auto& m : failing.correlations) EXPECT_EQ(m.correlation.n, 2u) << m.measure;
+  EXPECT_NE(read_bytes(dir.file("study/study.md")).find("## Failed runs"), std::string::npos);
+
+  // The other rows are what a study without the failure gives.
+  StudyRequest clean = request;
+  clean.out = dir.file("clean");
+  fs::remove(flag);
+  const StudyReport reference = run_study(clean);
+  ASSERT_EQ(reference.runs_failed, 0u);
+  EXPECT_EQ(row_figures(table, 0), row_figures(reference.table, 0));
+  EXPECT_EQ(row_figures(table, 2), row_figures(reference.table, 2));
+
+  // Keeping failed rows makes nothing; a plain resume retries only the failed run.
+  StudyRequest keep = request;
+  keep.skip_failed = true;
+  const StudyReport kept = run_study(keep);
+  EXPECT_EQ(kept.runs_computed, 0u);
+  EXPECT_EQ(kept.runs_failed, 1u);
+  const StudyReport retried = run_study(request);
+  EXPECT_EQ(retried.runs_computed, 1u);
+  EXPECT_EQ(retried.runs_skipped, 2u);
+  EXPECT_EQ(retried.runs_failed, 0u);
+  EXPECT_EQ(figures(retried.table), figures(reference.table));
+}
+
+TEST(StudyJob, ATimeoutOrABadLabelFileFailsTheRun) {
+  const ScratchDirectory dir;
+  StudyRequest request = office_study(dir.file("slow"));
+  request.configurations.resize(1);
+  request.segmenter = "echo started; sleep 30 # {input} {output}";
+  request.segmenter_timeout = 0.5;
+  const auto start = std::chrono::steady_clock::now();
+  const StudyReport slow = run_study(request);
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 20.0);
+  ASSERT_EQ(slow.table.rows.size(), 1u);
+  EXPECT_EQ(slow.runs_failed, 1u);
+  const std::string why = cell(slow.table, 0, "failure");
+  EXPECT_NE(why.find("timed out"), std::string::npos) << why;
+  EXPECT_NE(why.find("started"), std::string::npos) << why;
+
+  // Two labels for hundreds of points.
+  request.out = dir.file("short");
+  request.segmenter = "printf '0\\n0\\n' > {output} # {input}";
+  request.segmenter_timeout = 0.0;
+  const StudyReport bad = run_study(request);
+  EXPECT_EQ(bad.runs_failed, 1u);
+  EXPECT_NE(cell(bad.table, 0, "failure").find("cannot be scored"), std::string::npos)
+      << cell(bad.table, 0, "failure");
+
+  // Writing nothing is a failure too.
+  request.out = dir.file("silent");
+  request.segmenter = "true {input} {output}";
+  EXPECT_NE(cell(run_study(request).table, 0, "failure").find("wrote nothing"), std::string::npos);
+}
+
+TEST(StudyJob, CancellingKeepsEveryFinishedRowAndNoPartialOne) {
+  const ScratchDirectory dir;
+  const StudyRequest request = office_study(dir.file("study"));
+  std::atomic<bool> cancel{false};
+  std::vector<std::string> stages;
+  Progress progress;
+  progress.cancel = &cancel;
+  progress.report = [&](const std::string& stage, double) {
+    stages.push_back(stage);
+    // As a scheduler's SIGTERM would, in the middle of the second run.
+    if (stage.find("[run 2/3") == 0 && stage.find("measuring") != std::string::npos) {
+      cancel = true;
+    }
+  };
+  EXPECT_THROW(run_study(request, progress), Cancelled);
+  const CsvTable kept = read_csv(dir.file("study/study.csv"));
+  ASSERT_EQ(kept.rows.size(), 1u);
+  EXPECT_EQ(cell(kept, 0, "configuration"), "pattern_7");
+  // Progress: runs done of those to make, time spent, and an estimate once a run is done.
+  ASSERT_FALSE(stages.empty());
+  EXPECT_EQ(stages.front().rfind("[run 1/3, 0:00 elapsed] office_1 pattern_7: ", 0), 0u)
+      << stages.front();
+  const bool estimated = std::any_of(stages.begin(), stages.end(), [](const std::string& s) {
+    return s.rfind("[run 2/3, ", 0) == 0 && s.find(" left] office_1 pattern_4: ") != s.npos;
+  });
+  EXPECT_TRUE(estimated);
+
+  const StudyReport resumed = run_study(request);
+  EXPECT_EQ(resumed.runs_skipped, 1u);
+  EXPECT_EQ(resumed.runs_computed, 2u);
+}
+
+TEST(StudyJob, ResumingWithOtherParametersIsRefusedNamingThem) {
+  const ScratchDirectory dir;
+  StudyRequest request = office_study(dir.file("study"));
+  const StudyReport first = run_study(request);
+  const std::string fingerprint = cell(first.table, 0, "fingerprint");
+  EXPECT_EQ(fingerprint.size(), 16u);
+  EXPECT_NE(cell(first.table, 1, "fingerprint"), fingerprint);  // other viewpoints
+
+  StudyRequest changed = request;
+  changed.tracing.point_radius = 0.05;
+  changed.estimation.normal_k = 30;
+  try {
+    run_study(changed);
+    FAIL() << "no error";
+  } catch (const UsageError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("3 rows made with other parameters"), std::string::npos) << what;
+    EXPECT_NE(what.find("point_radius (was 0.06, now 0.05)"), std::string::npos) << what;
+    EXPECT_NE(what.find("normal_k (was 50, now 30)"), std::string::npos) << what;
+    EXPECT_EQ(what.find("num_rays_per_vp"), std::string::npos) << what;
+    EXPECT_NE(what.find("--fresh"), std::string::npos) << what;
+  }
+  // A configuration that keeps its name but not its viewpoints is named too.
+  StudyRequest moved = request;
+  moved.configurations[2].choice = ViewpointChoice::from_pattern(2);
+  try {
+    run_study(moved);
+    FAIL() << "no error";
+  } catch (const UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find("configuration 'pattern_1'"), std::string::npos)
+        << e.what();
+  }
+  // Threads do not change the figures, nor where the openings file is: the same study.
+  StudyRequest threads = request;
+  threads.tracing.threads = 1;
+  fs::copy_file(request.tracing.polygon_path, dir.file("openings_copy.txt"));
+  threads.tracing.polygon_path = dir.file("openings_copy.txt");
+  EXPECT_EQ(run_study(threads).runs_skipped, 3u);
+  // But what it holds does.
+  write_text(dir.file("one_opening.txt"), "2 5 0.9\n3.6 5 0.9\n3.6 5 2.2\n2 5 2.2\n");
+  threads.tracing.polygon_path = dir.file("one_opening.txt");
+  try {
+    run_study(threads);
+    FAIL() << "no error";
+  } catch (const UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find("polygon_file"), std::string::npos) << e.what();
+  }
+
+  changed.fresh = true;
+  const StudyReport fresh = run_study(changed);
+  EXPECT_EQ(fresh.runs_computed, 3u);
+  EXPECT_EQ(fresh.runs_skipped, 0u);
+  EXPECT_NE(cell(fresh.table, 0, "fingerprint"), fingerprint);
+  changed.fresh = false;
+  EXPECT_EQ(run_study(changed).runs_skipped, 3u);
+
+  // study.json lists every parameter the rows depend on.
+  const std::string json = read_bytes(dir.file("study/study.json"));
+  for (const char* key :
+       {"\"self_tolerance\"", "\"exterior_classes\"", "\"light_radius\"", "\"normal_k\"",
+        "\"ransac_distance\"", "\"mapping_path\"", "\"max_distance\"", "\"mean_over\"",
+        "\"ignored_classes\"", "\"occlusion_num_vp\"", "\"segmenter_output\"", "\"seed\""}) {
+    EXPECT_NE(json.find(key), std::string::npos) << key;
+  }
+}
+
+TEST(StudyJob, AConstantMeasureHasNoCorrelation) {
+  const ScratchDirectory dir;
+  StudyRequest request = office_study(dir.file("study"));
+  // Three names for the same viewpoints: every measure is the same in each run.
+  for (auto& configuration : request.configurations) {
+    configuration.choice = ViewpointChoice::from_pattern(7);
+  }
+  const StudyReport report = run_study(request);
+  ASSERT_EQ(report.table.rows.size(), 3u);
+  for (const auto& m : report.correlations) {
+    EXPECT_EQ(m.correlation.n, 3u);
+    EXPECT_FALSE(m.correlation.pearson) << m.measure;
+    EXPECT_FALSE(m.correlation.spearman) << m.measure;
+    EXPECT_FALSE(m.correlation.fit) << m.measure;
+  }
+  const bool warned = std::any_of(report.warnings.begin(), report.warnings.end(), [](auto& w) {
+    return w.find("visible_fraction is the same") != std::string::npos &&
+           w.find("undefined") != std::string::npos;
+  });
+  EXPECT_TRUE(warned);
+  EXPECT_NE(read_bytes(dir.file("study/study.json")).find("\"pearson\" : null"), std::string::npos);
+}
+
+TEST(StudyJob, MeanOverChoosesTheClassesMiouAverages) {
   const ScratchDirectory dir;
   StudyRequest request = office_study(dir.file("study"));
   request.configurations.resize(1);
-  request.segmenter = "echo on stdout; exit 3 # {input} {output}";
-  try {
-    run_study(request);
-    FAIL() << "no error";
-  } catch (const std::runtime_error& e) {
-    EXPECT_NE(std::string(e.what()).find("exit status 3"), std::string::npos) << e.what();
+  request.segmenter = kAllWall;
+  request.mean_over = MeanOver::pointcept;
+  const StudyReport report = run_study(request);
+  const CsvTable& table = report.table;
+  EXPECT_EQ(cell(table, 0, "mean_over"), "pointcept");
+  // Pointcept: every evaluation class, an empty IoU counting 0.
+  double sum = 0.0;
+  std::size_t classes = 0;
+  for (std::size_t c = 0; c < table.columns.size(); ++c) {
+    if (table.columns[c].rfind("iou_", 0) != 0) continue;
+    ++classes;
+    if (!table.rows[0][c].empty()) sum += std::stod(table.rows[0][c]);
   }
-  EXPECT_FALSE(fs::exists(dir.file("study/study.csv")));
+  EXPECT_EQ(classes, 12u);
+  EXPECT_NEAR(number(table, 0, "miou"), sum / 12.0, 1e-9);
+  // All wall: only wall has an IoU above 0, so the rules differ by their class counts.
+  request.out = dir.file("support");
+  request.mean_over = MeanOver::support;
+  const CsvTable support = run_study(request).table;
+  EXPECT_GT(number(support, 0, "miou"), number(table, 0, "miou"));
 }
 
 TEST(StudyJob, BadOptionsAreUsageErrors) {
@@ -208,6 +434,7 @@ TEST(StudyJob, BadOptionsAreUsageErrors) {
   fails([](StudyRequest& r) { r.scenes.push_back(r.scenes[0]); });
   fails([](StudyRequest& r) { r.tracing.point_radius = 0.0; });
   fails([](StudyRequest& r) { r.shard = "2/2"; });
+  fails([](StudyRequest& r) { r.segmenter_timeout = -1.0; });
   StudyRequest good = office_study(dir.file("study"));
   EXPECT_NO_THROW(validate(good));
 }

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 #include <json/reader.h>
 
+#include <chrono>
+#include <cstdlib>
 #include <filesystem>
 #include <sstream>
 
@@ -61,6 +63,63 @@ TEST(StudyCli, ExitCodesFollowTheContract) {
   const CliRun help = run_cli("study --help");
   EXPECT_EQ(help.exit_code, 0);
   EXPECT_NE(help.out.find("--shard I/N"), std::string::npos);
+}
+
+// As many labels as the scanned PLY has points, all wall (id 0).
+const std::string kAllWall =
+    "n=$(head -c 2000 {input} | sed -n \"s/^element vertex //p\"); "
+    "awk -v n=$n \"BEGIN { for (i = 0; i < n; i++) print 0 }\" > {output}";
+
+TEST(StudyCli, AFailedRunIsARowAndExitOneAfterTheWholeStudy) {
+  const TempDir dir;
+  const std::string study = kConfig + " --num-rays-per-vp 300 --out '" + dir.file("study") +
+                            "' --segmenter 'case {input} in *pattern_4*) echo no GPU >&2; "
+                            "exit 9;; esac; " +
+                            kAllWall + "' --json -q";
+  const CliRun run = run_cli(study);
+  EXPECT_EQ(run.exit_code, 1) << run.err;
+  EXPECT_NE(run.err.find("1 runs failed"), std::string::npos) << run.err;
+  const Json::Value json = parse_json(run.out);  // the report is still printed
+  EXPECT_EQ(json["runs_computed"].asUInt(), 3u);
+  EXPECT_EQ(json["runs_failed"].asUInt(), 1u);
+  ASSERT_EQ(json["rows"].size(), 3u);
+  EXPECT_EQ(json["rows"][1]["status"].asString(), "failed");
+  EXPECT_NE(json["rows"][1]["failure"].asString().find("no GPU"), std::string::npos);
+  EXPECT_EQ(json["rows"][2]["status"].asString(), "ok");
+
+  // Resuming with another radius would mix rows: refused, naming the key.
+  const CliRun stale = run_cli(study + " --point-radius 0.05");
+  EXPECT_EQ(stale.exit_code, 2);
+  EXPECT_NE(stale.err.find("point_radius (was 0.06, now 0.05)"), std::string::npos) << stale.err;
+}
+
+TEST(StudyCli, SigtermKeepsTheFinishedRowsAndStopsTheSegmenter) {
+  const TempDir dir;
+  const std::string started = dir.file("started");
+  // pattern_7 is made; pattern_4's segmenter hangs until the signal.
+  const std::string study = "'" + std::string(OCCLUSION_CLI_PATH) + "' " + kConfig +
+                            " --pattern 7 --pattern 4 --num-rays-per-vp 300 --out '" +
+                            dir.file("study") +
+                            "' --segmenter 'case {input} in *pattern_4*) touch " + started +
+                            "; exec sleep 31.25;; esac; " + kAllWall + "' -q";
+  const std::string script =
+      study + " >'" + dir.file("out") + "' 2>'" + dir.file("err") +
+      "' & pid=$!; for i in $(seq 1 600); do [ -e '" + started +
+      "' ] && break; sleep 0.1; done; kill -TERM $pid; wait $pid; echo $? >'" + dir.file("status") +
+      "'";
+  const auto start = std::chrono::steady_clock::now();
+  dir.write("run.sh", script);
+  ASSERT_EQ(std::system(("sh '" + dir.file("run.sh") + "'").c_str()), 0);
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 30.0);
+  EXPECT_EQ(testing::read_text(dir.file("status")), "1\n") << testing::read_text(dir.file("err"));
+  EXPECT_NE(testing::read_text(dir.file("err")).find("cancelled"), std::string::npos);
+  const std::string csv = testing::read_text(dir.file("study/study.csv"));
+  std::size_t lines = 0;
+  for (const char c : csv) lines += c == '\n' ? 1 : 0;
+  EXPECT_EQ(lines, 2u) << csv;  // the header and pattern_7's row
+  EXPECT_NE(csv.find("pattern_7"), std::string::npos);
+  EXPECT_NE(std::system("pgrep -f 'sleep 31[.]25' >/dev/null"), 0)
+      << "the segmenter was left running";
 }
 
 }  // namespace

@@ -105,7 +105,7 @@ TEST_F(BadInput, WrongParameterTypesAndValues) {
   expect_invalid(4, "mesh_occlusion", R"({"path": 7})", "path");
   expect_invalid(5, "cloud_occlusion",
                  R"({"path": "s3dis_synthetic/Area_1/office_1", "point_radius": -1})",
-                 "point-radius");
+                 "'point_radius' must be");  // the key as the request spells it, not --point-radius
   expect_invalid(6, "scan",
                  R"({"path": "s3dis_synthetic/Area_1/office_1", "viewpoints": [[1, 2]]})",
                  "viewpoints");

@@ -94,21 +94,41 @@ struct ClassMetrics {
   std::optional<double> f1;
 };
 
+// Which classes mIoU and mean class accuracy average over. The per-class
+// figures are the same under every rule; only the means differ, and only on
+// scenes that lack a class (docs/metrics.md, "Averaging rules"):
+//   - support:   classes with ground truth (support > 0);
+//   - scannet:   classes with ground truth or predictions (tp + fp + fn > 0),
+//                as ScanNet's evaluate_semantic_label.py, whose get_iou is NaN
+//                only for 0/0: a class predicted but absent adds an IoU of 0
+//                (and a class accuracy of 0);
+//   - pointcept: every evaluation class, an undefined IoU or accuracy counting
+//                0, as Pointcept's intersection / (union + 1e-10) averaged
+//                with np.mean.
+enum class MeanOver { support, scannet, pointcept };
+
+const char* to_string(MeanOver rule);
+// "support", "scannet" or "pointcept"; nothing for any other text.
+std::optional<MeanOver> parse_mean_over(const std::string& text);
+
 struct SegmentationMetrics {
   std::vector<ClassMetrics> classes;  // one per evaluation class, by id
-  // Mean IoU over the classes with support > 0; absent when there are none.
+  MeanOver mean_over = MeanOver::support;
+  // Mean IoU over the classes the rule averages; absent when there are none.
   std::optional<double> miou;
   // Σ tp / points; absent when no point was counted.
   std::optional<double> overall_accuracy;
-  // Mean recall over the classes with support > 0.
+  // Mean recall over the same classes as miou.
   std::optional<double> mean_class_accuracy;
   std::size_t classes_with_support = 0;
-  std::uint64_t points = 0;   // counted in the matrix (ConfusionMatrix::total)
-  std::uint64_t correct = 0;  // Σ tp
-  std::uint64_t other = 0;    // predictions outside the classes (all misses)
-  std::uint64_t skipped = 0;  // ground truth outside the classes
+  std::size_t classes_averaged = 0;  // how many classes the means are over
+  std::uint64_t points = 0;          // counted in the matrix (ConfusionMatrix::total)
+  std::uint64_t correct = 0;         // Σ tp
+  std::uint64_t other = 0;           // predictions outside the classes (all misses)
+  std::uint64_t skipped = 0;         // ground truth outside the classes
 };
 
-SegmentationMetrics compute_metrics(const ConfusionMatrix& matrix);
+SegmentationMetrics compute_metrics(const ConfusionMatrix& matrix,
+                                    MeanOver mean_over = MeanOver::support);
 
 }  // namespace occlusion

@@ -29,6 +29,8 @@ struct EvaluateRequest {
   std::string mapping_path;                  // empty: the seed's table 3.1
   std::vector<std::string> ignored_classes;  // skipped on top of the mapping's
   double max_distance = 0.05;  // for label transfer; 0: points must be the ground truth's
+  // Which classes mIoU and mean class accuracy average over (confusion_matrix.hpp).
+  MeanOver mean_over = MeanOver::support;
   bool skip_bad_lines = false;
   unsigned threads = 0;
   std::string out;

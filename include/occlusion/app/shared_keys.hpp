@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <string>
 
+#include "occlusion/analysis/confusion_matrix.hpp"
 #include "occlusion/app/key.hpp"
 
 namespace occlusion {
@@ -103,6 +104,14 @@ Keys<R> scoring_keys() {
           .metavar("D")
           .doc("a prediction on other points is transferred from its nearest point within D; "
                "0: the points must be the ground truth's"),
+      custom_key<R>(
+          "mean_over", ValueType::kString,
+          [](R& r, const Json::Value& v) { r.mean_over = *parse_mean_over(v.asString()); },
+          [](const R& r) { return Json::Value(to_string(r.mean_over)); })
+          .choices({"support", "scannet", "pointcept"})
+          .doc("which classes mIoU and mean accuracy average: support (classes with ground "
+               "truth), scannet (also a 0 for a class predicted but absent), pointcept (every "
+               "class, 0 without ground truth); docs/metrics.md"),
   };
 }
 

@@ -10,7 +10,11 @@
 // measure with mIoU goes to OUT/study.md with a plot, OUT/study.svg.
 //
 // Runs already in study.csv are skipped, so an interrupted study resumes; each
-// finished run rewrites the CSV atomically. With a shard i/n only the runs
+// finished run rewrites the CSV atomically. A run whose segmenter fails (exit
+// status, timeout, a prediction that cannot be read) is a `failed` row, and
+// the study goes on; a resume retries failed rows. Every row carries a
+// fingerprint of the parameters it was made with, and resuming with other
+// parameters is a UsageError naming them. With a shard i/n only the runs
 // whose index k (scene-major: k = scene * configurations + configuration)
 // has k mod n = i are made; run_study_merge joins the shards' CSVs.
 // docs/study.md has the CSV columns, the baseline's rules and sharding recipes.
@@ -20,6 +24,7 @@
 #include <string>
 #include <vector>
 
+#include "occlusion/analysis/confusion_matrix.hpp"
 #include "occlusion/analysis/correlation.hpp"
 #include "occlusion/analysis/mesh_estimation.hpp"
 #include "occlusion/analysis/progress.hpp"
@@ -55,12 +60,21 @@ struct StudyRequest {
   // {output} (where it must write its prediction) in it.
   std::string segmenter = kBaselineSegmenter;
   std::string segmenter_output = "labels";  // extension of {output}: labels, ply, pcd or txt
+  // Seconds one segmenter command may run before it is killed and its run
+  // marked failed; 0: no limit.
+  double segmenter_timeout = 0.0;
   RegionGrowingOptions estimation = default_study_estimation();  // the baseline's planes
   std::string mapping_path;  // as -eval; "" = the seed's table 3.1
   std::vector<std::string> ignored_classes;
-  double max_distance = 0.05;  // as -eval, for predictions on other points
-  std::string shard = "0/1";   // "i/n"
-  std::string out;             // required
+  double max_distance = 0.05;              // as -eval, for predictions on other points
+  MeanOver mean_over = MeanOver::support;  // as -eval: which classes mIoU averages
+  std::string shard = "0/1";               // "i/n"
+  std::string out;                         // required
+  // Resuming: keep the failed rows of study.csv instead of retrying them.
+  bool skip_failed = false;
+  // Start again: drop the rows of study.csv (even if made with other
+  // parameters) instead of resuming.
+  bool fresh = false;
 };
 
 struct StudyShard {
@@ -77,14 +91,18 @@ struct MeasureCorrelation {
 };
 
 struct StudyReport {
-  std::string job = "study";        // or "study_merge"
-  StudyRequest request;             // as run (merge: out only)
+  std::string job = "study";  // or "study_merge"
+  StudyRequest request;       // as run (merge: out only)
+  // Every parameter of the rows (app/study_parameters): the request's, or for
+  // a merge the shards' study.parameters.json (empty when none has one).
+  Json::Value parameters{Json::objectValue};
   std::vector<std::string> inputs;  // merge: the CSVs joined
   std::size_t runs_total = 0;       // scenes x configurations
   std::size_t runs_in_shard = 0;
   std::size_t runs_skipped = 0;  // in the shard, already in study.csv
   std::size_t runs_computed = 0;
-  CsvTable table;  // every row of study.csv, in run order
+  std::size_t runs_failed = 0;  // rows of the table whose status is failed
+  CsvTable table;               // every row of study.csv, in run order
   std::vector<MeasureCorrelation> correlations;
   std::vector<std::string> outputs;
   std::vector<std::string> warnings;
@@ -99,13 +117,17 @@ const Keys<StudyRequest>& study_keys();
 // OUT/runs/ (each run's scanned cloud and prediction). UsageError for bad
 // options, a scene whose classes the mapping does not know, or a study.csv
 // written with other columns; InputError for unreadable scenes and
-// predictions; std::runtime_error for a segmenter command that fails.
+// predictions, and for study.csv rows made with other parameters (naming the
+// keys; `fresh` starts again instead). A segmenter that fails is no error: its
+// row is `failed` and counted in runs_failed. Cancelled leaves study.csv with
+// every finished row.
 StudyReport run_study(const StudyRequest& request, const Progress& progress = {});
 
 // Joins study CSVs (the shards') into OUT/study.csv, rows in run order, one
 // per (scene, configuration): the first wins, and a second with other figures
 // is a warning. Then writes the summary as run_study does. UsageError for
-// CSVs with different columns; InputError for unreadable ones.
+// CSVs with different columns or whose study.parameters.json beside them
+// differ; InputError for unreadable ones.
 StudyReport run_study_merge(const std::vector<std::string>& inputs, const std::string& out);
 
 // Headline: correlations (each measure's n, pearson, spearman against miou).
