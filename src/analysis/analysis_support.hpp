@@ -3,6 +3,7 @@
 // argument checks each one makes at its API edge.
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
@@ -32,6 +33,33 @@ inline void check_viewpoints(const std::vector<Eigen::Vector3d>& viewpoints,
 inline void check_positive(double value, const std::string& name, const std::string& analysis) {
   if (!std::isfinite(value) || value <= 0.0) {
     throw std::invalid_argument(analysis + ": " + name + " must be a finite number > 0");
+  }
+}
+
+// Clouds are traced in float where they are: at a distance d from the origin,
+// neighbouring floats are d * 2^-23 apart. Throws std::invalid_argument when a
+// point or viewpoint is so far out that this spacing exceeds a quarter of
+// point_radius, where rays pass between the spheres they should hit (a
+// viewpoint at 1e20 saw through closed walls).
+inline void check_float_precision(const Eigen::Vector3f& cloud_lo, const Eigen::Vector3f& cloud_hi,
+                                  const std::vector<Eigen::Vector3d>& viewpoints,
+                                  double point_radius, const std::string& analysis) {
+  constexpr double kFloatSpacing = 1.0 / (1 << 23);
+  const double limit = 0.25 * point_radius / kFloatSpacing;
+  const auto refuse = [&](const std::string& what, double distance) {
+    throw std::invalid_argument(
+        analysis + ": " + what + " " + std::to_string(distance) +
+        " units from the origin, where float coordinates are " +
+        std::to_string(distance * kFloatSpacing) + " units apart, too coarse for point_radius " +
+        std::to_string(point_radius) + "; keep everything within " + std::to_string(limit) +
+        " units of the origin (shift the scene and viewpoints)");
+  };
+  const double cloud_extent = std::max(cloud_lo.cast<double>().cwiseAbs().maxCoeff(),
+                                       cloud_hi.cast<double>().cwiseAbs().maxCoeff());
+  if (cloud_extent > limit) refuse("the cloud reaches", cloud_extent);
+  for (const auto& viewpoint : viewpoints) {
+    const double distance = viewpoint.cwiseAbs().maxCoeff();
+    if (distance > limit) refuse("a viewpoint lies", distance);
   }
 }
 

@@ -31,6 +31,10 @@ void check_inputs(const PointCloud& cloud, const std::vector<Eigen::Vector3d>& v
   if (cloud.size() == 0) throw std::invalid_argument("cloud occlusion: the cloud has no points");
   analysis_support::check_viewpoints(viewpoints, "cloud occlusion");
   analysis_support::check_positive(options.point_radius, "point_radius", "cloud occlusion");
+  Eigen::Vector3f lo, hi;
+  cloud.bounds(lo, hi);
+  analysis_support::check_float_precision(lo, hi, viewpoints, options.point_radius,
+                                          "cloud occlusion");
   if (options.num_rays_per_vp == 0) {
     throw std::invalid_argument("cloud occlusion: num_rays_per_vp must be > 0");
   }

@@ -11,6 +11,7 @@
 
 #include "analysis_support.hpp"
 #include "occlusion/core/parallel.hpp"
+#include "pcl_frame.hpp"
 
 namespace occlusion {
 
@@ -21,10 +22,16 @@ namespace {
 constexpr std::size_t kBlock = 1 << 18;
 constexpr std::size_t kGrain = 4096;
 
-pcl::PointCloud<pcl::PointXYZ>::Ptr to_pcl(const std::vector<Eigen::Vector3f>& positions) {
+pcl::PointXYZ local_point(const Eigen::Vector3f& position, const Eigen::Vector3d& origin) {
+  const Eigen::Vector3f p = pcl_frame::to_local(position, origin, "transfer_labels");
+  return pcl::PointXYZ(p.x(), p.y(), p.z());
+}
+
+pcl::PointCloud<pcl::PointXYZ>::Ptr to_pcl(const std::vector<Eigen::Vector3f>& positions,
+                                           const Eigen::Vector3d& origin) {
   auto cloud = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
   cloud->reserve(positions.size());
-  for (const auto& p : positions) cloud->push_back(pcl::PointXYZ(p.x(), p.y(), p.z()));
+  for (const auto& p : positions) cloud->push_back(local_point(p, origin));
   return cloud;
 }
 
@@ -52,7 +59,8 @@ LabelTransfer transfer_labels(const std::vector<Eigen::Vector3f>& source,
 
   progress("building kd-tree", 0.0);
   pcl::KdTreeFLANN<pcl::PointXYZ> tree;
-  tree.setInputCloud(to_pcl(source));
+  const Eigen::Vector3d origin = pcl_frame::centre_of(source);
+  tree.setInputCloud(to_pcl(source, origin));
   progress.check_cancel();
 
   const double max_squared = options.max_distance * options.max_distance;
@@ -65,8 +73,15 @@ LabelTransfer transfer_labels(const std::vector<Eigen::Vector3f>& source,
       pcl::Indices nearest(1);
       std::vector<float> distance(1);
       for (std::size_t i = block + b; i < block + e; ++i) {
-        const pcl::PointXYZ query(target[i].x(), target[i].y(), target[i].z());
-        if (tree.nearestKSearch(query, 1, nearest, distance) < 1) continue;
+        // A target PCL cannot search is farther from every source point than
+        // any max_distance that makes sense: unmatched.
+        const Eigen::Vector3d local = target[i].cast<double>() - origin;
+        if (!(local.cwiseAbs().maxCoeff() <= pcl_frame::kMaxLocalCoordinate)) continue;
+        const Eigen::Vector3f query = local.cast<float>();
+        if (tree.nearestKSearch(pcl::PointXYZ(query.x(), query.y(), query.z()), 1, nearest,
+                                distance) < 1) {
+          continue;
+        }
         if (static_cast<double>(distance[0]) <= max_squared) {
           result.labels[i] = source_labels[static_cast<std::size_t>(nearest[0])];
           squared_distance[i] = distance[0];

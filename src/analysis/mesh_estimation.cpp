@@ -11,6 +11,7 @@
 #include "mesh_estimation_stages.hpp"
 #include "occlusion/core/parallel.hpp"
 #include "occlusion/core/polygon_fan.hpp"
+#include "pcl_frame.hpp"
 #include "pcl_quiet.hpp"
 
 namespace occlusion {
@@ -47,14 +48,15 @@ void check_options(const RegionGrowingOptions& options) {
   if (options.ransac_iterations < 1) fail("ransac_iterations must be at least 1");
 }
 
-// The finite points as PCL's cloud, and where each came from.
-Cloud::Ptr finite_points(const PointCloud& cloud, std::vector<std::size_t>& source) {
+// The finite points as PCL's cloud, relative to `centre`, and where each came from.
+Cloud::Ptr finite_points(const PointCloud& cloud, const Eigen::Vector3d& centre,
+                         std::vector<std::size_t>& source) {
   Cloud::Ptr points(new Cloud);
   points->reserve(cloud.size());
   source.reserve(cloud.size());
   for (std::size_t i = 0; i < cloud.size(); ++i) {
-    const Eigen::Vector3f& p = cloud.positions[i];
-    if (!p.allFinite()) continue;
+    if (!cloud.positions[i].allFinite()) continue;
+    const Eigen::Vector3f p = pcl_frame::to_local(cloud.positions[i], centre, "mesh estimation");
     points->push_back(pcl::PointXYZ(p.x(), p.y(), p.z()));
     source.push_back(i);
   }
@@ -78,11 +80,13 @@ void for_each_cluster(std::size_t clusters, unsigned threads, const std::string&
   }
 }
 
-void add_polygon(TriangleMesh& mesh, const ClusterPolygon& polygon, std::uint32_t group) {
+// `polygon` is in the local frame around `origin`; the mesh is not.
+void add_polygon(TriangleMesh& mesh, const ClusterPolygon& polygon, const Eigen::Vector3d& origin,
+                 std::uint32_t group) {
   const auto first = static_cast<std::uint32_t>(mesh.vertices.size());
-  mesh.vertices.insert(mesh.vertices.end(), polygon.vertices.begin(), polygon.vertices.end());
+  for (const auto& vertex : polygon.vertices) mesh.vertices.push_back(vertex + origin);
   const auto centre = static_cast<std::uint32_t>(mesh.vertices.size());
-  mesh.vertices.push_back(polygon.centroid);
+  mesh.vertices.push_back(polygon.centroid + origin);
   for (const auto& face : fan_triangles(centre, first, polygon.vertices.size())) {
     mesh.faces.push_back(face);
     mesh.face_group.push_back(group);
@@ -90,10 +94,11 @@ void add_polygon(TriangleMesh& mesh, const ClusterPolygon& polygon, std::uint32_
 }
 
 // The mesh, the planes and the skipped clusters from each cluster's outcome,
-// in cluster order; the covered points.
+// in cluster order, moved from the local frame around `origin` back; the covered points.
 void assemble(const std::vector<pcl::PointIndices>& clusters,
               const std::vector<PlaneOutcome>& planes, const std::vector<PolygonOutcome>& polygons,
-              const mesh_estimation::EdgePoints& edges, MeshEstimate& estimate) {
+              const mesh_estimation::EdgePoints& edges, const Eigen::Vector3d& origin,
+              MeshEstimate& estimate) {
   TriangleMesh& mesh = estimate.mesh;
   for (std::size_t c = 0; c < clusters.size(); ++c) {
     mesh.group_names.push_back("cluster_" + std::to_string(c));
@@ -105,15 +110,16 @@ void assemble(const std::vector<pcl::PointIndices>& clusters,
                                   plane.plane ? polygon.detail : plane.detail});
       continue;
     }
-    add_polygon(mesh, *polygon.polygon, static_cast<std::uint32_t>(c));
+    add_polygon(mesh, *polygon.polygon, origin, static_cast<std::uint32_t>(c));
     EstimatedPlane summary;
     summary.cluster = c;
     summary.points = size;
     summary.inliers = plane.inliers;
     summary.edge_points = plane.edge_points;
     summary.normal = plane.plane->normal;
-    summary.offset = plane.plane->offset;
-    summary.centroid = polygon.polygon->centroid;
+    // n . (p - origin) + offset = 0 in the local frame.
+    summary.offset = plane.plane->offset - plane.plane->normal.dot(origin);
+    summary.centroid = polygon.polygon->centroid + origin;
     summary.area = polygon.polygon->area;
     summary.hull_vertices = polygon.polygon->vertices.size();
     estimate.planes.push_back(summary);
@@ -196,7 +202,8 @@ MeshEstimate estimate_mesh(const PointCloud& cloud, const RegionGrowingOptions& 
   const analysis_support::QuietPcl quiet;
   MeshEstimate estimate;
   std::vector<std::size_t> source;
-  const Cloud::Ptr points = finite_points(cloud, source);
+  const Eigen::Vector3d origin = pcl_frame::centre_of(cloud.positions);
+  const Cloud::Ptr points = finite_points(cloud, origin, source);
   estimate.non_finite_points = cloud.size() - points->size();
   if (points->size() < 3) {
     throw std::invalid_argument("mesh estimation: the cloud has " + std::to_string(points->size()) +
@@ -249,7 +256,7 @@ MeshEstimate estimate_mesh(const PointCloud& cloud, const RegionGrowingOptions& 
     if (planes[c].plane) polygons[c] = mesh_estimation::build_polygon(*planes[c].plane);
   });
 
-  assemble(clusters, planes, polygons, edges, estimate);
+  assemble(clusters, planes, polygons, edges, origin, estimate);
   estimate.timings.hulls_seconds = seconds_since(start);
   estimate.covered_fraction =
       static_cast<double>(estimate.covered_points) / static_cast<double>(points->size());

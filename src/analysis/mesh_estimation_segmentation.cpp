@@ -83,11 +83,14 @@ class SizedRegionGrowing : public pcl::RegionGrowing<pcl::PointXYZ, pcl::Normal>
 
 Normals::Ptr estimate_normals(const Cloud::ConstPtr& cloud, const Tree::Ptr& tree,
                               const RegionGrowingOptions& options, const Progress& progress) {
-  pcl::NormalEstimationOMP<pcl::PointXYZ, pcl::Normal> estimation(
-      resolve_thread_count(options.threads));
+  // The OpenMP runtime ends the whole process when it cannot start a thread
+  // ("threads": 40000 did), and threads beyond the cores buy nothing here.
+  const unsigned threads = std::min(resolve_thread_count(options.threads), resolve_thread_count(0));
+  pcl::NormalEstimationOMP<pcl::PointXYZ, pcl::Normal> estimation(threads);
   estimation.setInputCloud(cloud);
   estimation.setSearchMethod(tree);
-  estimation.setKSearch(static_cast<int>(options.normal_k));
+  // PCL takes k as an int; beyond the cloud's size the search gives every point anyway.
+  estimation.setKSearch(static_cast<int>(std::min<std::size_t>(options.normal_k, cloud->size())));
 
   const std::size_t count = cloud->size();
   Normals::Ptr normals(new Normals);

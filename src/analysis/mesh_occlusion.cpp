@@ -36,16 +36,41 @@ double mesh_shadow_epsilon(const TriangleMesh& mesh, const MeshOcclusionOptions&
 }
 
 bool mesh_shadow_ray(const Eigen::Vector3d& sample, const Eigen::Vector3d& viewpoint,
-                     double epsilon, Ray& ray) {
-  const Eigen::Vector3d direction = viewpoint - sample;
+                     double epsilon, Ray& ray, double reach) {
+  Eigen::Vector3d direction = viewpoint - sample;
   const double length = direction.norm();
   if (length <= 2.0 * epsilon) return false;
   ray.origin = sample.cast<float>();
-  ray.direction = direction.cast<float>();
   ray.t_min = static_cast<float>(epsilon / length);
-  ray.t_max = static_cast<float>(1.0 - epsilon / length);
+  if (length > reach) {
+    // Nothing lies beyond `reach`: the same ray, cut there, keeps float's
+    // precision (a viewpoint at 1e20 made the ray tests overflow and see
+    // through walls), and no tolerance is needed at its far end.
+    direction *= reach / length;
+    ray.t_min = static_cast<float>(epsilon / reach);
+    ray.t_max = 1.0f;
+  } else {
+    ray.t_max = static_cast<float>(1.0 - epsilon / length);
+  }
+  ray.direction = direction.cast<float>();
   return true;
 }
+
+namespace {
+
+// The mesh's triangles relative to `origin`, then in float.
+std::vector<Triangle> local_triangles(const TriangleMesh& mesh, const Eigen::Vector3d& origin) {
+  std::vector<Triangle> triangles;
+  triangles.reserve(mesh.face_count());
+  for (const auto& face : mesh.faces) {
+    triangles.push_back({(mesh.vertices[face[0]] - origin).cast<float>(),
+                         (mesh.vertices[face[1]] - origin).cast<float>(),
+                         (mesh.vertices[face[2]] - origin).cast<float>()});
+  }
+  return triangles;
+}
+
+}  // namespace
 
 MeshOcclusionResult compute_mesh_occlusion(const TriangleMesh& mesh,
                                            const std::vector<Eigen::Vector3d>& viewpoints,
@@ -56,13 +81,27 @@ MeshOcclusionResult compute_mesh_occlusion(const TriangleMesh& mesh,
 
   auto start = Clock::now();
   progress("sampling", 0.0);
-  const MeshSamples samples = sample_mesh(mesh, options.samples_per_unit_area, options.seed);
+  const MeshSamples samples =
+      sample_mesh(mesh, options.samples_per_unit_area, options.seed, progress);
   result.timings.sampling_seconds = seconds_since(start);
   progress.check_cancel();
 
+  // Rays are traced in a local frame around the mesh's centre: float keeps
+  // seven digits, so a scene 5e6 units from the origin (a UTM northing) would
+  // otherwise lose everything below half a unit. Samples and viewpoints stay
+  // in double until they are relative to it.
+  Eigen::Vector3d lo, hi;
+  mesh.bounds(lo, hi);
+  const Eigen::Vector3d origin = 0.5 * (lo + hi);
+  // Every sample lies within one diagonal of every face, so nothing that can
+  // block a shadow ray is farther away than that.
+  const double reach = 2.0 * std::max((hi - lo).norm(), 1e-30);
+  std::vector<Eigen::Vector3d> local_viewpoints;
+  for (const auto& viewpoint : viewpoints) local_viewpoints.push_back(viewpoint - origin);
+
   start = Clock::now();
   progress("building octree", 0.0);
-  const TriangleOctree tree(pack_triangles(mesh.triangles()), options.octree);
+  const TriangleOctree tree(pack_triangles(local_triangles(mesh, origin)), options.octree);
   result.timings.build_seconds = seconds_since(start);
   result.octree = tree.stats();
   progress.check_cancel();
@@ -87,7 +126,8 @@ MeshOcclusionResult compute_mesh_occlusion(const TriangleMesh& mesh,
     for (std::size_t r = block; r < block_end; ++r) {
       const std::size_t s = r / view_count;
       Ray ray;
-      if (!mesh_shadow_ray(samples.points[s], viewpoints[r % view_count], epsilon, ray)) {
+      if (!mesh_shadow_ray(samples.points[s] - origin, local_viewpoints[r % view_count], epsilon,
+                           ray, reach)) {
         seen[r] = 1;
         continue;
       }

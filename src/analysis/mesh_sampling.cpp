@@ -13,8 +13,15 @@ std::size_t samples_for_area(double area, double samples_per_unit_area) {
   return wanted < 1.0 ? 1 : static_cast<std::size_t>(wanted);
 }
 
-MeshSamples sample_mesh(const TriangleMesh& mesh, double samples_per_unit_area,
-                        std::uint64_t seed) {
+namespace {
+
+// Samples between two cancel checks: a few milliseconds of work.
+constexpr std::size_t kSamplesPerBlock = std::size_t{1} << 16;
+
+}  // namespace
+
+MeshSamples sample_mesh(const TriangleMesh& mesh, double samples_per_unit_area, std::uint64_t seed,
+                        const Progress& progress) {
   if (!std::isfinite(samples_per_unit_area) || samples_per_unit_area <= 0.0) {
     throw std::invalid_argument("samples_per_unit_area must be a finite number > 0");
   }
@@ -29,7 +36,13 @@ MeshSamples sample_mesh(const TriangleMesh& mesh, double samples_per_unit_area,
   const std::size_t total = samples.first[face_count];
   samples.points.resize(total);
   samples.face.resize(total);
+  std::size_t next_check = kSamplesPerBlock;
   for (std::size_t f = 0; f < face_count; ++f) {
+    if (samples.first[f] >= next_check) {
+      progress.check_cancel();
+      progress("sampling", static_cast<double>(samples.first[f]) / static_cast<double>(total));
+      next_check = samples.first[f] + kSamplesPerBlock;
+    }
     const auto& corners = mesh.faces[f];
     Rng rng(seed, f);
     for (std::size_t s = samples.first[f]; s < samples.first[f + 1]; ++s) {

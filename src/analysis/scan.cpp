@@ -31,6 +31,9 @@ void check_inputs(const PointCloud& cloud, const std::vector<Eigen::Vector3d>& v
   }
   analysis_support::check_viewpoints(viewpoints, "scan");
   analysis_support::check_positive(options.point_radius, "point_radius", "scan");
+  Eigen::Vector3f lo, hi;
+  cloud.bounds(lo, hi);
+  analysis_support::check_float_precision(lo, hi, viewpoints, options.point_radius, "scan");
   if (std::isnan(options.self_tolerance) || std::isinf(options.self_tolerance)) {
     throw std::invalid_argument("scan: self_tolerance must be a finite number");
   }

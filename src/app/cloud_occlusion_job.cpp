@@ -7,6 +7,7 @@
 #include "job_support.hpp"
 #include "occlusion/app/errors.hpp"
 #include "occlusion/app/json_output.hpp"
+#include "occlusion/app/memory_budget.hpp"
 #include "occlusion/io/atomic_file.hpp"
 #include "occlusion/io/cloud_io.hpp"
 #include "occlusion/io/input_error.hpp"
@@ -121,6 +122,10 @@ CloudOcclusionReport run_cloud_occlusion_on(const PointCloud& cloud,
   report.request = request;
   report.viewpoint_names = viewpoints.names;
   report.openings = openings.size();
+  check_memory_budget(
+      cloud_occlusion_memory(cloud.size(), viewpoints.positions.size(), request.num_rays_per_vp,
+                             request.escape_directions || !request.out.empty()),
+      request.max_memory_mb);
 
   CloudOcclusionOptions options;
   options.point_radius = request.point_radius;
@@ -172,10 +177,12 @@ CloudOcclusionReport run_cloud_occlusion(const CloudOcclusionRequest& request,
     const std::string json_path = job::output_path(request.out, request.path, ".poc.json");
     const std::string escapes_path =
         job::output_path(request.out, request.path, ".poc.escapes.csv");
-    write_escapes(escapes_path, report.result);
+    OutputSet outputs;
+    write_escapes(outputs.add(escapes_path), report.result);
     report.outputs = {json_path, escapes_path};
     report.total_seconds = job::seconds_since(start);
-    job::write_json_report(json_path, to_json(report));
+    job::write_json_report(outputs.add(json_path), to_json(report));
+    outputs.commit();
   }
   report.total_seconds = job::seconds_since(start);
   return report;

@@ -52,7 +52,8 @@ const Keys<CloudOcclusionRequest>& cloud_occlusion_keys() {
                  "room/Area folder")},
       viewpoint_keys(&R::viewpoints),
       cloud_tracing_keys(),
-      {key("escape_directions", &R::escape_directions)
+      {max_memory_key(&R::max_memory_mb),
+       key("escape_directions", &R::escape_directions)
            .doc("keep each occlusion ray's direction in the report (always kept with out)"),
        out_key(&R::out,
                "write CLOUD.poc.json and CLOUD.poc.escapes.csv (directions of the occlusion "

@@ -123,11 +123,13 @@ EvaluateReport run_evaluate(const EvaluateRequest& request, const Progress& prog
     const std::string json_path = path(".json");
     const std::string csv_path = path(".csv");
     const std::string markdown_path = path(".md");
-    job::write_evaluation_csv(csv_path, report);
-    job::write_evaluation_markdown(markdown_path, report);
+    OutputSet outputs;
+    job::write_evaluation_csv(outputs.add(csv_path), report);
+    job::write_evaluation_markdown(outputs.add(markdown_path), report);
     report.outputs = {json_path, csv_path, markdown_path};
     report.total_seconds = job::seconds_since(start);
-    job::write_json_report(json_path, to_json(report));
+    job::write_json_report(outputs.add(json_path), to_json(report));
+    outputs.commit();
   }
   report.total_seconds = job::seconds_since(start);
   return report;

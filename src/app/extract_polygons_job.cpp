@@ -25,8 +25,9 @@ ExtractPolygonsReport run_extract_polygons(const ExtractPolygonsRequest& request
   ExtractPolygonsReport report;
   report.request = request;
 
-  job::CloudEstimate input = job::load_and_estimate(request.path, request.skip_bad_lines,
-                                                    request.estimation, request.threads, progress);
+  job::CloudEstimate input =
+      job::load_and_estimate(request.path, request.skip_bad_lines, request.estimation,
+                             request.threads, request.max_memory_mb, progress);
   job::take_estimate(input, report);
 
   if (!request.out.empty()) {
@@ -35,11 +36,15 @@ ExtractPolygonsReport run_extract_polygons(const ExtractPolygonsRequest& request
     const std::string obj_path = job::output_path(request.out, request.path, ".polygons.obj");
     const std::string segmented_path =
         job::output_path(request.out, request.path, ".segmented.ply");
-    write_obj(obj_path, report.estimate.mesh, "planes found by region growing in " + request.path);
-    write_cloud(segmented_path, input.loaded.cloud, {job::cluster_field(report.estimate)});
+    OutputSet outputs;
+    write_obj(outputs.add(obj_path), report.estimate.mesh,
+              "planes found by region growing in " + request.path);
+    write_cloud(outputs.add(segmented_path), input.loaded.cloud,
+                {job::cluster_field(report.estimate)});
     report.outputs = {json_path, obj_path, segmented_path};
     report.total_seconds = job::seconds_since(start);
-    job::write_json_report(json_path, to_json(report));
+    job::write_json_report(outputs.add(json_path), to_json(report));
+    outputs.commit();
   }
   report.total_seconds = job::seconds_since(start);
   return report;

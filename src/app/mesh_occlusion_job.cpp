@@ -9,6 +9,7 @@
 #include "occlusion/analysis/mesh_sampling.hpp"
 #include "occlusion/app/errors.hpp"
 #include "occlusion/app/json_output.hpp"
+#include "occlusion/app/memory_budget.hpp"
 #include "occlusion/io/atomic_file.hpp"
 #include "occlusion/io/csv_file.hpp"
 #include "occlusion/io/obj_reader.hpp"
@@ -55,6 +56,9 @@ MeshOcclusionReport run_mesh_occlusion(const MeshOcclusionRequest& request,
   mesh.bounds(lo, hi);
   ViewpointChoice::Resolved viewpoints = request.viewpoints.resolve(lo, hi);
   report.viewpoint_names = viewpoints.names;
+  check_memory_budget(
+      mesh_occlusion_memory(mesh, request.samples_per_unit_area, viewpoints.positions.size()),
+      request.max_memory_mb);
   const double half_extent = 0.5 * (hi - lo).maxCoeff();
   if (request.enable_acceleration && request.octree_resolution >= half_extent) {
     report.warnings.push_back("octree_resolution " + std::to_string(request.octree_resolution) +
@@ -77,11 +81,14 @@ MeshOcclusionReport run_mesh_occlusion(const MeshOcclusionRequest& request,
     const std::string json_path = job::output_path(request.out, request.path, ".moc.json");
     const std::string ply_path = job::output_path(request.out, request.path, ".moc.ply");
     const std::string csv_path = job::output_path(request.out, request.path, ".moc.csv");
-    write_mesh_ply(ply_path, mesh, report.result.face_visible_fraction, "visible_fraction");
-    write_face_csv(csv_path, mesh, report);
+    OutputSet outputs;
+    write_mesh_ply(outputs.add(ply_path), mesh, report.result.face_visible_fraction,
+                   "visible_fraction");
+    write_face_csv(outputs.add(csv_path), mesh, report);
     report.outputs = {json_path, ply_path, csv_path};
     report.total_seconds = job::seconds_since(start);
-    job::write_json_report(json_path, to_json(report));
+    job::write_json_report(outputs.add(json_path), to_json(report));
+    outputs.commit();
   }
   report.total_seconds = job::seconds_since(start);
   return report;

@@ -57,10 +57,12 @@ ReconstructReport run_reconstruct(const ReconstructRequest& request, const Progr
   const std::string cloud_path =
       job::output_path(request.out, request.path, "." + job::cloud_extension(request.format));
   const std::string json_path = job::output_path(request.out, request.path, ".recon.json");
-  write_cloud(cloud_path, cloud);
+  OutputSet outputs;
+  write_cloud(outputs.add(cloud_path), cloud);
   report.outputs = {cloud_path, json_path};
   report.total_seconds = job::seconds_since(start);
-  job::write_json_report(json_path, to_json(report));
+  job::write_json_report(outputs.add(json_path), to_json(report));
+  outputs.commit();
   progress("done", 1.0);
   return report;
 }

@@ -5,6 +5,7 @@
 #include "job_support.hpp"
 #include "occlusion/app/errors.hpp"
 #include "occlusion/app/json_output.hpp"
+#include "occlusion/app/memory_budget.hpp"
 #include "occlusion/io/atomic_file.hpp"
 #include "occlusion/io/cloud_io.hpp"
 #include "occlusion/io/obj_writer.hpp"
@@ -24,12 +25,15 @@ void write_outputs(const PointCloud& cloud, RegionGrowingReport& report,
   const std::string ply_path = job::output_path(request.out, request.path, ".rgoc.ply");
   const std::string segmented_path = job::output_path(request.out, request.path, ".segmented.ply");
   const TriangleMesh& mesh = report.estimate.mesh;
-  write_obj(obj_path, mesh, "mesh estimated by region growing from " + request.path);
-  write_mesh_ply(ply_path, mesh, report.occlusion.face_visible_fraction, "visible_fraction");
-  write_cloud(segmented_path, cloud, {job::cluster_field(report.estimate)});
+  OutputSet outputs;
+  write_obj(outputs.add(obj_path), mesh, "mesh estimated by region growing from " + request.path);
+  write_mesh_ply(outputs.add(ply_path), mesh, report.occlusion.face_visible_fraction,
+                 "visible_fraction");
+  write_cloud(outputs.add(segmented_path), cloud, {job::cluster_field(report.estimate)});
   report.outputs = {json_path, obj_path, ply_path, segmented_path};
   report.total_seconds = job::seconds_since(start);
-  job::write_json_report(json_path, to_json(report));
+  job::write_json_report(outputs.add(json_path), to_json(report));
+  outputs.commit();
 }
 
 Json::Value planes_json(const MeshEstimate& estimate, const MeshOcclusionResult& occlusion) {
@@ -60,14 +64,18 @@ RegionGrowingReport run_region_growing_occlusion(const RegionGrowingRequest& req
   RegionGrowingReport report;
   report.request = request;
 
-  job::CloudEstimate input = job::load_and_estimate(request.path, request.skip_bad_lines,
-                                                    request.estimation, request.threads, progress);
+  job::CloudEstimate input =
+      job::load_and_estimate(request.path, request.skip_bad_lines, request.estimation,
+                             request.threads, request.max_memory_mb, progress);
   job::take_estimate(input, report);
   const PointCloud& cloud = input.loaded.cloud;
 
   // Viewpoints on the cloud's box, as -poc and -fscan place them.
   const ViewpointChoice::Resolved viewpoints = job::resolve_for_cloud(request.viewpoints, cloud);
   report.viewpoint_names = viewpoints.names;
+  check_memory_budget(mesh_occlusion_memory(report.estimate.mesh, request.samples_per_unit_area,
+                                            viewpoints.positions.size()),
+                      request.max_memory_mb);
   MeshOcclusionOptions options;
   options.samples_per_unit_area = request.samples_per_unit_area;
   options.octree.min_cell_size = static_cast<float>(request.octree_resolution);

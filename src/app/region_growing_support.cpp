@@ -5,6 +5,7 @@
 #include "job_support.hpp"
 #include "occlusion/app/errors.hpp"
 #include "occlusion/app/json_output.hpp"
+#include "occlusion/app/memory_budget.hpp"
 #include "occlusion/app/region_growing_job.hpp"
 #include "occlusion/io/input_error.hpp"
 
@@ -51,7 +52,7 @@ void validate_estimation(const RegionGrowingOptions& e) {
 
 CloudEstimate load_and_estimate(const std::string& path, bool skip_bad_lines,
                                 RegionGrowingOptions options, unsigned threads,
-                                const Progress& progress) {
+                                std::uint64_t max_memory_mb, const Progress& progress) {
   const auto start = Clock::now();
   progress("loading", 0.0);
   CloudEstimate input;
@@ -65,6 +66,7 @@ CloudEstimate load_and_estimate(const std::string& path, bool skip_bad_lines,
     throw InputError(path, 0,
                      "has " + std::to_string(cloud.size()) + " points; a plane needs at least 3");
   }
+  check_memory_budget(region_growing_memory(cloud.size(), options), max_memory_mb);
   try {
     input.estimate = estimate_mesh(cloud, options, progress);
   } catch (const NoPlaneFound& e) {

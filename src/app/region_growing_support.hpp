@@ -30,9 +30,11 @@ struct CloudEstimate {
 // Throws what load_cloud throws; InputError for fewer than 3 points;
 // UsageError (naming the option to change) when no cluster gives a plane.
 // `threads` replaces options.threads.
+// Refused (UsageError) before estimating when region_growing_memory exceeds
+// max_memory_mb (0: no budget).
 CloudEstimate load_and_estimate(const std::string& path, bool skip_bad_lines,
                                 RegionGrowingOptions options, unsigned threads,
-                                const Progress& progress);
+                                std::uint64_t max_memory_mb, const Progress& progress);
 
 // Moves the estimate, the counts and the warnings into a job's report.
 template <class Report>

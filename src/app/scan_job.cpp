@@ -5,6 +5,7 @@
 #include "job_support.hpp"
 #include "occlusion/app/errors.hpp"
 #include "occlusion/app/json_output.hpp"
+#include "occlusion/app/memory_budget.hpp"
 #include "occlusion/io/atomic_file.hpp"
 #include "occlusion/io/cloud_io.hpp"
 
@@ -55,6 +56,8 @@ ScanReport run_scan_on(const PointCloud& cloud, const ViewpointChoice::Resolved&
   report.request = request;
   report.viewpoint_names = viewpoints.names;
   report.viewpoint_positions = viewpoints.positions;
+  check_memory_budget(scan_memory(cloud.size(), viewpoints.positions.size()),
+                      request.max_memory_mb);
 
   ScanOptions options;
   options.point_radius = request.point_radius;
@@ -103,11 +106,13 @@ ScanReport run_scan(const ScanRequest& request, const Progress& progress) {
     for (const auto count : report.result.visible_count) {
       visible_count.values.push_back(static_cast<float>(count));
     }
-    write_cloud(scanned_path, cloud.subset(seen_points(report.result)));
-    write_cloud(full_path, cloud, {visible_count});
+    OutputSet outputs;
+    write_cloud(outputs.add(scanned_path), cloud.subset(seen_points(report.result)));
+    write_cloud(outputs.add(full_path), cloud, {visible_count});
     report.outputs = {json_path, scanned_path, full_path};
     report.total_seconds = job::seconds_since(start);
-    job::write_json_report(json_path, to_json(report));
+    job::write_json_report(outputs.add(json_path), to_json(report));
+    outputs.commit();
   }
   report.total_seconds = job::seconds_since(start);
   return report;

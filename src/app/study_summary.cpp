@@ -229,11 +229,16 @@ void write_study_summary(StudyReport& report, const std::string& out) {
   ensure_directory(out);
   const auto path = [&](const char* name) { return (std::filesystem::path(out) / name).string(); };
   const std::string svg = plot(report);
-  write_file_atomically(path("study.svg"), [&](std::ostream& stream) { stream << svg; });
-  write_file_atomically(path("study.md"),
+  // study.csv is the resumable table, written row by row as runs finish; the
+  // summary files appear together.
+  OutputSet outputs;
+  write_file_atomically(outputs.add(path("study.svg")),
+                        [&](std::ostream& stream) { stream << svg; });
+  write_file_atomically(outputs.add(path("study.md")),
                         [&](std::ostream& stream) { write_markdown(stream, report, "study.svg"); });
   report.outputs = {path("study.json"), path("study.csv"), path("study.svg"), path("study.md")};
-  write_json_report(path("study.json"), to_json(report));
+  write_json_report(outputs.add(path("study.json")), to_json(report));
+  outputs.commit();
 }
 
 }  // namespace occlusion::job

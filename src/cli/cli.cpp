@@ -6,6 +6,8 @@
 #include <cstdio>
 
 #include "commands.hpp"
+#include "interrupt.hpp"
+#include "occlusion/analysis/progress.hpp"
 #include "occlusion/app/errors.hpp"
 
 namespace occlusion::cli {
@@ -38,7 +40,19 @@ void print_help() {
 
 }  // namespace
 
+int run_command_line(const std::vector<std::string>& args);
+
 int run(const std::vector<std::string>& args) {
+  try {
+    return run_command_line(args);
+  } catch (const Cancelled&) {
+    // The job unwound and removed its temporary files: die as signalled.
+    reraise_interrupt();
+    throw;
+  }
+}
+
+int run_command_line(const std::vector<std::string>& args) {
   if (args.empty() || args[0] == "-h" || args[0] == "--help" || args[0] == "help") {
     print_help();
     return args.empty() ? exit_code(ErrorKind::kUsage) : 0;

@@ -80,7 +80,7 @@ int run_job_command(const JobInfo& job, const std::vector<std::string>& args) {
   sources.push_back(
       source_from_arguments(job_args, job.keys, job.cli_names.front(), job.positional));
   Progress progress = make_progress_printer(job.tag, face.quiet);
-  progress.cancel = cancel_on_interrupt();
+  progress.cancel = &interrupt_flag();
   const JobRun run = job.run(sources, progress);
   print_warnings(run.warnings);
   if (face.json) {

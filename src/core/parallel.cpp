@@ -4,6 +4,7 @@
 #include <atomic>
 #include <exception>
 #include <mutex>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -50,7 +51,15 @@ void parallel_for(std::size_t count, std::size_t grain, unsigned threads,
 
   std::vector<std::thread> pool;
   pool.reserve(workers - 1);
-  for (unsigned i = 1; i < workers; ++i) pool.emplace_back(work);
+  for (unsigned i = 1; i < workers; ++i) {
+    // A request for more threads than the system gives (say 40,000) runs on
+    // those it got: a thread that cannot start is not an error of the work.
+    try {
+      pool.emplace_back(work);
+    } catch (const std::system_error&) {
+      break;
+    }
+  }
   work();
   for (auto& thread : pool) thread.join();
   if (first_error) std::rethrow_exception(first_error);

@@ -19,6 +19,11 @@ bool inside(const fs::path& root, const fs::path& path) {
   return root_end == root.end();
 }
 
+// Folders below an input folder that readers look into: Area/room/Annotations/file.
+constexpr int kNestedDepth = 4;
+// A folder with more entries than this is not walked to the end; it is refused.
+constexpr std::size_t kMaxNestedEntries = 200000;
+
 }  // namespace
 
 DataRoot::DataRoot(const std::string& directory) {
@@ -50,7 +55,36 @@ fs::path DataRoot::resolve(const std::string& relative, bool must_exist) const {
   if (must_exist && !fs::exists(resolved, error)) {
     throw ProtocolError("not_found", "'" + relative + "' does not exist in the data directory");
   }
+  // A folder read as a scene (an S3DIS room or Area) is read file by file: a
+  // link inside it must not lead out either.
+  if (must_exist && resolved != root_ && fs::is_directory(resolved, error)) {
+    std::size_t seen = 0;
+    check_nested(resolved, relative, kNestedDepth, seen);
+  }
   return resolved;
+}
+
+void DataRoot::check_nested(const fs::path& dir, const std::string& relative, int depth,
+                            std::size_t& seen) const {
+  std::error_code error;
+  for (fs::directory_iterator it(dir, error), end; !error && it != end; it.increment(error)) {
+    if (++seen > kMaxNestedEntries) {
+      throw ProtocolError("invalid_request", "'" + relative + "' holds more than " +
+                                                 std::to_string(kMaxNestedEntries) +
+                                                 " entries; name a smaller folder");
+    }
+    const std::string name =
+        (relative.empty() ? "" : relative + "/") + it->path().filename().string();
+    std::error_code status;
+    if (it->is_symlink(status)) {
+      const fs::path target = fs::weakly_canonical(it->path(), status);
+      if (status || !inside(root_, target)) {
+        throw ProtocolError("path_outside_data",
+                            "'" + name + "' is a link that leads outside the data directory");
+      }
+    }
+    if (depth > 1 && it->is_directory(status)) check_nested(it->path(), name, depth - 1, seen);
+  }
 }
 
 std::string DataRoot::relative(const std::string& path) const {

@@ -7,6 +7,8 @@
 #include <cctype>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <string_view>
 
 #include "command_params.hpp"
 #include "command_table.hpp"
@@ -79,7 +81,12 @@ Json::Value entry_json(const fs::path& path, const std::string& relative) {
 Json::Value list_files(CommandContext& context) {
   allow_keys(context.params, {"dir"});
   const std::string dir = string_param(context.params, "dir", "");
-  const fs::path resolved = context.server.root.resolve(dir, true);
+  // Not an input: a folder holding a link that leads out is listed, without it.
+  const fs::path resolved = context.server.root.resolve(dir, false);
+  std::error_code status;
+  if (!fs::exists(resolved, status)) {
+    throw ProtocolError("not_found", "'" + dir + "' does not exist in the data directory");
+  }
   if (!fs::is_directory(resolved)) {
     throw ProtocolError("invalid_request", "'" + dir + "' is not a directory");
   }
@@ -157,15 +164,58 @@ std::vector<std::vector<Eigen::Vector3d>> read_polygon_param(const Json::Value& 
   return polygons;
 }
 
+// The first line write_polygons gives every openings file.
+constexpr std::string_view kOpeningsHeader = "# openings";
+
+bool starts_with_openings_header(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::string first(kOpeningsHeader.size(), '\0');
+  in.read(first.data(), static_cast<std::streamsize>(first.size()));
+  return in && first == kOpeningsHeader;
+}
+
+// save_polygon writes openings files and nothing else: a ".txt" name, never
+// in a scene folder (an S3DIS room reads every .txt in it), never the server's
+// out/ or uploads/ folders themselves, and over an existing file only when it
+// is an openings file (a text cloud is a .txt too).
+void check_openings_target(const DataRoot& root, const std::string& path,
+                           const fs::path& resolved) {
+  const auto refuse = [&](const std::string& why) {
+    throw ProtocolError("invalid_request", "'" + path + "' " + why);
+  };
+  if (resolved == root.path() || fs::is_directory(resolved)) refuse("is a directory");
+  if (lower_extension(resolved) != ".txt") {
+    refuse("is not an openings file name: save_polygon writes '.txt' files only");
+  }
+  const std::string relative = root.relative(resolved.string());
+  for (const char* reserved : {"out", "uploads"}) {
+    if (relative == reserved) refuse("is the server's own folder");
+  }
+  for (fs::path dir = resolved.parent_path(); dir != root.path() && dir.has_relative_path();
+       dir = dir.parent_path()) {
+    if (is_s3dis_room(dir) || dir.filename() == "Annotations") {
+      refuse(
+          "is inside a scene folder, whose .txt files are read as the scene; save it beside "
+          "the scene instead");
+    }
+  }
+  std::error_code status;
+  if (fs::exists(fs::symlink_status(resolved, status))) {
+    if (!fs::is_regular_file(resolved, status) || !starts_with_openings_header(resolved)) {
+      refuse(
+          "exists and is not an openings file (its first line is not '# openings'); choose "
+          "another name");
+    }
+  }
+}
+
 Json::Value save_polygon(CommandContext& context) {
   allow_keys(context.params, {"path", "polygons", "append"});
   const std::string path = required_string(context.params, "path");
   const bool append = bool_param(context.params, "append", false);
   auto polygons = read_polygon_param(context.params);
   const fs::path resolved = context.server.root.resolve(path, false);
-  if (resolved == context.server.root.path() || fs::is_directory(resolved)) {
-    throw ProtocolError("invalid_request", "'" + path + "' is a directory");
-  }
+  check_openings_target(context.server.root, path, resolved);
   if (append && fs::exists(resolved)) {
     auto existing = read_polygons(resolved.string());
     existing.insert(existing.end(), polygons.begin(), polygons.end());

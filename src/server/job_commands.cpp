@@ -113,7 +113,8 @@ std::vector<Command> job_commands() {
     commands.push_back(Command{job.name, Where::kWorker, [&job](CommandContext& context) {
                                  if (job.name == "study") refuse_segmenter_commands(context.params);
                                  const JobRun run =
-                                     job.run({job_source(context.params, job, context.server.root)},
+                                     job.run({job_source(context.params, job, context.server.root,
+                                                         context.server.limits.max_memory_mb)},
                                              context.progress());
                                  context.progress().check_cancel();
                                  const auto frames = job_frames().find(job.name);

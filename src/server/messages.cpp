@@ -107,6 +107,16 @@ std::string error_message(const Json::Value& id, const std::string& command,
   return write_json(json);
 }
 
+std::string queued_message(std::uint32_t id, std::size_t ahead) {
+  Json::Value json(Json::objectValue);
+  json["type"] = "progress";
+  json["id"] = id;
+  json["stage"] = "queued";
+  json["fraction"] = 0.0;
+  json["queue_position"] = Json::UInt64(ahead);
+  return write_json(json);
+}
+
 std::string progress_message(std::uint32_t id, const std::string& stage, double fraction) {
   Json::Value json(Json::objectValue);
   json["type"] = "progress";

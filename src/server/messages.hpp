@@ -4,6 +4,7 @@
 
 #include <json/value.h>
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -37,5 +38,8 @@ std::string result_message(std::uint32_t id, const std::string& command, Json::V
 std::string error_message(const Json::Value& id, const std::string& command,
                           const std::string& code, const std::string& message);
 std::string progress_message(std::uint32_t id, const std::string& stage, double fraction);
+// A waiting request's progress: stage "queued", fraction 0, and
+// "queue_position", the number of requests that start before it.
+std::string queued_message(std::uint32_t id, std::size_t ahead);
 
 }  // namespace occlusion::server

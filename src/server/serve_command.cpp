@@ -27,6 +27,15 @@ const Keys<ServerOptions>& serve_keys() {
                "DIR/uploads"),
       key("web", &R::web_dir).path().metavar("DIR").doc("the built viewer (web/dist if not given)"),
       key("workers", &R::workers).range(1, 256).metavar("N").doc("threads running loads and jobs"),
+      key("max_running_per_client", &R::max_running_per_client)
+          .range(1, 256)
+          .metavar("N")
+          .doc("jobs of one connection running at once; the others wait their turn"),
+      key("max_memory_mb", &R::max_memory_mb)
+          .range(0, 1u << 24)
+          .metavar("N")
+          .doc("memory budget of one job in MiB (work over it is refused up front with the "
+               "estimate); 0 = half the machine's memory"),
       custom_key<R>(
           "cache_mb", ValueType::kInteger,
           [](R& r, const Json::Value& v) { r.cache_bytes = v.asUInt64() * kMiB; },

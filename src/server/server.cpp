@@ -9,6 +9,8 @@
 #include <websocketpp/config/asio_no_tls.hpp>
 #include <websocketpp/server.hpp>
 
+#include <unistd.h>
+
 #include <atomic>
 #include <cstdio>
 #include <map>
@@ -68,24 +70,6 @@ class ConnectionOutbox : public Outbox {
   Handle handle_;
 };
 
-// WebSockets are not bound by the browser's same-origin policy, so any web page
-// the user visits could talk to a server on localhost. Only the served viewer,
-// a viewer on a loopback dev server, and non-browser clients (no Origin) may.
-bool origin_allowed(const std::string& origin, const std::string& host_header) {
-  if (origin.empty()) return true;
-  const std::size_t scheme = origin.find("://");
-  if (scheme == std::string::npos) return false;
-  const std::string authority = origin.substr(scheme + 3);
-  if (authority == host_header) return true;
-  std::string host = authority;
-  if (!host.empty() && host[0] == '[') {
-    host = host.substr(1, host.find(']') - 1);
-  } else {
-    host = host.substr(0, host.find(':'));
-  }
-  return is_loopback_host(host);
-}
-
 }  // namespace
 
 bool is_loopback_host(const std::string& host) {
@@ -93,6 +77,41 @@ bool is_loopback_host(const std::string& host) {
   boost::system::error_code error;
   const auto address = asio::ip::make_address(host, error);
   return !error && address.is_loopback();
+}
+
+namespace {
+
+// The host of "host", "host:port", "[v6]" or "[v6]:port".
+std::string host_of(const std::string& authority) {
+  if (!authority.empty() && authority[0] == '[') {
+    const std::size_t close = authority.find(']');
+    return close == std::string::npos ? std::string() : authority.substr(1, close - 1);
+  }
+  return authority.substr(0, authority.find(':'));
+}
+
+bool is_ip_literal(const std::string& host) {
+  boost::system::error_code error;
+  asio::ip::make_address(host, error);
+  return !error;
+}
+
+}  // namespace
+
+bool origin_allowed(const std::string& origin, const std::string& host_header,
+                    const std::string& listen_host) {
+  if (origin.empty()) return true;
+  const std::size_t scheme = origin.find("://");
+  if (scheme == std::string::npos) return false;
+  const std::string authority = origin.substr(scheme + 3);
+  if (is_loopback_host(host_of(authority))) return true;
+  if (authority != host_header) return false;
+  // The page's own origin, but a name can be rebound: evil.example resolving
+  // to 127.0.0.1 makes a foreign page "same-origin" with this server. Only a
+  // name the server is reached by without DNS (an address, or the host it
+  // listens on) is the served page's own.
+  const std::string host = host_of(authority);
+  return is_ip_literal(host) || host == listen_host;
 }
 
 struct Server::Impl {
@@ -120,11 +139,22 @@ struct Server::Impl {
 
 namespace {
 
+// Half the physical memory: room for two jobs and the scene cache. 4 GB when
+// the system does not say.
+std::uint64_t half_of_memory_mb() {
+  const long pages = ::sysconf(_SC_PHYS_PAGES);
+  const long page_size = ::sysconf(_SC_PAGE_SIZE);
+  if (pages <= 0 || page_size <= 0) return 4096;
+  return static_cast<std::uint64_t>(pages) / 2 * static_cast<std::uint64_t>(page_size) >> 20;
+}
+
 Limits limits_of(const ServerOptions& options) {
   Limits limits;
   limits.max_text_bytes = options.max_text_bytes;
   limits.max_upload_bytes = options.max_upload_bytes;
   limits.max_queued_jobs = options.max_queued_jobs;
+  limits.max_running_per_client = options.max_running_per_client;
+  limits.max_memory_mb = options.max_memory_mb != 0 ? options.max_memory_mb : half_of_memory_mb();
   limits.progress_interval_seconds = options.progress_interval_seconds;
   return limits;
 }
@@ -202,7 +232,7 @@ void Server::Impl::log(const std::string& line) const {
 bool Server::Impl::on_validate(Handle handle) {
   const Endpoint::connection_ptr connection = endpoint.get_con_from_hdl(handle);
   const std::string origin = connection->get_request_header("Origin");
-  if (origin_allowed(origin, connection->get_request_header("Host"))) return true;
+  if (origin_allowed(origin, connection->get_request_header("Host"), options.host)) return true;
   log("refused a WebSocket from origin " + origin);
   connection->set_status(websocketpp::http::status_code::forbidden);
   return false;

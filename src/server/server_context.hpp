@@ -2,6 +2,7 @@
 // What every connection of one server shares.
 
 #include <cstddef>
+#include <cstdint>
 
 #include "occlusion/server/data_root.hpp"
 #include "scene_cache.hpp"
@@ -13,6 +14,12 @@ struct Limits {
   std::size_t max_text_bytes = std::size_t{1} << 20;
   std::size_t max_upload_bytes = std::size_t{256} << 20;
   std::size_t max_queued_jobs = 64;
+  // Jobs and loads of one connection running at once; the rest of its
+  // requests wait while other clients' start (fairness).
+  std::size_t max_running_per_client = 1;
+  // Each job's memory budget (app/memory_budget.hpp): work estimated to need
+  // more is refused up front instead of taking the server down.
+  std::uint64_t max_memory_mb = 4096;
   double progress_interval_seconds = 0.1;  // at most 10 progress events per second per job
 };
 
@@ -22,7 +29,7 @@ struct ServerContext {
       : root(data),
         limits(server_limits),
         cache(cache_bytes),
-        pool(workers, server_limits.max_queued_jobs) {}
+        pool(workers, server_limits.max_queued_jobs, server_limits.max_running_per_client) {}
 
   DataRoot root;
   Limits limits;

@@ -41,6 +41,8 @@ std::string hello_message(const Limits& limits) {
   limit["max_text_bytes"] = Json::UInt64(limits.max_text_bytes);
   limit["max_upload_bytes"] = Json::UInt64(limits.max_upload_bytes);
   limit["progress_per_second"] = 1.0 / limits.progress_interval_seconds;
+  limit["max_memory_mb"] = Json::UInt64(limits.max_memory_mb);
+  limit["max_running_per_client"] = Json::UInt64(limits.max_running_per_client);
   json["limits"] = limit;
   return write_json(json);
 }
@@ -104,9 +106,19 @@ void Session::dispatch(const Request& request) {
 void Session::submit(const std::string& command, std::uint32_t id, Json::Value params, Run run,
                      const Flag& flag) {
   auto self = shared_from_this();
-  const bool queued =
-      server_.pool.submit([self, command, id, params = std::move(params), run = std::move(run),
-                           flag] { self->execute(command, id, params, run, flag); });
+  // Until a worker takes it, the request's progress is its place in the queue.
+  auto on_position = [outbox = outbox_, id](std::size_t ahead) {
+    outbox->send_text(queued_message(id, ahead));
+  };
+  // Jobs share the workers fairly between clients; loads and uploads, which a
+  // client waits on to go on working, are not held back behind its own jobs.
+  const bool is_job = command != "load" && command != "upload";
+  const bool queued = server_.pool.submit(
+      is_job ? this : nullptr,
+      [self, command, id, params = std::move(params), run = std::move(run), flag] {
+        self->execute(command, id, params, run, flag);
+      },
+      std::move(on_position));
   if (!queued) {
     finish(id);
     send_error(Json::Value(id), command, "busy", "too many jobs are waiting; try again later");
@@ -230,10 +242,14 @@ void Session::cancel(const Request& request) {
 }
 
 void Session::close() {
-  const std::lock_guard<std::mutex> lock(mutex_);
-  closed_ = true;
-  for (auto& [id, flag] : running_) flag->store(true);
-  uploads_.clear();
+  {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    closed_ = true;
+    for (auto& [id, flag] : running_) flag->store(true);
+    uploads_.clear();
+  }
+  // Its waiting requests never start; running ones stop at their next check.
+  server_.pool.drop(this);
 }
 
 std::size_t Session::running() const {

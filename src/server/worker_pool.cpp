@@ -1,8 +1,12 @@
 #include "worker_pool.hpp"
 
+#include <algorithm>
+#include <cstdint>
+
 namespace occlusion::server {
 
-WorkerPool::WorkerPool(unsigned threads, std::size_t max_queued) : max_queued_(max_queued) {
+WorkerPool::WorkerPool(unsigned threads, std::size_t max_queued, std::size_t per_owner)
+    : max_queued_(max_queued), per_owner_(std::max<std::size_t>(per_owner, 1)) {
   if (threads == 0) threads = 1;
   threads_.reserve(threads);
   for (unsigned t = 0; t < threads; ++t) threads_.emplace_back([this] { work(); });
@@ -12,18 +16,41 @@ WorkerPool::~WorkerPool() {
   stop();
 }
 
-bool WorkerPool::submit(std::function<void()> task) {
+bool WorkerPool::submit(Owner owner, std::function<void()> task, OnPosition on_position) {
+  Notices notices;
   {
     const std::lock_guard<std::mutex> lock(mutex_);
     if (stopping_ || queue_.size() >= max_queued_) return false;
-    queue_.push_back(std::move(task));
+    queue_.push_back(Queued{owner, std::move(task), std::move(on_position)});
+    notices = positions();
   }
-  wake_.notify_one();
+  wake_.notify_all();
+  tell(notices);
   return true;
 }
 
+void WorkerPool::drop(Owner owner) {
+  std::deque<Queued> dropped;
+  Notices notices;
+  {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    for (auto it = queue_.begin(); it != queue_.end();) {
+      if (it->owner == owner) {
+        dropped.push_back(std::move(*it));
+        it = queue_.erase(it);
+      } else {
+        ++it;
+      }
+    }
+    notices = positions();
+  }
+  tell(notices);
+  // Destroyed outside the lock: a task may own the last reference to a session.
+  dropped.clear();
+}
+
 void WorkerPool::stop() {
-  std::deque<std::function<void()>> dropped;
+  std::deque<Queued> dropped;
   {
     const std::lock_guard<std::mutex> lock(mutex_);
     stopping_ = true;
@@ -33,21 +60,75 @@ void WorkerPool::stop() {
   for (auto& thread : threads_) {
     if (thread.joinable()) thread.join();
   }
-  // Destroyed outside the lock: a task may own the last reference to a session.
   dropped.clear();
+}
+
+std::optional<std::size_t> WorkerPool::next_runnable() const {
+  for (std::size_t i = 0; i < queue_.size(); ++i) {
+    if (queue_[i].owner == nullptr) return i;
+    const auto it = running_.find(queue_[i].owner);
+    if (it == running_.end() || it->second < per_owner_) return i;
+  }
+  return std::nullopt;
+}
+
+WorkerPool::Notices WorkerPool::positions() {
+  // A task's position: the queued tasks before it whose owners may start
+  // them, plus those of its own owner ahead of it (they go first).
+  // A task an idle worker is about to take is not told it waits.
+  Notices notices;
+  std::size_t running_total = 0;
+  for (const auto& [owner, count] : running_) running_total += count;
+  const std::size_t idle = threads_.size() > running_total ? threads_.size() - running_total : 0;
+  std::map<Owner, std::size_t> waiting;
+  std::size_t runnable_ahead = 0;
+  for (auto& queued : queue_) {
+    const auto running = running_.find(queued.owner);
+    const std::size_t busy = running == running_.end() ? 0 : running->second;
+    std::size_t& own_ahead = waiting[queued.owner];
+    const std::size_t position = runnable_ahead + own_ahead;
+    const bool blocked = queued.owner != nullptr && busy + own_ahead >= per_owner_;
+    const bool waits = blocked || position >= idle || queued.reported != SIZE_MAX;
+    if (queued.on_position && waits && position != queued.reported) {
+      queued.reported = position;
+      notices.emplace_back(queued.on_position, position);
+    }
+    if (!blocked) ++runnable_ahead;
+    ++own_ahead;
+  }
+  return notices;
+}
+
+void WorkerPool::tell(const Notices& notices) {
+  for (const auto& [on_position, position] : notices) on_position(position);
 }
 
 void WorkerPool::work() {
   for (;;) {
-    std::function<void()> task;
+    Queued next;
+    Notices notices;
     {
       std::unique_lock<std::mutex> lock(mutex_);
-      wake_.wait(lock, [this] { return stopping_ || !queue_.empty(); });
+      std::optional<std::size_t> index;
+      wake_.wait(lock, [&] { return stopping_ || (index = next_runnable()).has_value(); });
       if (stopping_) return;
-      task = std::move(queue_.front());
-      queue_.pop_front();
+      next = std::move(queue_[*index]);
+      queue_.erase(queue_.begin() + static_cast<std::ptrdiff_t>(*index));
+      ++running_[next.owner];
+      notices = positions();
     }
-    task();
+    tell(notices);
+    const Owner owner = next.owner;
+    next.task();
+    next = Queued{};  // the task's captures go before its owner's slot frees
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      if (--running_[owner] == 0) running_.erase(owner);
+      notices = positions();
+    }
+    // The owner's next task may start now, on any worker.
+    wake_.notify_all();
+    tell(notices);
   }
 }
 

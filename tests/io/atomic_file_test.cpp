@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <stdexcept>
 #include <string>
@@ -121,6 +122,81 @@ TEST(EnsureDirectory, ExistingFileIsAnOutputError) {
     EXPECT_NE(std::string(error.what()).find("not a directory"), std::string::npos);
   }
   EXPECT_THROW(ensure_directory(path + "/below"), OutputError);
+}
+
+std::vector<std::string> sorted_entries(const ScratchDirectory& dir) {
+  std::vector<std::string> names = dir.entries();
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+void write_through(OutputSet& outputs, const std::string& target, const std::string& text) {
+  write_file_atomically(outputs.add(target), [&](std::ostream& out) { out << text; });
+}
+
+TEST(OutputSet, CommitReplacesEveryFileAtOnce) {
+  ScratchDirectory dir;
+  write_text(dir.file("a.ply"), "old a");
+  write_text(dir.file("b.json"), "old b");
+  OutputSet outputs;
+  write_through(outputs, dir.file("a.ply"), "new a");
+  write_through(outputs, dir.file("b.json"), "new b");
+  // Nothing shows before commit.
+  EXPECT_EQ(read_bytes(dir.file("a.ply")), "old a");
+  EXPECT_EQ(read_bytes(dir.file("b.json")), "old b");
+  outputs.commit();
+  EXPECT_EQ(read_bytes(dir.file("a.ply")), "new a");
+  EXPECT_EQ(read_bytes(dir.file("b.json")), "new b");
+  EXPECT_EQ(sorted_entries(dir), (std::vector<std::string>{"a.ply", "b.json"}));
+}
+
+TEST(OutputSet, TemporaryNamesKeepTheExtension) {
+  ScratchDirectory dir;
+  OutputSet outputs;
+  const std::string temporary = outputs.add(dir.file("scene.scan.pcd"));
+  EXPECT_EQ(std::filesystem::path(temporary).extension(), ".pcd");
+  EXPECT_EQ(std::filesystem::path(temporary).parent_path(), dir.path());
+  EXPECT_EQ(std::filesystem::path(temporary).filename().string()[0], '.');
+}
+
+TEST(OutputSet, AFailureMidSetLeavesTheOldSetAndNoTemporary) {
+  ScratchDirectory dir;
+  write_text(dir.file("a.ply"), "old a");
+  write_text(dir.file("b.json"), "old b");
+  {
+    OutputSet outputs;
+    write_through(outputs, dir.file("a.ply"), "new a");
+    EXPECT_THROW(write_file_atomically(outputs.add(dir.file("b.json")),
+                                       [](std::ostream&) { throw std::runtime_error("killed"); }),
+                 std::runtime_error);
+  }
+  EXPECT_EQ(read_bytes(dir.file("a.ply")), "old a");
+  EXPECT_EQ(read_bytes(dir.file("b.json")), "old b");
+  EXPECT_EQ(sorted_entries(dir), (std::vector<std::string>{"a.ply", "b.json"}));
+}
+
+TEST(OutputSet, RefusesBeforeRenamingWhenATargetIsAFolderOrAFileIsMissing) {
+  ScratchDirectory dir;
+  write_text(dir.file("a.ply"), "old a");
+  std::filesystem::create_directories(dir.file("b.json/inside"));
+  {
+    OutputSet outputs;
+    write_through(outputs, dir.file("a.ply"), "new a");
+    write_through(outputs, dir.file("b.json"), "new b");
+    EXPECT_THROW(outputs.commit(), OutputError);
+  }
+  EXPECT_EQ(read_bytes(dir.file("a.ply")), "old a");
+  {
+    OutputSet outputs;
+    write_through(outputs, dir.file("a.ply"), "new a");
+    outputs.add(dir.file("c.csv"));  // never written
+    EXPECT_THROW(outputs.commit(), OutputError);
+  }
+  EXPECT_EQ(read_bytes(dir.file("a.ply")), "old a");
+  EXPECT_EQ(sorted_entries(dir), (std::vector<std::string>{"a.ply", "b.json"}));
+  OutputSet twice;
+  twice.add(dir.file("a.ply"));
+  EXPECT_THROW(twice.add(dir.file("a.ply")), OutputError);
 }
 
 }  // namespace

@@ -123,6 +123,22 @@ TEST(StaticFiles, ServesTheViewerAndNothingElse) {
   EXPECT_EQ(none.get("/app.js").status, 404);
 }
 
+TEST(Server, RefusesForeignAndReboundOrigins) {
+  using server::origin_allowed;
+  EXPECT_TRUE(origin_allowed("", "127.0.0.1:8080", "127.0.0.1"));  // not a browser
+  EXPECT_TRUE(origin_allowed("http://127.0.0.1:8080", "127.0.0.1:8080", "127.0.0.1"));
+  EXPECT_TRUE(origin_allowed("http://localhost:5173", "127.0.0.1:8080", "127.0.0.1"));
+  EXPECT_TRUE(origin_allowed("http://[::1]:8080", "[::1]:8080", "::1"));
+  EXPECT_TRUE(origin_allowed("http://192.168.1.10:8080", "192.168.1.10:8080", "0.0.0.0"));
+  EXPECT_TRUE(origin_allowed("http://lab-pc:8080", "lab-pc:8080", "lab-pc"));
+  EXPECT_FALSE(origin_allowed("http://evil.example", "127.0.0.1:8080", "127.0.0.1"));
+  // DNS rebinding: evil.example now resolves to 127.0.0.1, so the browser
+  // sends its own name as both Origin and Host.
+  EXPECT_FALSE(origin_allowed("http://evil.example:8080", "evil.example:8080", "127.0.0.1"));
+  EXPECT_FALSE(origin_allowed("http://evil.example:8080", "evil.example:8080", "0.0.0.0"));
+  EXPECT_FALSE(origin_allowed("null", "127.0.0.1:8080", "127.0.0.1"));
+}
+
 TEST(Server, KnowsWhichHostsAreLoopback) {
   for (const char* host : {"127.0.0.1", "127.4.5.6", "::1", "localhost"}) {
     EXPECT_TRUE(server::is_loopback_host(host)) << host;

@@ -10,6 +10,7 @@
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -82,8 +83,12 @@ double mesh_shadow_epsilon(const TriangleMesh& mesh, const MeshOcclusionOptions&
 // (t = 1 at the viewpoint), formed in double and rounded to float once, over
 // [epsilon / |d|, 1 - epsilon / |d|] so that `epsilon` stays clear at both ends.
 // False, and `ray` untouched, when the two are within 2 * epsilon of each other:
-// the sample is then visible from that viewpoint without a ray.
+// the sample is then visible from that viewpoint without a ray. A ray longer
+// than `reach` (beyond which nothing can block it) is cut to that length, over
+// [epsilon / reach, 1]. compute_mesh_occlusion passes both points relative to
+// the mesh's centre and reach = twice the mesh's diagonal.
 bool mesh_shadow_ray(const Eigen::Vector3d& sample, const Eigen::Vector3d& viewpoint,
-                     double epsilon, Ray& ray);
+                     double epsilon, Ray& ray,
+                     double reach = std::numeric_limits<double>::infinity());
 
 }  // namespace occlusion

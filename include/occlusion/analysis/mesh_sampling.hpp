@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "occlusion/analysis/progress.hpp"
 #include "occlusion/core/mesh.hpp"
 
 namespace occlusion {
@@ -25,7 +26,10 @@ struct MeshSamples {
 // random stream derived from (seed, f), so the result does not depend on the
 // order or thread in which faces are processed.
 // Throws std::invalid_argument if samples_per_unit_area is not finite and > 0.
-MeshSamples sample_mesh(const TriangleMesh& mesh, double samples_per_unit_area, std::uint64_t seed);
+// Reports stage "sampling" and checks `progress`'s cancel flag every block of
+// samples (a dense mesh takes tens of seconds).
+MeshSamples sample_mesh(const TriangleMesh& mesh, double samples_per_unit_area, std::uint64_t seed,
+                        const Progress& progress = {});
 
 // Number of samples face f of the given area gets (the rule above).
 std::size_t samples_for_area(double area, double samples_per_unit_area);

@@ -24,6 +24,8 @@ struct ScanRequest {
   bool skip_bad_lines = false;
   unsigned threads = 0;
   std::string out;
+  // Refuse, before the work, a request estimated to need more (memory_budget.hpp); 0 = no budget.
+  std::uint64_t max_memory_mb = 0;
 };
 
 struct ClassVisibility {

@@ -33,6 +33,17 @@ KeyBuilder<R> threads_key(unsigned R::*field) {
 }
 
 template <class R>
+KeyBuilder<R> max_memory_key(std::uint64_t R::*field) {
+  return key("max_memory_mb", field)
+      .range(0, 1u << 24)
+      .unit("MiB")
+      .metavar("N")
+      .doc(
+          "refuse up front, with the estimate, work that needs more memory; 0 = no budget "
+          "(the server's own budget always applies)");
+}
+
+template <class R>
 KeyBuilder<R> octree_resolution_key(double R::*field) {
   return key("octree_resolution", field)
       .non_negative()

@@ -6,6 +6,8 @@
 #include <functional>
 #include <ostream>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace occlusion {
 
@@ -16,6 +18,36 @@ namespace occlusion {
 // exception thrown by `write` removes it too and propagates unchanged.
 void write_file_atomically(const std::string& path,
                            const std::function<void(std::ostream&)>& write);
+
+// A job's outputs, which appear together or not at all: each writer writes to
+// the temporary name `add` gives (beside its target), and `commit` renames
+// them all onto their targets once every one is written. An OutputSet
+// destroyed without commit (a writer threw, the run was cancelled or
+// interrupted) removes its temporaries and leaves the previous outputs as they
+// were.
+//
+//   OutputSet outputs;
+//   write_mesh_ply(outputs.add(ply_path), ...);
+//   write_json_report(outputs.add(json_path), ...);
+//   outputs.commit();
+class OutputSet {
+ public:
+  OutputSet() = default;
+  ~OutputSet();
+  OutputSet(const OutputSet&) = delete;
+  OutputSet& operator=(const OutputSet&) = delete;
+
+  // The temporary name to write `target` to. OutputError for a path without a
+  // file name or a target named twice.
+  std::string add(const std::string& target);
+  // Renames every temporary onto its target. OutputError, with every
+  // temporary removed and no target touched, if one of them was not written.
+  void commit();
+
+ private:
+  std::vector<std::pair<std::string, std::string>> files_;  // temporary, target
+  bool committed_ = false;
+};
 
 // Creates `dir` and its missing parents. OutputError if it exists as something
 // other than a directory or cannot be created. An empty string is the current

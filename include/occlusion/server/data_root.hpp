@@ -22,7 +22,9 @@ class DataRoot {
   // The canonical file for a client's path ("" is the data directory itself).
   // Throws ProtocolError "path_outside_data" for an absolute path or one whose
   // canonical form (symbolic links resolved) is not inside the data directory,
-  // and "not_found" when `must_exist` and nothing is there.
+  // and "not_found" when `must_exist` and nothing is there. `must_exist` means
+  // an input: a folder is then also refused when a symbolic link anywhere in
+  // it (four levels down, as deep as an S3DIS Area's files) leads out.
   std::filesystem::path resolve(const std::string& relative, bool must_exist) const;
 
   // `path` relative to the data directory with '/' separators, "" for the
@@ -34,6 +36,10 @@ class DataRoot {
   void relativise(Json::Value& json) const;
 
  private:
+  // Throws ProtocolError for a link under `dir` leading outside; `seen` counts entries.
+  void check_nested(const std::filesystem::path& dir, const std::string& relative, int depth,
+                    std::size_t& seen) const;
+
   std::filesystem::path root_;
   std::string prefix_;  // root_ + '/'
 };

@@ -22,6 +22,9 @@ struct ServerOptions {
   std::size_t max_upload_bytes = std::size_t{256} << 20;
   std::size_t max_text_bytes = std::size_t{1} << 20;
   std::size_t max_queued_jobs = 64;
+  std::size_t max_running_per_client = 1;  // a connection's jobs running at once
+  // A job estimated to need more memory is refused; 0: half the machine's memory.
+  std::uint64_t max_memory_mb = 0;
   double progress_interval_seconds = 0.1;
   bool stop_on_signals = false;  // SIGINT and SIGTERM stop run() (the CLI sets it)
   // One line per notable event; default: stderr.
@@ -55,5 +58,16 @@ class Server {
 
 // True for 127.0.0.0/8, ::1 and "localhost".
 bool is_loopback_host(const std::string& host);
+
+// Whether a WebSocket whose Origin header is `origin` (empty: not a browser)
+// may connect to a server listening on `listen_host` and reached as
+// `host_header`. WebSockets are not bound by the browser's same-origin policy,
+// so any page the user visits could talk to a server on localhost. Allowed: no
+// Origin, a viewer on a loopback dev server, and the served page itself when
+// it was reached by an address or by the listening host's own name; refused:
+// any other page, and a page whose name was rebound (DNS rebinding) to this
+// server's address.
+bool origin_allowed(const std::string& origin, const std::string& host_header,
+                    const std::string& listen_host);
 
 }  // namespace occlusion::server

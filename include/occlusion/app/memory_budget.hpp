@@ -1,0 +1,37 @@
+#pragma once
+// Work whose size would exceed a memory budget is refused before it starts,
+// with the estimate and what it is made of, instead of being attempted until
+// the machine (or the server every client shares) runs out of memory. Each
+// job's estimate is here, once: it counts the large arrays the job allocates
+// for its request and input, not every byte.
+
+#include <cstdint>
+#include <string>
+
+#include "occlusion/analysis/mesh_estimation.hpp"
+#include "occlusion/core/mesh.hpp"
+
+namespace occlusion {
+
+struct MemoryEstimate {
+  std::uint64_t bytes = 0;
+  std::string made_of;  // for people: "2,000,000 samples x 7 viewpoints"
+};
+
+// UsageError, naming the estimate and `max_memory_mb`, when the estimate
+// exceeds max_memory_mb (0: no budget).
+void check_memory_budget(const MemoryEstimate& estimate, std::uint64_t max_memory_mb);
+
+// -moc: samples (exactly as sample_mesh counts them) x viewpoints, the octree.
+MemoryEstimate mesh_occlusion_memory(const TriangleMesh& mesh, double samples_per_unit_area,
+                                     std::size_t viewpoints);
+// -poc: the point octree, and each viewpoint's escape directions when kept.
+MemoryEstimate cloud_occlusion_memory(std::size_t points, std::size_t viewpoints,
+                                      std::uint64_t rays_per_viewpoint, bool keep_escapes);
+// -fscan: the point octree and the per-point counts.
+MemoryEstimate scan_memory(std::size_t points, std::size_t viewpoints);
+// -rgoc and extract_polygons: PCL's cloud, normals, kd-tree and the
+// neighbour lists of region growing and normal estimation.
+MemoryEstimate region_growing_memory(std::size_t points, const RegionGrowingOptions& options);
+
+}  // namespace occlusion

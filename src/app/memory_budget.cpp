@@ -1,0 +1,98 @@
+#include "occlusion/app/memory_budget.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <limits>
+
+#include "occlusion/analysis/mesh_sampling.hpp"
+#include "occlusion/app/errors.hpp"
+#include "occlusion/core/parallel.hpp"
+
+namespace occlusion {
+
+namespace {
+
+constexpr std::uint64_t kMegabyte = std::uint64_t{1} << 20;
+constexpr std::uint64_t kMax = std::numeric_limits<std::uint64_t>::max();
+
+// a * b, saturating: the estimate of an absurd request must not wrap to a small one.
+std::uint64_t times(std::uint64_t a, std::uint64_t b) {
+  return (b != 0 && a > kMax / b) ? kMax : a * b;
+}
+
+std::uint64_t plus(std::uint64_t a, std::uint64_t b) {
+  return a > kMax - b ? kMax : a + b;
+}
+
+std::string count(std::uint64_t n) {
+  std::string digits = std::to_string(n);
+  for (int at = static_cast<int>(digits.size()) - 3; at > 0; at -= 3) {
+    digits.insert(static_cast<std::size_t>(at), ",");
+  }
+  return digits;
+}
+
+std::string megabytes(std::uint64_t bytes) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%.0f MB", static_cast<double>(bytes) / kMegabyte);
+  return text;
+}
+
+// Per element of the octrees: the primitive and its share of the nodes.
+constexpr std::uint64_t kTriangleOctreeBytes = 128;
+constexpr std::uint64_t kSphereOctreeBytes = 64;
+
+}  // namespace
+
+void check_memory_budget(const MemoryEstimate& estimate, std::uint64_t max_memory_mb) {
+  if (max_memory_mb == 0 || estimate.bytes <= times(max_memory_mb, kMegabyte)) return;
+  throw UsageError("this work needs about " + megabytes(estimate.bytes) + " (" + estimate.made_of +
+                   "), more than max_memory_mb = " + count(max_memory_mb) +
+                   ": ask for less, or raise max_memory_mb where the machine has the memory");
+}
+
+MemoryEstimate mesh_occlusion_memory(const TriangleMesh& mesh, double samples_per_unit_area,
+                                     std::size_t viewpoints) {
+  std::uint64_t samples = 0;
+  for (std::size_t f = 0; f < mesh.face_count(); ++f) {
+    samples = plus(samples, samples_for_area(mesh.face_area(f), samples_per_unit_area));
+  }
+  // Per sample: its point (24 bytes) and face (4), and one byte per viewpoint.
+  std::uint64_t bytes = times(samples, 28 + static_cast<std::uint64_t>(viewpoints));
+  bytes = plus(bytes, times(mesh.face_count(), kTriangleOctreeBytes));
+  return {bytes, count(samples) + " samples x " + count(viewpoints) + " viewpoints"};
+}
+
+MemoryEstimate cloud_occlusion_memory(std::size_t points, std::size_t viewpoints,
+                                      std::uint64_t rays_per_viewpoint, bool keep_escapes) {
+  std::uint64_t bytes = times(points, kSphereOctreeBytes);
+  std::string made_of = count(points) + " points";
+  if (keep_escapes) {
+    // Every ray may escape: 12 bytes of direction each.
+    bytes = plus(bytes, times(times(rays_per_viewpoint, viewpoints), 12));
+    made_of += ", " + count(rays_per_viewpoint) + " rays x " + count(viewpoints) +
+               " viewpoints of escape directions";
+  }
+  return {bytes, made_of};
+}
+
+MemoryEstimate scan_memory(std::size_t points, std::size_t viewpoints) {
+  // The octree, the counts, and the written subset (a copy of the cloud at most).
+  const std::uint64_t bytes = times(points, kSphereOctreeBytes + 4 + 32);
+  return {bytes, count(points) + " points, " + count(viewpoints) + " viewpoints"};
+}
+
+MemoryEstimate region_growing_memory(std::size_t points, const RegionGrowingOptions& options) {
+  // PCL's point (16 bytes), normal (32), kd-tree (~40), label and cluster ids.
+  std::uint64_t bytes = times(points, 100);
+  // Region growing keeps every point's neighbour list.
+  bytes = plus(bytes, times(times(points, options.neighbours), 4));
+  // Normal estimation: each thread holds k neighbours (index and distance);
+  // the search gives at most every point.
+  const std::uint64_t k = std::min<std::uint64_t>(options.normal_k, points);
+  bytes = plus(bytes, times(times(resolve_thread_count(options.threads), k), 8));
+  return {bytes, count(points) + " points, " + count(options.neighbours) +
+                     " neighbours each, normal_k " + count(options.normal_k)};
+}
+
+}  // namespace occlusion

@@ -1,0 +1,82 @@
+// Scenes far from the origin (UTM coordinates) and viewpoints far from the
+// scene give the levels they give near it: rays are traced around the scene's
+// centre and never longer than the scene can block.
+
+#include <gtest/gtest.h>
+
+#include "occlusion/analysis/cloud_occlusion.hpp"
+#include "occlusion/analysis/mesh_occlusion.hpp"
+#include "occlusion/analysis/scan.hpp"
+#include "support/scenes.hpp"
+
+namespace occlusion {
+namespace {
+
+// A room with a wardrobe inside, all shifted by `shift`.
+TriangleMesh room_at(const Eigen::Vector3d& shift) {
+  TriangleMesh mesh;
+  testing::add_box(mesh, shift, shift + Eigen::Vector3d(4, 3.5, 2.5), "room");
+  testing::add_box(mesh, shift + Eigen::Vector3d(3.2, 0.5, 0.2),
+                   shift + Eigen::Vector3d(3.7, 3.0, 2.0), "wardrobe");
+  return mesh;
+}
+
+TEST(FarCoordinates, ShiftedSceneGivesTheSameLevels) {
+  MeshOcclusionOptions options;
+  options.samples_per_unit_area = 400.0;
+  const std::vector<Eigen::Vector3d> viewpoints = {{1.0, 1.75, 1.5}, {2.5, 0.6, 1.0}};
+  const MeshOcclusionResult here = compute_mesh_occlusion(room_at({0, 0, 0}), viewpoints, options);
+  ASSERT_GT(here.occlusion_level, 0.05);  // the wardrobe hides a good part of the room
+
+  const Eigen::Vector3d shift(5e6, -5e6, 1e3);  // a UTM northing and easting
+  std::vector<Eigen::Vector3d> shifted_viewpoints;
+  for (const auto& v : viewpoints) shifted_viewpoints.push_back(v + shift);
+  const MeshOcclusionResult there =
+      compute_mesh_occlusion(room_at(shift), shifted_viewpoints, options);
+  EXPECT_NEAR(there.occlusion_level, here.occlusion_level, 1e-9);
+  ASSERT_EQ(there.groups.size(), here.groups.size());
+  for (std::size_t g = 0; g < here.groups.size(); ++g) {
+    EXPECT_NEAR(there.groups[g].occlusion_level, here.groups[g].occlusion_level, 1e-9);
+  }
+  EXPECT_EQ(there.face_visible_fraction, here.face_visible_fraction);
+}
+
+// A closed unit cube seen from far along (+x, +y, +z): the three faces that
+// look that way are visible, the three behind them are not, however far.
+TEST(FarCoordinates, DistantViewpointDoesNotSeeThroughWalls) {
+  TriangleMesh cube;
+  testing::add_box(cube, {0, 0, 0}, {1, 1, 1}, "cube");
+  MeshOcclusionOptions options;
+  options.samples_per_unit_area = 2000.0;
+  const Eigen::Vector3d direction(1.0, 0.7, 0.4);
+  for (const double distance : {10.0, 1e6, 1e20, 1e30}) {
+    const MeshOcclusionResult result =
+        compute_mesh_occlusion(cube, {direction * distance}, options);
+    EXPECT_NEAR(result.occlusion_level, 0.5, 2e-3) << "viewpoint at " << distance;
+  }
+}
+
+// Clouds are traced in float where they lie: where float cannot resolve a
+// point's sphere, the analyses refuse instead of answering wrongly.
+TEST(FarCoordinates, CloudAnalysesRefuseWherePrecisionCannotHold) {
+  PointCloud cloud;
+  for (int i = 0; i < 10; ++i) cloud.positions.push_back(Eigen::Vector3f(0.1f * i, 0, 0));
+  CloudOcclusionOptions occlusion;
+  occlusion.num_rays_per_vp = 100;
+  ScanOptions scan;
+  const std::vector<Eigen::Vector3d> near = {{0.5, 1, 0}};
+  EXPECT_NO_THROW(compute_cloud_occlusion(cloud, near, {}, occlusion));
+  EXPECT_NO_THROW(scan_cloud(cloud, near, scan));
+  const std::vector<Eigen::Vector3d> far = {{1e20, 0, 0}};
+  EXPECT_THROW(compute_cloud_occlusion(cloud, far, {}, occlusion), std::invalid_argument);
+  EXPECT_THROW(scan_cloud(cloud, far, scan), std::invalid_argument);
+
+  PointCloud shifted = cloud;
+  for (auto& p : shifted.positions) p.y() += 5e6f;  // 0.5 units apart there
+  const std::vector<Eigen::Vector3d> shifted_near = {{0.5, 5e6 + 1, 0}};
+  EXPECT_THROW(compute_cloud_occlusion(shifted, shifted_near, {}, occlusion),
+               std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace occlusion

@@ -1,0 +1,192 @@
+// Requests meant to take the server down, or to reach past --data, and the
+// fair share of the workers: each abusive request gets an error reply (or a
+// right answer) and the server goes on answering everyone.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "server_fixture.hpp"
+
+namespace occlusion::testing {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+void expect_serving(const TestServer& server) {
+  auto other = server.connect();
+  EXPECT_TRUE(other->request(90, "ping").ok());
+  EXPECT_TRUE(other->request(91, "load", params(R"({"path": "sample_room.obj"})")).ok());
+}
+
+// A small wall-and-floor cloud, with `extra` lines appended, as a text file.
+void write_cloud(const TestServer& server, const std::string& name, const std::string& extra) {
+  std::ofstream out(server.files().file(name));
+  for (int i = 0; i <= 30; ++i) {
+    for (int j = 0; j <= 30; ++j) {
+      out << i * 0.05 << ' ' << j * 0.05 << " 0\n" << i * 0.05 << " 0 " << 0.05 + j * 0.05 << '\n';
+    }
+  }
+  out << extra;
+}
+
+TEST(Hardening, FortyThousandThreadsDoNotEndTheServer) {
+  TestServer server;
+  write_cloud(server, "wall.txt", "");
+  auto client = server.connect();
+  const Reply reply =
+      client->request(1, "region_growing_occlusion",
+                      params(R"({"path": "wall.txt", "threads": 40000, "min_cluster_size": 50,
+                 "samples_per_unit_area": 10, "out": ""})"),
+                      Millis(120000));
+  EXPECT_TRUE(reply.ok() || reply.error_code() == "invalid_request") << reply.final;
+  expect_serving(server);
+}
+
+TEST(Hardening, PointsNearFloatMaxAreAnErrorReply) {
+  TestServer server;
+  write_cloud(server, "far.txt", "3e38 0 -3e38\n-3e38 1 3e38\n");
+  auto client = server.connect();
+  for (const char* command : {"extract_polygons", "region_growing_occlusion"}) {
+    const Reply reply =
+        client->request(2, command, params(R"({"path": "far.txt", "out": ""})"), Millis(60000));
+    EXPECT_EQ(reply.error_code(), "invalid_request") << command << reply.final;
+  }
+  expect_serving(server);
+}
+
+TEST(Hardening, WorkBeyondTheMemoryBudgetIsRefusedWithTheEstimate) {
+  server::ServerOptions options = TestServer::quiet_options();
+  options.max_memory_mb = 64;
+  TestServer server(options);
+  auto client = server.connect();
+  const auto start = Clock::now();
+  const Reply reply = client->request(
+      3, "mesh_occlusion",
+      params(R"({"path": "sample_room.obj", "samples_per_unit_area": 1e6, "out": ""})"));
+  EXPECT_EQ(reply.error_code(), "invalid_request") << reply.final;
+  const std::string message = reply.final["message"].asString();
+  EXPECT_NE(message.find("MB"), std::string::npos) << message;
+  EXPECT_NE(message.find("max_memory_mb"), std::string::npos) << message;
+  EXPECT_LT(std::chrono::duration<double>(Clock::now() - start).count(), 10.0);  // not attempted
+  EXPECT_EQ(client->hello()["limits"]["max_memory_mb"].asUInt64(), 64u);
+  // Within the budget, the same job runs.
+  EXPECT_TRUE(client
+                  ->request(4, "mesh_occlusion",
+                            params(R"({"path": "sample_room.obj", "samples_per_unit_area": 5,
+                                       "out": ""})"))
+                  .ok());
+}
+
+// A job that runs for many seconds unless cancelled (see concurrency_test).
+Json::Value long_job() {
+  return params(R"({"path": "s3dis_synthetic/Area_1/office_1", "point_radius": 0.06,
+                    "num_rays_per_vp": 20000000, "out": ""})");
+}
+
+TEST(Hardening, OneClientsLongJobsLeaveAWorkerToOthers) {
+  TestServer server;  // two workers
+  auto greedy = server.connect();
+  greedy->send_request(1, "cloud_occlusion", long_job());
+  greedy->send_request(2, "cloud_occlusion", long_job());
+  // The second waits for the first, and says where it is in the queue.
+  bool told_position = false;
+  const auto deadline = Clock::now() + std::chrono::seconds(20);
+  while (!told_position && Clock::now() < deadline) {
+    const auto message = greedy->receive(Millis(1000));
+    if (!message || message->binary) continue;
+    const Json::Value json = params(message->data);
+    if (json["id"].asUInt() == 2 && json["stage"].asString() == "queued") {
+      EXPECT_TRUE(json.isMember("queue_position")) << json;
+      told_position = true;
+    }
+  }
+  EXPECT_TRUE(told_position);
+
+  auto other = server.connect();
+  const auto start = Clock::now();
+  const Reply reply = other->request(
+      1, "mesh_occlusion",
+      params(R"({"path": "sample_room.obj", "samples_per_unit_area": 5, "out": ""})"),
+      Millis(30000));
+  EXPECT_TRUE(reply.ok()) << reply.final;
+  EXPECT_LT(std::chrono::duration<double>(Clock::now() - start).count(), 10.0);
+  greedy->send_request(3, "cancel", params(R"({"target": 1})"));
+  greedy->send_request(4, "cancel", params(R"({"target": 2})"));
+  EXPECT_EQ(greedy->collect(1, Millis(20000)).error_code(), "cancelled");
+  EXPECT_EQ(greedy->collect(2, Millis(20000)).error_code(), "cancelled");
+}
+
+// Cancel is noticed while the mesh is sampled, not only once rays are traced.
+TEST(Hardening, CancelStopsSamplingAtOnce) {
+  TestServer server;
+  auto client = server.connect();
+  client->send_request(1, "mesh_occlusion",
+                       params(R"({"path": "sample_room.obj", "samples_per_unit_area": 60000,
+                                  "pattern": 1, "out": ""})"));
+  // Wait until it samples.
+  const auto deadline = Clock::now() + std::chrono::seconds(20);
+  bool sampling = false;
+  while (!sampling && Clock::now() < deadline) {
+    const auto message = client->receive(Millis(1000));
+    if (!message || message->binary) continue;
+    sampling = params(message->data)["stage"].asString() == "sampling";
+  }
+  ASSERT_TRUE(sampling);
+  const auto start = Clock::now();
+  client->send_request(2, "cancel", params(R"({"target": 1})"));
+  EXPECT_EQ(client->collect(1, Millis(30000)).error_code(), "cancelled");
+  EXPECT_LT(std::chrono::duration<double>(Clock::now() - start).count(), 2.0);
+}
+
+TEST(Hardening, LinkNestedInASceneFolderCannotLeadOut) {
+  TestServer server;
+  const std::string room = server.files().file("evil_room/Annotations");
+  fs::create_directories(room);
+  fs::create_symlink("../../../outside/secret.txt", room + "/chair_1.txt");
+  std::ofstream(server.files().file("evil_room/evil_room.txt")) << "0 0 0 1 2 3\n";
+  auto client = server.connect();
+  const Reply load = client->request(5, "load", params(R"({"path": "evil_room"})"));
+  EXPECT_EQ(load.error_code(), "path_outside_data") << load.final;
+  const Reply job =
+      client->request(6, "cloud_occlusion", params(R"({"path": "evil_room", "out": ""})"));
+  EXPECT_EQ(job.error_code(), "path_outside_data") << job.final;
+  // Listing the folder still works; the link is left out.
+  const Reply listing = client->request(7, "list_files", params(R"({"dir": "evil_room"})"));
+  EXPECT_TRUE(listing.ok()) << listing.final;
+  expect_serving(server);
+}
+
+TEST(Hardening, SavePolygonWritesOpeningsFilesOnly) {
+  TestServer server;
+  write_cloud(server, "scan.txt", "");
+  const std::string scan_before = read_file(server.files().file("scan.txt"));
+  const std::string room_before = read_file(server.files().file("sample_room.obj"));
+  auto client = server.connect();
+  const std::string polygon = R"("polygons": [[[0, 0, 0], [1, 0, 0], [1, 1, 0]]])";
+  const auto save = [&](const std::string& path) {
+    return client->request(7, "save_polygon",
+                           params(R"({"path": ")" + path + "\", " + polygon + "}"));
+  };
+  for (const char* refused : {"sample_room.obj", "scan.txt", "out", "uploads", "out.obj",
+                              "s3dis_synthetic/Area_1/office_1/Annotations/door_9.txt",
+                              "s3dis_synthetic/Area_1/office_1/new.txt"}) {
+    EXPECT_EQ(save(refused).error_code(), "invalid_request") << refused;
+  }
+  EXPECT_EQ(read_file(server.files().file("scan.txt")), scan_before);
+  EXPECT_EQ(read_file(server.files().file("sample_room.obj")), room_before);
+  EXPECT_FALSE(fs::exists(server.files().file("out")) &&
+               !fs::is_directory(server.files().file("out")));
+  EXPECT_FALSE(fs::exists(server.files().file("uploads")) &&
+               !fs::is_directory(server.files().file("uploads")));
+  // Openings files are written, and written again.
+  EXPECT_TRUE(save("openings/office.txt").ok());
+  EXPECT_TRUE(save("openings/office.txt").ok());
+  EXPECT_TRUE(save("s3dis_synthetic/openings.txt").ok());
+}
+
+}  // namespace
+}  // namespace occlusion::testing
