@@ -1,14 +1,13 @@
 #include "occlusion/app/class_mapping_file.hpp"
 
-#include <json/reader.h>
+#include <json/value.h>
 
 #include <charconv>
-#include <fstream>
 #include <limits>
-#include <sstream>
 #include <stdexcept>
 
 #include "occlusion/app/errors.hpp"
+#include "occlusion/app/json_file.hpp"
 
 namespace occlusion {
 
@@ -84,20 +83,7 @@ ClassMapping parse_class_mapping(const Json::Value& root, const std::string& whe
 }
 
 ClassMapping load_class_mapping(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) fail(path, "cannot open class mapping file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  const std::string body = text.str();
-  Json::CharReaderBuilder builder;
-  builder["collectComments"] = false;
-  builder["rejectDupKeys"] = true;
-  const std::unique_ptr<Json::CharReader> reader(builder.newCharReader());
-  Json::Value root;
-  std::string errors;
-  if (!reader->parse(body.data(), body.data() + body.size(), &root, &errors)) {
-    fail(path, "not valid JSON: " + errors);
-  }
+  const Json::Value root = read_json_file(path, "class mapping file");
   return parse_class_mapping(root, path);
 }
 

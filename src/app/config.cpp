@@ -1,13 +1,12 @@
 #include "occlusion/app/config.hpp"
 
-#include <json/reader.h>
+#include <json/value.h>
 
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include "occlusion/app/errors.hpp"
 #include "occlusion/app/job_registry.hpp"
+#include "occlusion/app/json_file.hpp"
 
 namespace occlusion {
 
@@ -47,26 +46,7 @@ void check(const Config& config) {
 Config load_config(const std::string& path) {
   Config config;
   config.path = path;
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw UsageError(path + ": cannot open config file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  const std::string body = text.str();
-
-  Json::CharReaderBuilder builder;
-  builder["collectComments"] = false;
-  builder["rejectDupKeys"] = true;
-  builder["stackLimit"] = 64;  // a config is a few levels deep; deeper is a mistake or an attack
-  const std::unique_ptr<Json::CharReader> reader(builder.newCharReader());
-  std::string errors;
-  bool parsed = false;
-  try {
-    parsed = reader->parse(body.data(), body.data() + body.size(), &config.root, &errors);
-  } catch (const Json::Exception& e) {
-    // JsonCpp throws rather than reports for input nested beyond its stack limit.
-    errors = e.what();
-  }
-  if (!parsed) throw UsageError(path + ": not valid JSON: " + errors);
+  config.root = read_json_file(path, "config file");
   config.directory = std::filesystem::path(path).parent_path().string();
   check(config);
   return config;

@@ -13,6 +13,7 @@
 #include "job_support.hpp"
 #include "occlusion/app/errors.hpp"
 #include "occlusion/app/json_output.hpp"
+#include "occlusion/app/study_job.hpp"
 #include "occlusion/io/input_error.hpp"
 #include "region_growing_support.hpp"
 #include "study_support.hpp"
@@ -66,30 +67,20 @@ std::string content_digest(const std::string& path) {
 
 }  // namespace
 
+// Every declared key that can change a row's figures (from the declarations,
+// so a new key joins the fingerprint by being declared); not which scenes and
+// configurations, where files go or how the work is spread. Files count by
+// their contents.
 Json::Value row_parameters(const StudyRequest& q) {
-  const CloudOcclusionRequest& t = q.tracing;
-  Json::Value p(Json::objectValue);
-  p["point_radius"] = t.point_radius;
-  p["num_rays_per_vp"] = Json::UInt64(t.num_rays_per_vp);
-  p["polygon_file"] = content_digest(t.polygon_path);
-  p["octree_resolution"] = t.octree_resolution;
-  p["enable_acceleration"] = t.enable_acceleration;
-  p["sampling"] = t.sampling;
-  p["light_radius"] = t.light_radius;
-  p["exterior"] = t.exterior;
-  p["exterior_classes"] = to_json(t.exterior_classes);
-  p["skip_bad_lines"] = t.skip_bad_lines;
-  p["seed"] = Json::UInt64(t.seed);
-  p["self_tolerance"] = q.self_tolerance;
-  p["format"] = q.format;
-  p["occlusion_num_vp"] = q.occlusion_num_vp;
+  Json::Value p = parameters_json(study_keys(), q);
+  for (const char* key :
+       {"scenes", "configurations", "patterns", "shard", "out", "threads", "skip_failed", "fresh",
+        "segmenter_timeout", "polygon_path", "mapping_path"}) {
+    p.removeMember(key);
+  }
   p["segmenter"] = segmenter_name(q.segmenter);
-  p["segmenter_output"] = q.segmenter_output;
-  add_estimation_parameters(q.estimation, p);
+  p["polygon_file"] = content_digest(q.tracing.polygon_path);
   p["mapping_file"] = content_digest(q.mapping_path);
-  p["ignored_classes"] = to_json(q.ignored_classes);
-  p["max_distance"] = q.max_distance;
-  p["mean_over"] = to_string(q.mean_over);
   return p;
 }
 

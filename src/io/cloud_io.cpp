@@ -6,17 +6,11 @@
 #include <stdexcept>
 
 #include "cloud_formats.hpp"
+#include "file_names.hpp"
 #include "occlusion/io/input_error.hpp"
 
 namespace occlusion {
 namespace {
-
-std::string lower_extension(const std::string& path) {
-  std::string extension = std::filesystem::path(path).extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return extension;
-}
 
 bool is_pcd(CloudFormat format) {
   return format == CloudFormat::kPcdAscii || format == CloudFormat::kPcdBinary ||
@@ -29,7 +23,7 @@ PointCloud read_by_kind(const std::string& path, const CloudReadOptions& options
   const auto kind = std::filesystem::status(path, status);
   if (!std::filesystem::exists(kind)) throw InputError(path, 0, "no such file or directory");
   if (std::filesystem::is_directory(kind)) return detail::read_s3dis(path, options, report);
-  const std::string extension = lower_extension(path);
+  const std::string extension = detail::lower_extension(path);
   if (extension == ".pcd") return detail::read_pcd(path, report);
   if (extension == ".ply") return detail::read_ply(path, report);
   if (extension == ".txt" || extension == ".xyz" || extension == ".pts") {
@@ -66,7 +60,7 @@ PointCloud read_cloud(const std::string& path, const CloudReadOptions& options,
 
 void write_cloud(const std::string& path, const PointCloud& cloud,
                  const std::vector<ScalarField>& extra, std::optional<CloudFormat> format) {
-  const std::string extension = lower_extension(path);
+  const std::string extension = detail::lower_extension(path);
   if (!format) {
     if (extension == ".pcd") {
       format = CloudFormat::kPcdBinaryCompressed;

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "file_bytes.hpp"
 #include "occlusion/io/atomic_file.hpp"
+#include "occlusion/io/file_bytes.hpp"
 #include "occlusion/io/input_error.hpp"
 
 namespace occlusion {
@@ -102,7 +102,7 @@ std::string csv_field(const std::string& text) {
 }
 
 CsvTable read_csv(const std::string& path) {
-  const std::string bytes = detail::read_file_bytes(path);
+  const std::string bytes = read_file_bytes(path);
   CsvParser parser(path, bytes);
   CsvTable table;
   if (!parser.next(table.columns)) throw InputError(path, 0, "no header line");

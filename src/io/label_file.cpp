@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
-#include <fstream>
 #include <limits>
 
-#include "file_bytes.hpp"
+#include "file_names.hpp"
 #include "occlusion/io/atomic_file.hpp"
+#include "occlusion/io/file_bytes.hpp"
 #include "occlusion/io/input_error.hpp"
 #include "text_tokens.hpp"
 
@@ -32,17 +32,10 @@ bool is_skipped(std::string_view line) {
   return first.empty() || first[0] == '#' || first.substr(0, 2) == "//";
 }
 
-std::string lower_extension(const std::string& path) {
-  std::string extension = std::filesystem::path(path).extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return extension;
-}
-
 }  // namespace
 
 std::vector<std::int32_t> read_label_file(const std::string& path) {
-  const std::string bytes = detail::read_file_bytes(path);
+  const std::string bytes = read_file_bytes(path);
   std::vector<std::int32_t> labels;
   detail::Lines lines(without_bom(bytes));
   std::string_view line;
@@ -82,18 +75,15 @@ void write_label_file(const std::string& path, const std::vector<std::int32_t>& 
 }
 
 bool is_label_file(const std::string& path) {
-  const std::string extension = lower_extension(path);
+  const std::string extension = detail::lower_extension(path);
   if (extension == ".labels" || extension == ".label") return true;
   if (extension != ".txt" || std::filesystem::is_directory(path)) return false;
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, 0, "cannot open");
-  std::string line;
-  bool first = true;
-  while (std::getline(in, line)) {
-    const std::string_view view = first ? without_bom(line) : std::string_view(line);
-    first = false;
-    if (is_skipped(view)) continue;
-    detail::Tokens tokens(view);
+  const std::string bytes = read_file_bytes(path);
+  detail::Lines lines(without_bom(bytes));
+  std::string_view line;
+  while (lines.next(line)) {
+    if (is_skipped(line)) continue;
+    detail::Tokens tokens(line);
     tokens.next();
     return tokens.next().empty();
   }

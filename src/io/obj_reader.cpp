@@ -11,8 +11,8 @@
 #include <utility>
 #include <vector>
 
-#include "file_bytes.hpp"
 #include "mesh_checks.hpp"
+#include "occlusion/io/file_bytes.hpp"
 #include "occlusion/io/input_error.hpp"
 #include "text_tokens.hpp"
 
@@ -226,7 +226,7 @@ TriangleMesh parse_obj(std::string_view text, const std::string& source_name) {
 }
 
 TriangleMesh read_obj(const std::string& path) {
-  return parse_obj(detail::read_file_bytes(path), path);
+  return parse_obj(read_file_bytes(path), path);
 }
 
 }  // namespace occlusion

@@ -16,8 +16,9 @@
 #include <vector>
 
 #include "cloud_formats.hpp"
-#include "file_bytes.hpp"
+#include "occlusion/io/file_bytes.hpp"
 #include "occlusion/io/input_error.hpp"
+#include "pcd_limits.hpp"
 #include "pcd_values.hpp"
 #include "text_tokens.hpp"
 
@@ -57,9 +58,10 @@ class PcdCloudReader {
  private:
   // PCL's readHeader allocates WIDTH x HEIGHT x point-size bytes before it
   // looks at the data, so a corrupt count would exhaust memory: the header's
-  // own numbers are checked against the file size first. Headers this cannot
-  // make sense of are left to PCL, which reports them.
-  void check_declared_size() const {
+  // sizes and counts are checked here first, against the file's size and the
+  // limits in pcd_limits.hpp. Whatever PCL would read as a number must be one
+  // here, or PCL's own parse (stoi, unsigned wrap-around) decides the size.
+  void check_declared_size() {
     std::vector<std::uint64_t> sizes;
     std::vector<std::uint64_t> counts;
     std::vector<std::uint64_t> width;
@@ -84,42 +86,77 @@ class PcdCloudReader {
                                          : keyword == "POINTS" ? &points
                                                                : nullptr;
       if (list == nullptr) continue;
+      if (!list->empty()) {
+        throw InputError(path_, lines.number(), "a second " + std::string(keyword) + " line");
+      }
       for (std::string_view token = tokens.next(); !token.empty(); token = tokens.next()) {
         std::int64_t value = 0;
-        if (!parse_whole_number(token, value) || value < 0) return;
+        if (!parse_whole_number(token, value) || value < 0 ||
+            static_cast<std::uint64_t>(value) > kMaxPcdHeaderNumber) {
+          throw InputError(path_, lines.number(),
+                           std::string(keyword) + " value " + quoted(token) +
+                               " is not a whole number from 0 to " +
+                               std::to_string(kMaxPcdHeaderNumber));
+        }
         list->push_back(static_cast<std::uint64_t>(value));
       }
     }
     if (data.empty()) throw InputError(path_, 0, "not a PCD file (the header has no DATA line)");
-    if (sizes.empty() || counts.size() > sizes.size() || width.size() != 1 || height.size() > 1 ||
-        points.size() > 1) {
-      return;
+    // Headers before v0.7 may give POINTS alone.
+    if (sizes.empty() || width.size() > 1 || height.size() > 1 || points.size() > 1 ||
+        (width.empty() && points.empty()) || (!counts.empty() && counts.size() != sizes.size())) {
+      throw InputError(path_, 0,
+                       "not a valid PCD header: it needs SIZE values, one WIDTH or POINTS value, "
+                       "at most one HEIGHT value, and as many COUNT values as SIZE values");
     }
     std::uint64_t point_size = 0;
+    std::uint64_t values_per_point = 0;
     for (std::size_t f = 0; f < sizes.size(); ++f) {
-      const std::uint64_t count = f < counts.size() ? counts[f] : 1;
-      if (count > (1u << 20) || sizes[f] > 8) return;
+      const std::uint64_t count = counts.empty() ? 1 : counts[f];
+      if (sizes[f] != 1 && sizes[f] != 2 && sizes[f] != 4 && sizes[f] != 8) {
+        throw InputError(path_, 0,
+                         "field " + std::to_string(f + 1) + " has SIZE " +
+                             std::to_string(sizes[f]) + "; PCD fields are 1, 2, 4 or 8 bytes");
+      }
+      if (count > kMaxPcdFieldCount) {
+        throw InputError(path_, 0,
+                         "field " + std::to_string(f + 1) + " has COUNT " + std::to_string(count) +
+                             ", more than the " + std::to_string(kMaxPcdFieldCount) +
+                             " values a field may hold");
+      }
       point_size += sizes[f] * count;
+      values_per_point += count;
     }
     const std::uint64_t rows = height.empty() ? 1 : height[0];
+    // Both below kMaxPcdHeaderNumber = 2^32, so the product fits.
+    const std::uint64_t declared = width.empty() ? points[0] : width[0] * rows;
     const std::uint64_t available = bytes_.size() > data_end ? bytes_.size() - data_end : 0;
-    // At most: ascii, a "0\n" per point; binary, the bytes there are; LZF
-    // expands a block at most about 90-fold.
-    std::uint64_t most_points = available / 2 + 1;
-    if (data != "ascii" && point_size > 0) {
-      most_points = (data == "binary" ? available : 100 * available + 1024) / point_size;
+    // At most: ascii, a value and a separator (2 bytes) per value, or the
+    // claim any header may make; binary, the bytes there are;
+    // binary_compressed, what pcd_limits.hpp allows.
+    std::uint64_t most_bytes = available;
+    if (data == "ascii") {
+      most_bytes = values_per_point == 0 ? 0 : (available / 2 + 1) / values_per_point * point_size;
+      most_bytes = std::max(most_bytes, kPcdExpansionFloorBytes);
+    } else if (data != "binary") {
+      most_bytes = most_pcd_decoded_bytes(available);
     }
-    const bool too_many =
-        (rows > 0 && width[0] > most_points / rows) || (!points.empty() && points[0] > most_points);
-    if (too_many) {
+    const std::uint64_t most_points = point_size == 0 ? declared : most_bytes / point_size;
+    const std::uint64_t claimed = points.empty() ? declared : std::max(declared, points[0]);
+    if (claimed > most_points) {
+      std::string why = std::to_string(available) + " bytes of " + std::string(data) +
+                        " data from byte " + std::to_string(data_end) +
+                        " can hold (the file ends at byte " + std::to_string(bytes_.size()) + ")";
+      if (data != "ascii" && data != "binary") {
+        why = "the " + std::to_string(most_bytes) + " bytes that " + std::to_string(available) +
+              " bytes of " + std::string(data) + " data may expand to (" + pcd_expansion_rule() +
+              ")";
+      }
       throw InputError(path_, 0,
-                       "truncated or corrupt: the header declares " +
-                           std::to_string(points.empty() ? width[0] * rows : points[0]) +
-                           " points, more than the " + std::to_string(available) + " bytes of " +
-                           std::string(data) + " data from byte " + std::to_string(data_end) +
-                           " can hold (the file ends at byte " + std::to_string(bytes_.size()) +
-                           ")");
+                       "truncated or corrupt: the header declares " + std::to_string(claimed) +
+                           " points of " + std::to_string(point_size) + " bytes, more than " + why);
     }
+    declared_bytes_ = claimed * point_size;
   }
 
   void read_header() {
@@ -140,6 +177,15 @@ class PcdCloudReader {
     sensor_.height = blob_.height;
     if (data_index_ > bytes_.size()) throw InputError(path_, 0, "the header is cut off");
     points_ = static_cast<std::size_t>(blob_.width) * blob_.height;
+    // PCL parsed the header itself: allocate only what was checked above.
+    if (static_cast<std::uint64_t>(points_) * blob_.point_step > declared_bytes_) {
+      throw InputError(path_, 0,
+                       "PCL reads the header as " + std::to_string(points_) + " points of " +
+                           std::to_string(blob_.point_step) +
+                           " bytes, more than its checked size of " +
+                           std::to_string(declared_bytes_) + " bytes");
+    }
+    check_field_layout();
     blob_.data.resize(points_ * blob_.point_step);
 
     // Class names ride in comments, which PCL skips.
@@ -155,6 +201,26 @@ class PcdCloudReader {
     class_names_ = names.finish(path_);
     data_line_ = 1 + static_cast<std::size_t>(
                          std::count(bytes_.begin(), bytes_.begin() + data_index_, '\n'));
+  }
+
+  // Every value is read and written at its field's offset with its type's
+  // size, so both must be what the header declared and inside the point.
+  void check_field_layout() const {
+    for (const Field& field : blob_.fields) {
+      if (!is_known_type(field.datatype)) {
+        throw InputError(path_, 0,
+                         "field '" + field.name +
+                             "' has a TYPE and SIZE that are no PCD type (TYPE I or U with SIZE "
+                             "1, 2, 4 or 8; F with 4 or 8)");
+      }
+      const std::uint64_t end =
+          std::uint64_t{field.offset} + std::uint64_t{field_size(field.datatype)} * field.count;
+      if (end > blob_.point_step) {
+        throw InputError(path_, 0,
+                         "field '" + field.name + "' ends at byte " + std::to_string(end) +
+                             " of a " + std::to_string(blob_.point_step) + "-byte point");
+      }
+    }
   }
 
   void check_binary_size(std::size_t expected) const {
@@ -193,6 +259,14 @@ class PcdCloudReader {
                        "truncated: the compressed block of " + std::to_string(compressed) +
                            " bytes starts at byte " + std::to_string(data_index_ + 8) +
                            ", but the file ends at byte " + std::to_string(bytes_.size()));
+    }
+    if (uncompressed > most_pcd_decoded_bytes(compressed)) {
+      throw InputError(path_, 0,
+                       "refused: the compressed block of " + std::to_string(compressed) +
+                           " bytes would expand to " + std::to_string(uncompressed) +
+                           " bytes, more than the " +
+                           std::to_string(most_pcd_decoded_bytes(compressed)) + " allowed (" +
+                           pcd_expansion_rule() + ")");
     }
     if (uncompressed != expected) {
       throw InputError(path_, 0,
@@ -425,6 +499,7 @@ class PcdCloudReader {
   SensorFrame sensor_;
   std::size_t data_line_ = 1;
   std::size_t points_ = 0;
+  std::uint64_t declared_bytes_ = 0;  // the point data the header may claim
   std::vector<std::string> class_names_;
   std::vector<std::size_t> point_lines_;  // ascii only
 

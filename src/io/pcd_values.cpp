@@ -7,6 +7,25 @@ namespace occlusion::detail {
 
 using Field = pcl::PCLPointField;
 
+bool is_known_type(std::uint8_t datatype) {
+  switch (datatype) {
+    case Field::BOOL:
+    case Field::INT8:
+    case Field::UINT8:
+    case Field::INT16:
+    case Field::UINT16:
+    case Field::INT32:
+    case Field::UINT32:
+    case Field::INT64:
+    case Field::UINT64:
+    case Field::FLOAT32:
+    case Field::FLOAT64:
+      return true;
+    default:
+      return false;
+  }
+}
+
 bool is_integer_type(std::uint8_t datatype) {
   return datatype != Field::FLOAT32 && datatype != Field::FLOAT64;
 }

@@ -9,6 +9,10 @@
 
 namespace occlusion::detail {
 
+// Whether PCL has a type of this number (INT8 … FLOAT64, BOOL). PCL gives an
+// unknown TYPE letter or a SIZE that does not go with it (F 1) a number that
+// is none of these.
+bool is_known_type(std::uint8_t datatype);
 bool is_integer_type(std::uint8_t datatype);
 std::size_t field_size(std::uint8_t datatype);
 double load_value(const std::uint8_t* at, std::uint8_t datatype);

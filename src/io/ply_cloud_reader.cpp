@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "cloud_formats.hpp"
-#include "file_bytes.hpp"
+#include "occlusion/io/file_bytes.hpp"
 #include "occlusion/io/input_error.hpp"
 #include "ply_body.hpp"
 #include "ply_header.hpp"

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "file_bytes.hpp"
 #include "mesh_checks.hpp"
+#include "occlusion/io/file_bytes.hpp"
 #include "occlusion/io/input_error.hpp"
 #include "occlusion/io/mesh_reader.hpp"
 #include "ply_body.hpp"

@@ -5,8 +5,8 @@
 #include <ostream>
 #include <stdexcept>
 
-#include "file_bytes.hpp"
 #include "occlusion/io/atomic_file.hpp"
+#include "occlusion/io/file_bytes.hpp"
 #include "occlusion/io/input_error.hpp"
 #include "text_tokens.hpp"
 
@@ -30,7 +30,7 @@ void finish_polygon(Polygon& polygon, std::size_t last_line, const std::string& 
 }  // namespace
 
 std::vector<Polygon> read_polygons(const std::string& path) {
-  const std::string bytes = detail::read_file_bytes(path);
+  const std::string bytes = read_file_bytes(path);
   std::vector<Polygon> polygons;
   Polygon current;
   std::size_t last_point_line = 0;

@@ -6,8 +6,9 @@
 #include <vector>
 
 #include "cloud_formats.hpp"
-#include "file_bytes.hpp"
+#include "file_names.hpp"
 #include "occlusion/core/exact_match.hpp"
+#include "occlusion/io/file_bytes.hpp"
 #include "occlusion/io/input_error.hpp"
 
 namespace occlusion {
@@ -87,8 +88,12 @@ std::vector<AnnotationFile> annotation_files(const fs::path& room) {
   std::vector<std::pair<std::string, fs::path>> named;
   std::error_code status;
   for (fs::directory_iterator it(folder, status), end; !status && it != end; it.increment(status)) {
+    // Files of other types (notes.md) are skipped; but `chair_7.TXT` or a
+    // `chair_8.txt` that is a FIFO or a folder is meant as an annotation, and
+    // skipping it would drop an instance silently: the checks below and
+    // read_file_bytes refuse those.
     const fs::path& path = it->path();
-    if (path.extension() != ".txt" || !it->is_regular_file()) continue;
+    if (lower_extension(path.string()) != ".txt") continue;
     named.emplace_back(path.filename().string(), path);
   }
   if (status) throw InputError(folder.string(), 0, "cannot list: " + status.message());
@@ -97,6 +102,11 @@ std::vector<AnnotationFile> annotation_files(const fs::path& room) {
 
   std::vector<AnnotationFile> files;
   for (const auto& [name, path] : named) {
+    if (path.extension() != ".txt") {
+      throw InputError(path.string(), 0,
+                       "annotation file name is not <class>_<number>.txt, as S3DIS names them "
+                       "(the extension must be lower-case .txt)");
+    }
     const std::string stem = path.stem().string();
     const std::size_t underscore = stem.rfind('_');
     const bool numbered = underscore != std::string::npos && underscore > 0 &&

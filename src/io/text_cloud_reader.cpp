@@ -4,7 +4,7 @@
 #include <string>
 
 #include "cloud_formats.hpp"
-#include "file_bytes.hpp"
+#include "occlusion/io/file_bytes.hpp"
 #include "occlusion/io/input_error.hpp"
 #include "text_tokens.hpp"
 

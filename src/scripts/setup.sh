@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Installs every build and test dependency from Debian 12 packages. Idempotent:
+# Installs every build and test dependency from Debian 12 packages (clang-14
+# and libFuzzer for src/scripts/fuzz.sh). Idempotent:
 # packages already installed are skipped, and apt-get runs only when one is missing.
 # Usage: setup.sh [--bench]   (--bench adds Intel Embree, used only by bench/)
 set -euo pipefail
@@ -11,6 +12,8 @@ packages=(
   libwebsocketpp-dev libboost-dev libboost-system-dev
   # The study's sharding recipes, run for real by tests/scripts/study_*_test.sh.
   slurm-wlm munge parallel
+  # libFuzzer targets with ASan + UBSan (src/scripts/fuzz.sh).
+  clang-14 libfuzzer-14-dev libclang-rt-14-dev
 )
 if [[ "${1:-}" == "--bench" ]]; then
   packages+=(libembree-dev)

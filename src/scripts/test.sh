@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Sets up, builds once and runs every test: C++ formatting, all GoogleTest
-# cases in parallel through ctest, then the browser viewer's checks
+# cases in parallel through ctest, a brief fuzzing of every reader
+# (src/scripts/fuzz.sh), then the browser viewer's checks
 # (src/scripts/web.sh installs and builds it): prettier, tsc, the Vitest unit
 # tests, and the end-to-end tests in headless Chromium (Debian's chromium,
 # installed here if missing) against a real `occlusion serve`.
@@ -11,6 +12,9 @@ bash "$root/src/scripts/check_format.sh"
 bash "$root/src/scripts/build.sh"
 build="${OCCLUSION_BUILD_DIR:-$root/build}"
 ctest --test-dir "$build" -j "$(nproc)" --output-on-failure
+# Every reader under libFuzzer with ASan + UBSan, 15 s each (docs/fuzzing.md);
+# the outer limit keeps a stuck build or target from holding CI.
+FUZZ_SECONDS="${FUZZ_SECONDS:-15}" timeout --kill-after=20 1500 bash "$root/src/scripts/fuzz.sh"
 
 bash "$root/src/scripts/web.sh"
 chromium="${CHROMIUM_PATH:-/usr/bin/chromium}"

@@ -12,6 +12,7 @@
 
 #include "command_params.hpp"
 #include "command_table.hpp"
+#include "occlusion/app/json_output.hpp"
 #include "occlusion/io/atomic_file.hpp"
 #include "occlusion/io/polygon_file.hpp"
 #include "occlusion/server/protocol_error.hpp"
@@ -90,10 +91,18 @@ Json::Value list_files(CommandContext& context) {
     throw ProtocolError("invalid_request", "'" + dir + "' is not a directory");
   }
   std::vector<fs::path> children;
+  // A name that is not UTF-8 cannot travel in JSON and come back as the same
+  // bytes, so such an entry could never be opened: it is counted, not listed.
+  std::size_t not_utf8 = 0;
   std::error_code error;
   for (fs::directory_iterator it(resolved, error), end; !error && it != end; it.increment(error)) {
     const std::string name = it->path().filename().string();
-    if (!name.empty() && name[0] != '.') children.push_back(it->path());
+    if (name.empty() || name[0] == '.') continue;
+    if (valid_utf8(name) != name) {
+      ++not_utf8;
+      continue;
+    }
+    children.push_back(it->path());
   }
   if (error) {
     throw ProtocolError("input_error", "'" + dir + "' cannot be listed: " + error.message());
@@ -121,6 +130,7 @@ Json::Value list_files(CommandContext& context) {
     for (const auto& entry : group) result["entries"].append(entry);
   }
   result["truncated"] = children.size() > kMaxEntries;
+  result["not_utf8"] = Json::UInt64(not_utf8);
   return result;
 }
 

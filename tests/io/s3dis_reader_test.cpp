@@ -128,6 +128,23 @@ TEST(S3dis, AnnotationNameWithoutNumberIsAnError) {
                               "<class>_<number>.txt");
 }
 
+TEST(S3dis, UpperCaseExtensionIsAnErrorNotSkipped) {
+  testing::ScratchDirectory dir;
+  const fs::path room = dir.path() / "office_3";
+  make_room(room, {{"floor_1.txt", "0 0 0 1 1 1\n"}, {"chair_7.TXT", "0 0 1 1 1 1\n"}});
+  testing::expect_input_error([&] { read_cloud(room.string()); }, "chair_7.TXT", 0,
+                              "the extension must be lower-case .txt");
+}
+
+TEST(S3dis, AnnotationThatIsNotARegularFileIsAnError) {
+  testing::ScratchDirectory dir;
+  const fs::path room = dir.path() / "office_4";
+  make_room(room, {{"floor_1.txt", "0 0 0 1 1 1\n"}});
+  fs::create_directories(room / "Annotations" / "chair_1.txt");
+  testing::expect_input_error([&] { read_cloud(room.string()); }, "chair_1.txt", 0,
+                              "is a directory, not a regular file");
+}
+
 TEST(S3dis, AnnotationsMustHaveSixColumns) {
   testing::ScratchDirectory dir;
   const fs::path room = dir.path() / "lobby_1";

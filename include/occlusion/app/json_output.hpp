@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "occlusion/core/octree.hpp"
@@ -18,7 +19,13 @@ Json::Value to_json(const std::vector<std::string>& strings);
 Json::Value to_json(const OctreeStats& stats);
 // null when absent: an undefined figure (an mIoU without classes) is not 0.
 Json::Value to_json(const std::optional<double>& value);
-// Indented, 15 significant digits, UTF-8 kept as is.
+// `text` with every byte that is not part of well-formed UTF-8 replaced by
+// U+FFFD. File names are bytes on Linux; JSON must be UTF-8.
+std::string valid_utf8(std::string_view text);
+// The value with valid_utf8 applied to every string and key.
+Json::Value with_valid_utf8(const Json::Value& value);
+// Indented, 15 significant digits, UTF-8 kept as is and invalid UTF-8
+// replaced (with_valid_utf8), so the text is always valid JSON.
 std::string format_json(const Json::Value& value);
 
 }  // namespace occlusion

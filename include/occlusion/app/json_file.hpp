@@ -1,0 +1,16 @@
+#pragma once
+// JSON documents the user gives as files (the config, the class mapping).
+
+#include <json/value.h>
+
+#include <string>
+
+namespace occlusion {
+
+// The file's one JSON value: comments allowed, duplicate keys refused,
+// nesting deeper than 64 refused rather than recursed into. UsageError
+// "<path>: cannot read <what>: ..." or "<path>: not valid JSON: ...", as a
+// file given on the command line is part of the usage (exit 2).
+Json::Value read_json_file(const std::string& path, const std::string& what);
+
+}  // namespace occlusion

@@ -1,0 +1,12 @@
+#pragma once
+// What a file's name says about it; the readers choose by extension in any
+// letter case.
+
+#include <string>
+
+namespace occlusion::detail {
+
+// The extension with its dot, lower-cased: "scan.PCD" -> ".pcd", "room" -> "".
+std::string lower_extension(const std::string& path);
+
+}  // namespace occlusion::detail

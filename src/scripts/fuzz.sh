@@ -1,0 +1,53 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets (clang-14, ASan + UBSan, into build-fuzz/) and
+# runs each for FUZZ_SECONDS (default 15) from its seed corpus in
+# tests/fuzz/corpus/<name>. New inputs go to build-fuzz/corpus/<name>, never
+# into the committed seeds. A finding stops that target, leaves its input in
+# build-fuzz/findings/ and makes this script fail. docs/fuzzing.md explains.
+#
+#   bash src/scripts/fuzz.sh                       # the brief run of test.sh
+#   FUZZ_SECONDS=1800 bash src/scripts/fuzz.sh     # a long run, 30 min per target
+#   bash src/scripts/fuzz.sh fuzz_pcd_compressed   # only the named targets
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
+build="${OCCLUSION_FUZZ_BUILD_DIR:-$root/build-fuzz}"
+seconds="${FUZZ_SECONDS:-15}"
+targets=("$@")
+if ((${#targets[@]} == 0)); then
+  targets=(fuzz_obj fuzz_ply fuzz_pcd_ascii fuzz_pcd_binary fuzz_pcd_compressed fuzz_text_cloud
+           fuzz_s3dis fuzz_labels fuzz_openings fuzz_config fuzz_server_message fuzz_binary_frame)
+fi
+
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++-14 \
+  -DOCCLUSION_FUZZ=ON -DOCCLUSION_BUILD_TESTS=OFF >/dev/null
+cmake --build "$build" -j "$(nproc)" --target "${targets[@]}"
+
+mkdir -p "$build/findings" "$build/logs"
+# Leaks are findings too; an input that takes over 10 s or 2 GB is a hang or a bomb.
+export ASAN_OPTIONS="${ASAN_OPTIONS:-abort_on_error=1:detect_leaks=1}"
+export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
+failed=()
+for target in "${targets[@]}"; do
+  seeds="$root/tests/fuzz/corpus/${target#fuzz_}"
+  corpus="$build/corpus/${target#fuzz_}"
+  mkdir -p "$corpus"
+  log="$build/logs/$target.log"
+  start=$(date +%s)
+  status=0
+  "$build/tests/fuzz/$target" "$corpus" "$seeds" -max_total_time="$seconds" -timeout=10 \
+    -rss_limit_mb=2048 -max_len=65536 -print_final_stats=1 \
+    -artifact_prefix="$build/findings/$target-" >"$log" 2>&1 || status=$?
+  elapsed=$(($(date +%s) - start))
+  runs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' || echo "?")
+  if ((status == 0)); then
+    echo "fuzz: $target ran ${elapsed} s, $runs inputs, no finding"
+  else
+    echo "fuzz: $target FOUND a problem after ${elapsed} s (log $log, input in $build/findings/)"
+    grep -m 5 -E 'ERROR|fuzz:|runtime error' "$log" || true
+    failed+=("$target")
+  fi
+done
+if ((${#failed[@]} > 0)); then
+  echo "fuzz: findings in ${failed[*]}" >&2
+  exit 1
+fi

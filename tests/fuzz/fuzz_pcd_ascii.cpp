@@ -1,0 +1,8 @@
+// PCD clouds with DATA ascii (fuzz_pcd.hpp).
+
+#include "fuzz_pcd.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  occlusion::fuzz::read_pcd_as(data, size, "ascii");
+  return 0;
+}
