@@ -191,7 +191,7 @@ class PlyMeshReader : public detail::PlySink {
 }  // namespace
 
 TriangleMesh read_ply_mesh(const std::string& path) {
-  const std::string bytes = detail::read_file_bytes(path);
+  const std::string bytes = read_file_bytes(path);
   return PlyMeshReader(bytes, path).run();
 }
 
