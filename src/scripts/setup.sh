@@ -9,6 +9,7 @@ packages=(
   libeigen3-dev libjsoncpp-dev libgtest-dev
   libpcl-dev libflann-dev
   libwebsocketpp-dev libboost-dev libboost-system-dev
+  pybind11-dev python3-dev python3-numpy python3-pytest
 )
 if [[ "${1:-}" == "--bench" ]]; then
   packages+=(libembree-dev)
