@@ -9,5 +9,6 @@ namespace occlusion::python {
 void bind_errors(pybind11::module_& m);
 void bind_scenes(pybind11::module_& m);
 void bind_io(pybind11::module_& m);
+void bind_jobs(pybind11::module_& m);
 
 }  // namespace occlusion::python

@@ -11,4 +11,5 @@ PYBIND11_MODULE(_occlusion, m) {
   occlusion::python::bind_errors(m);
   occlusion::python::bind_scenes(m);
   occlusion::python::bind_io(m);
+  occlusion::python::bind_jobs(m);
 }
