@@ -1,5 +1,7 @@
 #include "json_values.hpp"
 
+#include <pybind11/numpy.h>
+
 #include "occlusion/app/errors.hpp"
 
 namespace py = pybind11;
