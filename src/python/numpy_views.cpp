@@ -32,7 +32,7 @@ bool is_numeric(const py::array& array) {
 Vec3View::Vec3View(const py::handle& object, const std::string& name, bool broadcast_single) {
   py::array any = py::array::ensure(object);
   if (!any || !is_numeric(any)) bad_argument(name, "expected a numeric array of points");
-  if (any.dtype().is(py::dtype::of<float>())) {
+  if (py::isinstance<py::array_t<float>>(any)) {  // native float32, any strides
     array_ = any;
   } else {
     is_double_ = true;

@@ -16,7 +16,9 @@
 
 #include "bindings.hpp"
 #include "interrupt.hpp"
+#include "json_values.hpp"
 #include "numpy_views.hpp"
+#include "occlusion/app/json_output.hpp"
 #include "occlusion/core/mesh.hpp"
 #include "occlusion/core/octree.hpp"
 #include "occlusion/core/parallel.hpp"
@@ -107,18 +109,6 @@ py::array_t<bool> occluded(const Octree<Shape>& octree, const py::handle& origin
   return out;
 }
 
-py::dict stats_dict(const OctreeStats& stats) {
-  py::dict d;
-  d["primitives"] = stats.primitives;
-  d["inner_nodes"] = stats.inner_nodes;
-  d["leaves"] = stats.leaves;
-  d["depth"] = stats.depth;
-  d["largest_leaf"] = stats.largest_leaf;
-  d["build_seconds"] = stats.build_seconds;
-  d["memory_bytes"] = stats.memory_bytes;
-  return d;
-}
-
 OctreeOptions octree_options(OctreeOptions options, double octree_resolution,
                              bool enable_acceleration) {
   if (!(octree_resolution >= 0.0)) throw py::value_error("octree_resolution: must be >= 0");
@@ -192,9 +182,9 @@ void bind_queries(py::class_<Scene>& scene) {
           },
           "(lo, hi): float32 (3,) corners of the box around every primitive.")
       .def_property_readonly(
-          "stats", [](const Scene& self) { return stats_dict(self.stats()); },
-          "The octree's figures: primitives, inner_nodes, leaves, depth, largest_leaf, "
-          "build_seconds, memory_bytes.");
+          "stats", [](const Scene& self) { return to_python(to_json(self.stats())); },
+          "The octree's figures as the jobs' reports give them: inner_nodes, leaves, depth, "
+          "largest_leaf, memory_bytes.");
 }
 
 }  // namespace

@@ -73,7 +73,7 @@ class TestAnalytic:
         lo, hi = scene.bounds
         np.testing.assert_array_equal(lo, [0, 0, 2])
         np.testing.assert_array_equal(hi, [1, 1, 2])
-        assert scene.stats["primitives"] == 2
+        assert scene.stats["leaves"] >= 1 and scene.stats["memory_bytes"] > 0
 
 
 @pytest.mark.parametrize("accelerated", [True, False])
