@@ -75,8 +75,8 @@ PointCloud cloud_from_source(const py::handle& source, const py::handle& labels,
   PointCloud cloud;
   const bool is_cloud = py::hasattr(source, "positions");
   cloud.positions = points_from_array(is_cloud ? source.attr("positions") : source, "points");
-  const py::object cloud_labels = is_cloud ? source.attr("labels") : py::none();
-  const py::handle chosen_labels = labels.is_none() ? cloud_labels : labels;
+  py::object chosen_labels = py::reinterpret_borrow<py::object>(labels);
+  if (chosen_labels.is_none() && is_cloud) chosen_labels = source.attr("labels");
   if (!chosen_labels.is_none()) cloud.labels = int32_from_array(chosen_labels, "labels");
   if (!class_names.is_none()) {
     cloud.class_names = class_names.cast<std::vector<std::string>>();

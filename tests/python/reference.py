@@ -12,7 +12,8 @@ def _closest(t, hit, ambiguous_each, margin):
     ids = np.argmin(t, axis=1)
     best = t[np.arange(len(t)), ids]
     second = np.partition(t, 1, axis=1)[:, 1] if t.shape[1] > 1 else np.full(len(t), np.inf)
-    tie = np.isfinite(best) & (second - best <= margin * np.maximum(1.0, np.abs(best)))
+    with np.errstate(invalid="ignore"):  # inf - inf where a ray hits nothing
+        tie = np.isfinite(best) & (second - best <= margin * np.maximum(1.0, np.abs(best)))
     ambiguous = ambiguous_each.any(axis=1) | tie
     return best, np.where(np.isfinite(best), ids, -1), ambiguous
 

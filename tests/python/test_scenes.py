@@ -121,8 +121,11 @@ def test_layouts_and_dtypes_give_the_same_answer():
     variants = [
         (origins, directions),  # float64
         (np.asfortranarray(origins), np.asfortranarray(directions)),
-        (np.hstack([origins, origins])[:, ::2][:, :3], directions[::1]),  # strided view
+        (np.hstack([origins, origins])[:, :3], directions),  # rows 48 bytes apart
     ]
+    interleaved = np.zeros((len(origins), 6))
+    interleaved[:, ::2] = origins  # columns 16 bytes apart
+    variants.append((interleaved[:, ::2], directions))
     doubled = np.repeat(directions.astype(np.float32), 2, axis=0)[::2]  # every other row
     variants.append((origins.astype(np.float32), doubled))
     for o, d in variants:
