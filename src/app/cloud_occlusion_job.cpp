@@ -19,15 +19,15 @@ namespace {
 DirectionSampling parse_sampling(const std::string& name) {
   if (name == "uniform") return DirectionSampling::kUniform;
   if (name == "fibonacci") return DirectionSampling::kFibonacci;
-  throw UsageError("--sampling must be uniform or fibonacci, got '" + name + "'");
+  throw KeyError("sampling", "must be uniform or fibonacci, got '" + name + "'");
 }
 
 // Which points are exterior structure: those whose class is in `classes`.
 std::vector<bool> exterior_mask(const PointCloud& cloud, const std::vector<std::string>& classes,
                                 const std::string& path) {
   if (!cloud.has_labels() || cloud.class_names.empty()) {
-    throw UsageError("--exterior needs a labelled cloud with class names; " + path +
-                     " has none (use an S3DIS folder, or a PLY written by -recon)");
+    throw KeyError("exterior", "needs a labelled cloud with class names; " + path +
+                                   " has none (use an S3DIS folder, or a PLY written by -recon)");
   }
   std::vector<bool> is_exterior_class(cloud.class_names.size(), false);
   for (const auto& name : classes) {
@@ -35,8 +35,8 @@ std::vector<bool> exterior_mask(const PointCloud& cloud, const std::vector<std::
     if (it == cloud.class_names.end()) {
       std::string known;
       for (const auto& n : cloud.class_names) known += (known.empty() ? "" : ", ") + n;
-      throw UsageError("--exterior-classes: no class '" + name + "' in " + path +
-                       " (classes: " + known + ")");
+      throw KeyError("exterior_classes", "names no class of " + path + ": '" + name + "'" +
+                                             " (classes: " + known + ")");
     }
     is_exterior_class[static_cast<std::size_t>(it - cloud.class_names.begin())] = true;
   }
@@ -88,40 +88,12 @@ void validate(const CloudOcclusionRequest& request) {
   if (request.path.empty()) {
     throw UsageError("no cloud given (-poc CLOUD or occlusion.point_cloud.path)");
   }
+  check_keys(cloud_occlusion_keys(), request);
   request.viewpoints.validate();
-  if (request.num_rays_per_vp == 0 || request.num_rays_per_vp > 100'000'000) {
-    throw UsageError("--num-rays-per-vp must be 1..100000000");
-  }
-  job::require_positive(request.point_radius, "--point-radius");
-  job::require_non_negative(request.octree_resolution, "--octree-resolution");
-  job::require_non_negative(request.light_radius, "--light-radius");
   parse_sampling(request.sampling);
   if (request.exterior && request.exterior_classes.empty()) {
-    throw UsageError("--exterior-classes must name at least one class");
+    throw KeyError("exterior_classes", "must name at least one class");
   }
-}
-
-void apply_section(const ConfigSection& section, CloudOcclusionRequest& request) {
-  section.read_path("path", request.path);
-  section.read_viewpoints(request.viewpoints);
-  section.read("num_rays_per_vp", request.num_rays_per_vp);
-  section.read("point_radius", request.point_radius);
-  section.read_path("polygon_path", request.polygon_path);
-  section.read("octree_resolution", request.octree_resolution);
-  section.read("enable_acceleration", request.enable_acceleration);
-  section.read("sampling", request.sampling);
-  section.read("light_radius", request.light_radius);
-  section.read("escape_directions", request.escape_directions);
-  section.read("exterior", request.exterior);
-  section.read("exterior_classes", request.exterior_classes);
-  section.read("skip_bad_lines", request.skip_bad_lines);
-  section.read("seed", request.seed);
-  section.read("threads", request.threads);
-  section.read_path("out", request.out);
-}
-
-void apply_config(const Config& config, CloudOcclusionRequest& request) {
-  apply_section(ConfigSection(config, "point_cloud"), request);
 }
 
 std::vector<PlanarPolygon> read_openings(const std::string& polygon_path) {
@@ -229,17 +201,7 @@ Json::Value to_json(const CloudOcclusionReport& report) {
     json["interior_exterior_ratio"] = std::isfinite(ratio) ? Json::Value(ratio) : Json::Value();
   }
 
-  Json::Value parameters = q.viewpoints.to_json();
-  parameters["num_rays_per_vp"] = Json::UInt64(q.num_rays_per_vp);
-  parameters["point_radius"] = q.point_radius;
-  parameters["polygon_path"] = q.polygon_path;
-  parameters["octree_resolution"] = q.octree_resolution;
-  parameters["enable_acceleration"] = q.enable_acceleration;
-  parameters["sampling"] = q.sampling;
-  parameters["light_radius"] = q.light_radius;
-  parameters["seed"] = Json::UInt64(q.seed);
-  parameters["threads"] = q.threads;
-  json["parameters"] = parameters;
+  json["parameters"] = parameters_json(cloud_occlusion_keys(), q);
 
   json["octree"] = to_json(report.result.octree);
 

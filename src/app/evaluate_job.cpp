@@ -67,19 +67,7 @@ void validate(const EvaluateRequest& request) {
                      std::to_string(request.predictions.size()) +
                      " prediction(s): give --prediction once per ground truth, in the same order");
   }
-  job::require_non_negative(request.max_distance, "--max-distance");
-}
-
-void apply_config(const Config& config, EvaluateRequest& request) {
-  const ConfigSection section(config, "evaluate");
-  section.read_paths("ground_truth", request.ground_truth);
-  section.read_paths("predictions", request.predictions);
-  section.read_path("mapping_path", request.mapping_path);
-  section.read("ignored_classes", request.ignored_classes);
-  section.read("max_distance", request.max_distance);
-  section.read("skip_bad_lines", request.skip_bad_lines);
-  section.read("threads", request.threads);
-  section.read_path("out", request.out);
+  check_keys(evaluate_keys(), request);
 }
 
 ClassMapping resolve_mapping(const std::string& mapping_path,
@@ -90,7 +78,7 @@ ClassMapping resolve_mapping(const std::string& mapping_path,
   try {
     return mapping.with_ignored(ignored_classes);
   } catch (const std::invalid_argument& e) {
-    throw UsageError(std::string("--ignored-classes: ") + e.what());
+    throw KeyError("ignored_classes", std::string("is wrong: ") + e.what());
   }
 }
 
@@ -212,11 +200,7 @@ Json::Value to_json(const EvaluateReport& report) {
   json["scenes"] = scenes;
   json["mapping"] = mapping_json(report.mapping, q.mapping_path);
 
-  Json::Value parameters(Json::objectValue);
-  parameters["max_distance"] = q.max_distance;
-  parameters["skip_bad_lines"] = q.skip_bad_lines;
-  parameters["threads"] = q.threads;
-  json["parameters"] = parameters;
+  json["parameters"] = parameters_json(evaluate_keys(), q);
 
   Json::Value timings(Json::objectValue);
   timings["load_seconds"] = report.load_seconds;

@@ -12,18 +12,10 @@ namespace occlusion {
 
 void validate(const ExtractPolygonsRequest& request) {
   if (request.path.empty()) {
-    throw UsageError("no cloud given (occlusion.region_growing.path)");
+    throw UsageError("no cloud given (occlusion.extract_polygons.path)");
   }
+  check_keys(extract_polygons_keys(), request);
   job::validate_estimation(request.estimation);
-}
-
-void apply_config(const Config& config, ExtractPolygonsRequest& request) {
-  const ConfigSection section(config, "region_growing");
-  section.read_path("path", request.path);
-  job::read_estimation(section, request.estimation);
-  section.read("threads", request.threads);
-  section.read("skip_bad_lines", request.skip_bad_lines);
-  section.read_path("out", request.out);
 }
 
 ExtractPolygonsReport run_extract_polygons(const ExtractPolygonsRequest& request,
@@ -71,10 +63,7 @@ Json::Value to_json(const ExtractPolygonsReport& report) {
   mesh["faces"] = Json::UInt64(e.mesh.face_count());
   json["mesh"] = mesh;
 
-  Json::Value parameters(Json::objectValue);
-  job::add_estimation_parameters(report.request.estimation, parameters);
-  parameters["threads"] = report.request.threads;
-  json["parameters"] = parameters;
+  json["parameters"] = parameters_json(extract_polygons_keys(), report.request);
 
   Json::Value timings(Json::objectValue);
   timings["load_seconds"] = report.load_seconds;

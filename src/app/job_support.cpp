@@ -34,7 +34,7 @@ Json::Value viewpoint_json(const std::string& name, const Eigen::Vector3d& posit
 
 std::string cloud_extension(const std::string& format) {
   if (format == "ply" || format == "pcd") return format;
-  throw UsageError("--format must be ply or pcd, got '" + format + "'");
+  throw KeyError("format", "must be ply or pcd, got '" + format + "'");
 }
 
 void require_positive(double value, const std::string& option) {

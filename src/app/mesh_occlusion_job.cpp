@@ -35,21 +35,8 @@ void write_face_csv(const std::string& path, const TriangleMesh& mesh,
 
 void validate(const MeshOcclusionRequest& request) {
   if (request.path.empty()) throw UsageError("no mesh given (-moc MESH or occlusion.mesh.path)");
+  check_keys(mesh_occlusion_keys(), request);
   request.viewpoints.validate();
-  job::require_positive(request.samples_per_unit_area, "--samples-per-unit-area");
-  job::require_non_negative(request.octree_resolution, "--octree-resolution");
-}
-
-void apply_config(const Config& config, MeshOcclusionRequest& request) {
-  const ConfigSection section(config, "mesh");
-  section.read_path("path", request.path);
-  section.read_viewpoints(request.viewpoints);
-  section.read("samples_per_unit_area", request.samples_per_unit_area);
-  section.read("octree_resolution", request.octree_resolution);
-  section.read("enable_acceleration", request.enable_acceleration);
-  section.read("seed", request.seed);
-  section.read("threads", request.threads);
-  section.read_path("out", request.out);
 }
 
 MeshOcclusionReport run_mesh_occlusion_on(const TriangleMesh& mesh,
@@ -146,13 +133,7 @@ Json::Value to_json(const MeshOcclusionReport& report) {
   }
   json["groups"] = groups;
 
-  Json::Value parameters = q.viewpoints.to_json();
-  parameters["samples_per_unit_area"] = q.samples_per_unit_area;
-  parameters["octree_resolution"] = q.octree_resolution;
-  parameters["enable_acceleration"] = q.enable_acceleration;
-  parameters["seed"] = Json::UInt64(q.seed);
-  parameters["threads"] = q.threads;
-  json["parameters"] = parameters;
+  json["parameters"] = parameters_json(mesh_occlusion_keys(), q);
 
   json["octree"] = to_json(r.octree);
 

@@ -15,16 +15,9 @@ void validate(const ReconstructRequest& request) {
   if (request.path.empty()) {
     throw UsageError("no folder given (-recon ROOM_OR_AREA_FOLDER)");
   }
+  check_keys(reconstruct_keys(), request);
   job::cloud_extension(request.format);
-  if (request.out.empty()) throw UsageError("--out must not be empty");
-}
-
-void apply_config(const Config& config, ReconstructRequest& request) {
-  const ConfigSection section(config, "reconstruct");
-  section.read_path("path", request.path);
-  section.read("format", request.format);
-  section.read("skip_bad_lines", request.skip_bad_lines);
-  section.read_path("out", request.out);
+  if (request.out.empty()) throw KeyError("out", "must not be empty");
 }
 
 ReconstructReport run_reconstruct(const ReconstructRequest& request, const Progress& progress) {
@@ -91,6 +84,7 @@ Json::Value to_json(const ReconstructReport& report) {
   json["dropped_nan_points"] = Json::UInt64(report.dropped_nan);
   json["skipped_lines"] = Json::UInt64(report.skipped_lines);
   json["format"] = report.request.format;
+  json["parameters"] = parameters_json(reconstruct_keys(), report.request);
   json["outputs"] = to_json(report.outputs);
   json["warnings"] = to_json(report.warnings);
   json["timings"]["total_seconds"] = report.total_seconds;

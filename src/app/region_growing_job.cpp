@@ -48,24 +48,9 @@ void validate(const RegionGrowingRequest& request) {
   if (request.path.empty()) {
     throw UsageError("no cloud given (-rgoc CLOUD or occlusion.region_growing.path)");
   }
+  check_keys(region_growing_keys(), request);
   request.viewpoints.validate();
   job::validate_estimation(request.estimation);
-  job::require_positive(request.samples_per_unit_area, "--samples-per-unit-area");
-  job::require_non_negative(request.octree_resolution, "--octree-resolution");
-}
-
-void apply_config(const Config& config, RegionGrowingRequest& request) {
-  const ConfigSection section(config, "region_growing");
-  section.read_path("path", request.path);
-  section.read_viewpoints(request.viewpoints);
-  job::read_estimation(section, request.estimation);
-  section.read("samples_per_unit_area", request.samples_per_unit_area);
-  section.read("octree_resolution", request.octree_resolution);
-  section.read("enable_acceleration", request.enable_acceleration);
-  section.read("seed", request.seed);
-  section.read("threads", request.threads);
-  section.read("skip_bad_lines", request.skip_bad_lines);
-  section.read_path("out", request.out);
 }
 
 RegionGrowingReport run_region_growing_occlusion(const RegionGrowingRequest& request,
@@ -129,14 +114,7 @@ Json::Value to_json(const RegionGrowingReport& report) {
   }
   json["viewpoints"] = viewpoints;
 
-  Json::Value parameters = q.viewpoints.to_json();
-  job::add_estimation_parameters(q.estimation, parameters);
-  parameters["samples_per_unit_area"] = q.samples_per_unit_area;
-  parameters["octree_resolution"] = q.octree_resolution;
-  parameters["enable_acceleration"] = q.enable_acceleration;
-  parameters["seed"] = Json::UInt64(q.seed);
-  parameters["threads"] = q.threads;
-  json["parameters"] = parameters;
+  json["parameters"] = parameters_json(region_growing_keys(), q);
 
   Json::Value timings(Json::objectValue);
   timings["load_seconds"] = report.load_seconds;

@@ -5,15 +5,12 @@
 #include "job_support.hpp"
 #include "occlusion/app/errors.hpp"
 #include "occlusion/app/json_output.hpp"
+#include "occlusion/app/region_growing_job.hpp"
 #include "occlusion/io/input_error.hpp"
 
 namespace occlusion::job {
 
 namespace {
-
-void require_at_least(std::uint64_t value, std::uint64_t least, const std::string& option) {
-  if (value < least) throw UsageError(option + " must be at least " + std::to_string(least));
-}
 
 // What the user should know without reading the JSON: PCL dropping whole
 // surfaces for their size, and clusters that gave no polygon.
@@ -45,34 +42,11 @@ std::vector<std::string> estimation_warnings(const MeshEstimate& estimate,
 }  // namespace
 
 void validate_estimation(const RegionGrowingOptions& e) {
-  require_at_least(e.normal_k, 3, "--normal-k");
-  require_at_least(e.neighbours, 1, "--neighbours");
-  require_at_least(e.min_cluster_size, 1, "--min-cluster-size");
+  check_keys(estimation_keys(), e);
   if (e.max_cluster_size < e.min_cluster_size) {
-    throw UsageError("--max-cluster-size must be at least --min-cluster-size (" +
-                     std::to_string(e.min_cluster_size) + ")");
+    throw KeyError("max_cluster_size", "must be at least min_cluster_size (" +
+                                           std::to_string(e.min_cluster_size) + ")");
   }
-  if (!(e.smoothness_degrees > 0.0 && e.smoothness_degrees <= 180.0)) {
-    throw UsageError("--smoothness-degrees must be a number in (0, 180]");
-  }
-  require_non_negative(e.curvature_threshold, "--curvature-threshold");
-  require_positive(e.ransac_distance, "--ransac-distance");
-  require_at_least(e.ransac_iterations, 1, "--ransac-iterations");
-}
-
-void read_estimation(const ConfigSection& section, RegionGrowingOptions& e) {
-  std::uint64_t min_size = e.min_cluster_size, max_size = e.max_cluster_size;
-  section.read("normal_k", e.normal_k);
-  section.read("min_cluster_size", min_size);
-  section.read("max_cluster_size", max_size);
-  section.read("neighbours", e.neighbours);
-  section.read("smoothness_degrees", e.smoothness_degrees);
-  section.read("curvature_threshold", e.curvature_threshold);
-  section.read("ransac_distance", e.ransac_distance);
-  section.read("ransac_iterations", e.ransac_iterations);
-  section.read("recover_edges", e.recover_edges);
-  e.min_cluster_size = static_cast<std::size_t>(min_size);
-  e.max_cluster_size = static_cast<std::size_t>(max_size);
 }
 
 CloudEstimate load_and_estimate(const std::string& path, bool skip_bad_lines,
@@ -151,18 +125,6 @@ Json::Value plane_json(const EstimatedPlane& p) {
   plane["area"] = p.area;
   plane["triangles"] = Json::UInt64(p.hull_vertices);
   return plane;
-}
-
-void add_estimation_parameters(const RegionGrowingOptions& o, Json::Value& parameters) {
-  parameters["normal_k"] = o.normal_k;
-  parameters["min_cluster_size"] = Json::UInt64(o.min_cluster_size);
-  parameters["max_cluster_size"] = Json::UInt64(o.max_cluster_size);
-  parameters["neighbours"] = o.neighbours;
-  parameters["smoothness_degrees"] = o.smoothness_degrees;
-  parameters["curvature_threshold"] = o.curvature_threshold;
-  parameters["ransac_distance"] = o.ransac_distance;
-  parameters["ransac_iterations"] = o.ransac_iterations;
-  parameters["recover_edges"] = o.recover_edges;
 }
 
 void add_estimation_timings(const MeshEstimate& e, Json::Value& timings) {

@@ -10,15 +10,12 @@
 
 #include "job_support.hpp"
 #include "occlusion/analysis/mesh_estimation.hpp"
-#include "occlusion/app/config.hpp"
 #include "occlusion/io/cloud_io.hpp"
 
 namespace occlusion::job {
 
-// Throws UsageError naming the option (--normal-k, ...).
+// The declared ranges and max_cluster_size >= min_cluster_size. Throws KeyError.
 void validate_estimation(const RegionGrowingOptions& options);
-// normal_k, min_cluster_size, ... from any section that has them.
-void read_estimation(const ConfigSection& section, RegionGrowingOptions& options);
 
 // The cloud loaded and its planes estimated: where both jobs start.
 struct CloudEstimate {
@@ -55,8 +52,6 @@ ScalarField cluster_field(const MeshEstimate& estimate);
 void add_estimation_json(const MeshEstimate& estimate, Json::Value& json);
 // One plane, without figures of its occlusion.
 Json::Value plane_json(const EstimatedPlane& plane);
-// The options, added to `parameters`.
-void add_estimation_parameters(const RegionGrowingOptions& options, Json::Value& parameters);
 // The estimate's stage timings, added to `timings`.
 void add_estimation_timings(const MeshEstimate& estimate, Json::Value& timings);
 

@@ -40,29 +40,11 @@ std::vector<ClassVisibility> per_class(const PointCloud& cloud, const ScanResult
 
 void validate(const ScanRequest& request) {
   if (request.path.empty()) {
-    throw UsageError("no cloud given (-fscan CLOUD or occlusion.point_cloud.path)");
+    throw UsageError("no cloud given (-fscan CLOUD or occlusion.scan.path)");
   }
+  check_keys(scan_keys(), request);
   request.viewpoints.validate();
-  job::require_positive(request.point_radius, "--point-radius");
-  if (!std::isfinite(request.self_tolerance)) {
-    throw UsageError("--self-tolerance must be a number (negative: 2 x point radius)");
-  }
-  job::require_non_negative(request.octree_resolution, "--octree-resolution");
   job::cloud_extension(request.format);
-}
-
-void apply_config(const Config& config, ScanRequest& request) {
-  const ConfigSection section(config, "point_cloud");
-  section.read_path("path", request.path);
-  section.read_viewpoints(request.viewpoints);
-  section.read("point_radius", request.point_radius);
-  section.read("self_tolerance", request.self_tolerance);
-  section.read("octree_resolution", request.octree_resolution);
-  section.read("enable_acceleration", request.enable_acceleration);
-  section.read("format", request.format);
-  section.read("skip_bad_lines", request.skip_bad_lines);
-  section.read("threads", request.threads);
-  section.read_path("out", request.out);
 }
 
 ScanReport run_scan_on(const PointCloud& cloud, const ViewpointChoice::Resolved& viewpoints,
@@ -165,13 +147,9 @@ Json::Value to_json(const ScanReport& report) {
   }
   json["classes"] = classes;
 
-  Json::Value parameters = q.viewpoints.to_json();
-  parameters["point_radius"] = q.point_radius;
+  Json::Value parameters = parameters_json(scan_keys(), q);
+  // The tolerance in force, not its "-1 = 2 x radius" shorthand.
   parameters["self_tolerance"] = q.self_tolerance < 0.0 ? 2.0 * q.point_radius : q.self_tolerance;
-  parameters["octree_resolution"] = q.octree_resolution;
-  parameters["enable_acceleration"] = q.enable_acceleration;
-  parameters["format"] = q.format;
-  parameters["threads"] = q.threads;
   json["parameters"] = parameters;
 
   Json::Value timings(Json::objectValue);

@@ -87,7 +87,7 @@ StudyShard parse_shard(const std::string& text) {
   const auto index = whole(text.substr(0, slash));
   const auto count = slash == text.npos ? std::nullopt : whole(text.substr(slash + 1));
   if (!index || !count || *count == 0 || *index >= *count) {
-    throw UsageError("--shard must be i/n with 0 <= i < n (e.g. 3/10), got '" + text + "'");
+    throw KeyError("shard", "must be i/n with 0 <= i < n (e.g. 3/10), got '" + text + "'");
   }
   shard.index = *index;
   shard.count = *count;
@@ -122,7 +122,7 @@ void validate(const StudyRequest& request) {
       }
     }
   }
-  if (request.out.empty()) throw UsageError("the study needs --out DIR (or occlusion.study.out)");
+  if (request.out.empty()) throw KeyError("out", "is needed: the folder of the study's files");
   // The tracing and scan checks name the scene: any scene will do here.
   CloudOcclusionRequest tracing = request.tracing;
   tracing.path = request.scenes.front();
@@ -131,28 +131,10 @@ void validate(const StudyRequest& request) {
   if (request.occlusion_num_vp > 0) {
     ViewpointChoice::from_grid(request.occlusion_num_vp).validate();
   }
+  check_keys(study_keys(), request);
   job::validate_estimation(request.estimation);
-  job::require_non_negative(request.max_distance, "--max-distance");
   job::validate_segmenter(request);
   parse_shard(request.shard);
-}
-
-void apply_config(const Config& config, StudyRequest& request) {
-  const ConfigSection section(config, "study");
-  section.read_paths("scenes", request.scenes);
-  section.read("configurations", request.configurations);
-  apply_section(section, request.tracing);
-  section.read("self_tolerance", request.self_tolerance);
-  section.read("format", request.format);
-  section.read("occlusion_num_vp", request.occlusion_num_vp);
-  section.read("segmenter", request.segmenter);
-  section.read("segmenter_output", request.segmenter_output);
-  job::read_estimation(section, request.estimation);
-  section.read_path("mapping_path", request.mapping_path);
-  section.read("ignored_classes", request.ignored_classes);
-  section.read("max_distance", request.max_distance);
-  section.read("shard", request.shard);
-  section.read_path("out", request.out);
 }
 
 StudyReport run_study(const StudyRequest& request, const Progress& progress) {
@@ -269,25 +251,8 @@ Json::Value to_json(const StudyReport& report) {
 
   Json::Value parameters(Json::objectValue);
   if (report.job == "study") {
-    parameters["scenes"] = to_json(q.scenes);
-    Json::Value configurations(Json::arrayValue);
-    for (const auto& configuration : q.configurations) {
-      Json::Value entry = configuration.choice.to_json();
-      entry["name"] = configuration.name;
-      configurations.append(entry);
-    }
-    parameters["configurations"] = configurations;
+    parameters = parameters_json(study_keys(), q);
     parameters["segmenter"] = job::segmenter_name(q.segmenter);
-    parameters["shard"] = q.shard;
-    parameters["point_radius"] = q.tracing.point_radius;
-    parameters["num_rays_per_vp"] = Json::UInt64(q.tracing.num_rays_per_vp);
-    parameters["sampling"] = q.tracing.sampling;
-    parameters["polygon_path"] = q.tracing.polygon_path;
-    parameters["exterior"] = q.tracing.exterior;
-    parameters["occlusion_num_vp"] = q.occlusion_num_vp;
-    parameters["mapping_path"] = q.mapping_path;
-    parameters["seed"] = Json::UInt64(q.tracing.seed);
-    parameters["threads"] = q.tracing.threads;
   } else {
     parameters["inputs"] = to_json(report.inputs);
   }

@@ -102,18 +102,13 @@ std::string segmenter_name(const std::string& segmenter) {
 }
 
 void validate_segmenter(const StudyRequest& request) {
-  const std::string& output = request.segmenter_output;
-  if (output != "labels" && output != "label" && output != "ply" && output != "pcd" &&
-      output != "txt") {
-    throw UsageError("--segmenter-output must be labels, ply, pcd or txt, got '" + output + "'");
-  }
   if (is_baseline(request.segmenter)) return;
   if (request.segmenter.find(kInput) == std::string::npos ||
       request.segmenter.find(kOutput) == std::string::npos) {
-    throw UsageError(
-        "--segmenter must be 'baseline' or a command with {input} and {output} in it "
-        "(e.g. 'python infer.py {input} {output}'), got '" +
-        request.segmenter + "'");
+    throw KeyError("segmenter",
+                   "must be 'baseline' or a command with {input} and {output} in it "
+                   "(e.g. 'python infer.py {input} {output}'), got '" +
+                       request.segmenter + "'");
   }
 }
 

@@ -30,19 +30,24 @@ ViewpointChoice ViewpointChoice::from_grid(std::size_t count) {
 void ViewpointChoice::validate() const {
   switch (kind) {
     case Kind::kPoints:
-      if (points.empty()) throw UsageError("--viewpoint: no viewpoints given");
+      if (points.empty()) throw KeyError("viewpoints", "must name at least one viewpoint");
+      if (points.size() > kMaxViewpoints) {
+        throw KeyError("viewpoints",
+                       "must hold at most " + std::to_string(kMaxViewpoints) + " viewpoints");
+      }
       for (const auto& point : points) {
-        if (!point.allFinite()) throw UsageError("--viewpoint must be finite");
+        if (!point.allFinite()) throw KeyError("viewpoints", "must be finite");
       }
       break;
     case Kind::kPattern:
       if (pattern < kMinPattern || pattern > kMaxPattern) {
-        throw UsageError("--pattern must be 1..7, got " + std::to_string(pattern));
+        throw KeyError("pattern", "must be an integer 1..7, got " + std::to_string(pattern));
       }
       break;
     case Kind::kGrid:
-      if (grid_count == 0 || grid_count > 10000) {
-        throw UsageError("--num-vp must be 1..10000, got " + std::to_string(grid_count));
+      if (grid_count == 0 || grid_count > kMaxViewpoints) {
+        throw KeyError("num_vp", "must be an integer 1.." + std::to_string(kMaxViewpoints) +
+                                     ", got " + std::to_string(grid_count));
       }
       break;
   }

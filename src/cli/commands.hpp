@@ -1,18 +1,38 @@
 #pragma once
+// The command line: every job of the registry is one command, parsed from its
+// key declarations (job_command.cpp); what stays per job here is how its
+// report reads to a person.
+
 #include <string>
 #include <vector>
 
+#include "occlusion/app/job_registry.hpp"
+
 namespace occlusion::cli {
+
+// The command line's own options, beside the job's keys.
+struct FaceOptions {
+  bool json = false;
+  bool quiet = false;
+  bool help = false;
+  bool confusion = false;  // -eval: print the confusion matrix
+  std::string config;      // --config FILE
+};
 
 // Each returns the process exit code; errors propagate as exceptions that
 // main() maps to exit codes.
-int run_mesh_occlusion_command(const std::vector<std::string>& args);
-int run_cloud_occlusion_command(const std::vector<std::string>& args);
-int run_region_growing_command(const std::vector<std::string>& args);
-int run_scan_command(const std::vector<std::string>& args);
-int run_reconstruct_command(const std::vector<std::string>& args);
-int run_evaluate_command(const std::vector<std::string>& args);
-int run_study_command(const std::vector<std::string>& args);
+int run_job_command(const JobInfo& job, const std::vector<std::string>& args);
+int run_study_merge_command(const std::vector<std::string>& args);
 int run_serve_command(const std::vector<std::string>& args);
+
+// The human summary of each job's report (stdout without --json).
+void print_mesh_occlusion(const JobRun& run, const FaceOptions& face);
+void print_cloud_occlusion(const JobRun& run, const FaceOptions& face);
+void print_region_growing(const JobRun& run, const FaceOptions& face);
+void print_scan(const JobRun& run, const FaceOptions& face);
+void print_reconstruct(const JobRun& run, const FaceOptions& face);
+void print_evaluate(const JobRun& run, const FaceOptions& face);
+void print_extract_polygons(const JobRun& run, const FaceOptions& face);
+void print_study(const JobRun& run, const FaceOptions& face);
 
 }  // namespace occlusion::cli

@@ -2,91 +2,14 @@
 #include <cstdio>
 #include <string>
 
-#include "arguments.hpp"
 #include "commands.hpp"
 #include "common_options.hpp"
-#include "occlusion/app/errors.hpp"
 #include "occlusion/app/evaluate_job.hpp"
-#include "option_table.hpp"
-#include "run_command.hpp"
+#include "occlusion/app/job_registry.hpp"
 
 namespace occlusion::cli {
 
 namespace {
-
-struct EvaluateCommand {
-  EvaluateRequest request;
-  OutputOptions output;
-  bool confusion = false;
-};
-
-EvaluateCommand parse(const std::vector<std::string>& args) {
-  EvaluateCommand command;
-  EvaluateRequest& request = command.request;
-  if (const auto config = config_path(args)) apply_config(load_config(*config), request);
-
-  OptionTable table("-eval");
-  add_output_options(table, command.output);
-  add_threads_option(table, request.threads);
-  bool predictions_given = false;
-  bool ground_truth_given = false;
-  table.value({"--prediction", "--predictions"}, [&](const std::string&, const std::string& v) {
-    add_to_list(request.predictions, predictions_given, v);
-  });
-  table.value({"--mapping-path", "--mapping"},
-              [&](const std::string&, const std::string& v) { request.mapping_path = v; });
-  table.value({"--ignored-classes"}, [&](const std::string&, const std::string& v) {
-    request.ignored_classes = split_list(v);
-  });
-  table.value({"--max-distance"}, [&](const std::string& option, const std::string& v) {
-    request.max_distance = parse_number(option, v);
-  });
-  table.flag({"--skip-bad-lines"}, [&] { request.skip_bad_lines = true; });
-  table.flag({"--confusion"}, [&] { command.confusion = true; });
-  table.value({"--out"}, [&](const std::string&, const std::string& v) { request.out = v; });
-  table.parse(args, [&](const std::string& v) {
-    add_to_list(request.ground_truth, ground_truth_given, v);
-  });
-  return command;
-}
-
-void print_help() {
-  std::printf(
-      "usage: occlusion -eval GT [GT2 ...] --prediction PRED [--prediction PRED2 ...] "
-      "[options]\n"
-      "\n"
-      "Semantic segmentation quality against labelled ground truth. Each ground truth GT\n"
-      "(a labelled cloud with class names: PLY/PCD written by occlusion, an S3DIS room or\n"
-      "Area) is paired with the --prediction given in the same position. A prediction is\n"
-      "a label file (one integer per line, one line per ground-truth point, in order;\n"
-      ".labels, .label, or a one-column .txt) or a labelled cloud. Predicted labels are\n"
-      "evaluation ids (the network's output space); ground-truth classes are mapped to\n"
-      "them by name (default: the seed's table 3.1). A prediction cloud with other points\n"
-      "(a voxelised output) gives each ground-truth point the label of its nearest\n"
-      "predicted point within --max-distance; points farther away count as misses.\n"
-      "The scenes' confusion matrices are summed; per-scene figures are kept.\n"
-      "\n"
-      "options (each is also a key of the config section occlusion.evaluate; GT is\n"
-      "ground_truth, --prediction is predictions):\n"
-      "  --config FILE              JSON config; options on the command line override it\n"
-      "  --prediction PRED          the prediction for the next ground truth (repeatable)\n"
-      "  --mapping-path FILE        class mapping JSON (docs/metrics.md; alias --mapping)\n"
-      "  --ignored-classes A,B,...  ground-truth classes to skip, on top of the mapping's\n"
-      "  --max-distance D           nearest-neighbour limit in scene units (default 0.05;\n"
-      "                             0: predictions must be on the ground truth's points)\n"
-      "  --skip-bad-lines           skip (and count) malformed lines of text clouds\n"
-      "  --threads N                worker threads (default 0 = all cores)\n"
-      "  --out DIR                  write GT.eval.json, .csv (per class) and .md (a table);\n"
-      "                             with several scenes eval.json, eval.csv, eval.md\n"
-      "  --confusion                print the confusion matrix (the JSON always has it)\n"
-      "  --json                     print one JSON object (headline: miou)\n"
-      "  -q, --quiet                no progress on stderr\n"
-      "\n"
-      "Conventions (ScanNet benchmark): ground truth outside the evaluation classes is\n"
-      "skipped; a prediction outside them is a miss of the true class, no class's false\n"
-      "positive; a class with neither ground truth nor predictions has no IoU. mIoU and\n"
-      "mean class accuracy average the classes that have ground truth.\n");
-}
 
 std::string figure(const std::optional<double>& value) {
   return optional_figure(value, "%6.4f", "     -");
@@ -152,12 +75,8 @@ void print_human(const EvaluateReport& report, bool confusion) {
 
 }  // namespace
 
-int run_evaluate_command(const std::vector<std::string>& args) {
-  const EvaluateCommand command = parse(args);
-  return run_command<EvaluateReport>(
-      command.output, "eval", print_help,
-      [&](const Progress& progress) { return run_evaluate(command.request, progress); },
-      [&](const EvaluateReport& report) { print_human(report, command.confusion); });
+void print_evaluate(const JobRun& run, const FaceOptions& face) {
+  print_human(run.report_as<EvaluateReport>(), face.confusion);
 }
 
 }  // namespace occlusion::cli

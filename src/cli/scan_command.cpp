@@ -1,79 +1,13 @@
 #include <cstdio>
 
-#include "arguments.hpp"
 #include "commands.hpp"
 #include "common_options.hpp"
-#include "occlusion/app/errors.hpp"
+#include "occlusion/app/job_registry.hpp"
 #include "occlusion/app/scan_job.hpp"
-#include "option_table.hpp"
-#include "run_command.hpp"
 
 namespace occlusion::cli {
 
 namespace {
-
-struct ScanCommand {
-  ScanRequest request;
-  OutputOptions output;
-};
-
-ScanCommand parse(const std::vector<std::string>& args) {
-  ScanCommand command;
-  ScanRequest& request = command.request;
-  if (const auto config = config_path(args)) apply_config(load_config(*config), request);
-
-  ViewpointOptions viewpoints;
-  OptionTable table("-fscan");
-  add_output_options(table, command.output);
-  add_viewpoint_options(table, viewpoints, /*allow_grid=*/true);
-  add_threads_option(table, request.threads);
-  table.value({"--point-radius"}, [&](const std::string& option, const std::string& v) {
-    request.point_radius = parse_number(option, v);
-  });
-  table.value({"--self-tolerance"}, [&](const std::string& option, const std::string& v) {
-    request.self_tolerance = parse_number(option, v);
-  });
-  table.value({"--octree-resolution"}, [&](const std::string& option, const std::string& v) {
-    request.octree_resolution = parse_number(option, v);
-  });
-  table.value({"--enable-acceleration"}, [&](const std::string& option, const std::string& v) {
-    request.enable_acceleration = parse_bool(option, v);
-  });
-  table.value({"--format"}, [&](const std::string&, const std::string& v) { request.format = v; });
-  table.flag({"--skip-bad-lines"}, [&] { request.skip_bad_lines = true; });
-  table.value({"--out"}, [&](const std::string&, const std::string& v) { request.out = v; });
-  table.parse(args, single_input(request.path, "-fscan"));
-  viewpoints.apply_to(request.viewpoints);
-  return command;
-}
-
-void print_help() {
-  std::printf(
-      "usage: occlusion -fscan CLOUD [options]\n"
-      "\n"
-      "Fixed-viewpoint scan: keep the points of a full cloud that the viewpoints really\n"
-      "see. Point P is seen from viewpoint V if the segment V-P meets no other point's\n"
-      "sphere (--point-radius), ignoring hits within --self-tolerance of P (its neighbours\n"
-      "on the same surface) and within --point-radius of V.\n"
-      "\n"
-      "options (each is also a key of the config section occlusion.point_cloud):\n"
-      "  --config FILE                JSON config; options on the command line override it\n"
-      "  --pattern N                  viewpoint pattern 1..7 (default 7; see -moc --help)\n"
-      "  --viewpoint X,Y,Z            explicit viewpoint (repeatable)\n"
-      "  --num-vp N                   N viewpoints on a grid at mid-height\n"
-      "  --point-radius R             sphere radius of each point (default 0.01)\n"
-      "  --self-tolerance D           default 2 x point radius\n"
-      "  --octree-resolution X        smallest octree cell edge (default 0 = no limit)\n"
-      "  --enable-acceleration BOOL   false: test every ray against every point\n"
-      "  --format ply|pcd             format of the written clouds (default ply)\n"
-      "  --skip-bad-lines             skip (and count) malformed lines of text inputs\n"
-      "  --threads N                  worker threads (default 0 = all cores)\n"
-      "  --out DIR                    write CLOUD.scan.FMT (the seen points, all attributes),\n"
-      "                               CLOUD.scan_full.FMT (every point + visible_count) and\n"
-      "                               CLOUD.fscan.json\n"
-      "  --json                       print one JSON object (headline: visible_fraction)\n"
-      "  -q, --quiet                  no progress on stderr\n");
-}
 
 void print_human(const ScanReport& report) {
   const ScanResult& r = report.result;
@@ -99,11 +33,8 @@ void print_human(const ScanReport& report) {
 
 }  // namespace
 
-int run_scan_command(const std::vector<std::string>& args) {
-  const ScanCommand command = parse(args);
-  return run_command<ScanReport>(
-      command.output, "fscan", print_help,
-      [&](const Progress& progress) { return run_scan(command.request, progress); }, print_human);
+void print_scan(const JobRun& run, const FaceOptions&) {
+  print_human(run.report_as<ScanReport>());
 }
 
 }  // namespace occlusion::cli

@@ -1,9 +1,9 @@
 // The app layer's jobs as functions. Keyword arguments are the job's config
-// keys: they become the job's config section, checked by the app layer's own
-// config checker (config_from_json) and copied by the job's apply_config, as a
-// server request's parameters are, so a wrong key or value is the same
-// UsageError (a ValueError here) naming it. Results carry the JSON report the
-// CLI prints with --json, plus the per-element arrays.
+// keys: a key source of the Python face, checked against the job's key
+// declarations (app/key_sources.hpp) as a config file or a server request is,
+// so a wrong key or value is the same UsageError (a ValueError here) naming
+// it. Results carry the JSON report the CLI prints with --json, plus the
+// per-element arrays.
 
 #include <json/value.h>
 #include <pybind11/numpy.h>
@@ -23,6 +23,8 @@
 #include "occlusion/app/errors.hpp"
 #include "occlusion/app/evaluate_job.hpp"
 #include "occlusion/app/in_memory_jobs.hpp"
+#include "occlusion/app/key.hpp"
+#include "occlusion/app/key_sources.hpp"
 #include "occlusion/app/mesh_occlusion_job.hpp"
 #include "occlusion/app/reconstruct_job.hpp"
 #include "occlusion/app/region_growing_job.hpp"
@@ -47,12 +49,13 @@ std::string source_path(const py::handle& source) {
   return {};
 }
 
-// The keyword arguments as the job's config section, checked as a config file
-// is; relative paths resolve against the working directory.
+// The keyword arguments as a key source of the Python face, checked against
+// the job's key declarations; relative paths resolve against the working directory.
 template <class Request>
-Request request_from(const char* section, const py::kwargs& keys, const std::string& path) {
+Request request_from(const Keys<Request>& keys, const char* section, const py::kwargs& kwargs,
+                     const std::string& path) {
   Json::Value body(Json::objectValue);
-  for (const auto& item : keys) {
+  for (const auto& item : kwargs) {
     const std::string key = py::str(item.first);
     body[key] = from_python(item.second, key);
   }
@@ -60,12 +63,12 @@ Request request_from(const char* section, const py::kwargs& keys, const std::str
     if (body.isMember("path")) throw UsageError("'path': given twice (as the source and as path=)");
     body["path"] = path;
   }
-  Json::Value root(Json::objectValue);
-  root["occlusion"][section] = body;
-  const Config config =
-      config_from_json(root, std::filesystem::current_path().string(), "arguments");
+  const std::filesystem::path cwd = std::filesystem::current_path();
+  const KeySource source = source_from_json(
+      body, key_infos(keys), Face::kPython, "", section,
+      [&cwd](const std::string& given, bool) { return (cwd / given).lexically_normal().string(); });
   Request request;
-  apply_config(config, request);
+  apply_sources(keys, {source}, request);
   return request;
 }
 
@@ -99,7 +102,7 @@ JobResult result_of(const Report& report) {
 JobResult mesh_occlusion(const py::handle& source, const py::object& progress,
                          const py::kwargs& keys) {
   const std::string path = source_path(source);
-  MeshOcclusionRequest request = request_from<MeshOcclusionRequest>("mesh", keys, path);
+  MeshOcclusionRequest request = request_from(mesh_occlusion_keys(), "mesh", keys, path);
   PythonProgress watch(progress);
   MeshOcclusionReport report;
   if (!path.empty()) {
@@ -130,7 +133,7 @@ JobResult cloud_occlusion(const py::handle& source, const py::object& labels,
                           const py::object& class_names, const py::object& progress,
                           const py::kwargs& keys) {
   const std::string path = source_path(source);
-  CloudOcclusionRequest request = request_from<CloudOcclusionRequest>("point_cloud", keys, path);
+  CloudOcclusionRequest request = request_from(cloud_occlusion_keys(), "point_cloud", keys, path);
   PythonProgress watch(progress);
   CloudOcclusionReport report;
   if (!path.empty()) {
@@ -149,7 +152,7 @@ JobResult cloud_occlusion(const py::handle& source, const py::object& labels,
 JobResult scan(const py::handle& source, const py::object& labels, const py::object& class_names,
                const py::object& progress, const py::kwargs& keys) {
   const std::string path = source_path(source);
-  ScanRequest request = request_from<ScanRequest>("point_cloud", keys, path);
+  ScanRequest request = request_from(scan_keys(), "scan", keys, path);
   PythonProgress watch(progress);
   ScanReport report;
   if (!path.empty()) {
@@ -172,7 +175,7 @@ JobResult scan(const py::handle& source, const py::object& labels, const py::obj
 JobResult region_growing_occlusion(const py::handle& source, const py::object& progress,
                                    const py::kwargs& keys) {
   const auto request =
-      request_from<RegionGrowingRequest>("region_growing", keys, source_path(source));
+      request_from(region_growing_keys(), "region_growing", keys, source_path(source));
   PythonProgress watch(progress);
   const RegionGrowingReport report =
       watch.run([&](const Progress& p) { return run_region_growing_occlusion(request, p); });
@@ -204,7 +207,7 @@ py::array_t<std::uint64_t> confusion_array(const ConfusionMatrix& matrix) {
 }
 
 JobResult evaluate(const py::object& progress, const py::kwargs& keys) {
-  const auto request = request_from<EvaluateRequest>("evaluate", keys, "");
+  const auto request = request_from(evaluate_keys(), "evaluate", keys, "");
   PythonProgress watch(progress);
   const EvaluateReport report =
       watch.run([&](const Progress& p) { return run_evaluate(request, p); });
@@ -219,7 +222,7 @@ JobResult evaluate(const py::object& progress, const py::kwargs& keys) {
 
 JobResult reconstruct(const py::handle& source, const py::object& progress,
                       const py::kwargs& keys) {
-  const auto request = request_from<ReconstructRequest>("reconstruct", keys, source_path(source));
+  const auto request = request_from(reconstruct_keys(), "reconstruct", keys, source_path(source));
   PythonProgress watch(progress);
   return result_of(watch.run([&](const Progress& p) { return run_reconstruct(request, p); }));
 }

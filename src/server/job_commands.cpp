@@ -3,6 +3,7 @@
 
 #include <json/value.h>
 
+#include <map>
 #include <utility>
 
 #include "command_table.hpp"
@@ -12,6 +13,7 @@
 #include "occlusion/app/errors.hpp"
 #include "occlusion/app/evaluate_job.hpp"
 #include "occlusion/app/extract_polygons_job.hpp"
+#include "occlusion/app/job_registry.hpp"
 #include "occlusion/app/mesh_occlusion_job.hpp"
 #include "occlusion/app/reconstruct_job.hpp"
 #include "occlusion/app/region_growing_job.hpp"
@@ -22,22 +24,6 @@
 namespace occlusion::server {
 
 namespace {
-
-template <class Request, class Report>
-Command job_command(const std::string& name, const JobParams& spec,
-                    Report (*run)(const Request&, const Progress&),
-                    void (*send_frames)(CommandContext&, const Report&)) {
-  return Command{name, Where::kWorker, [=](CommandContext& context) {
-                   Request request;
-                   apply_config(job_config(context.params, spec, context.server.root), request);
-                   const Report report = run(request, context.progress());
-                   context.progress().check_cancel();
-                   if (send_frames != nullptr) send_frames(context, report);
-                   Json::Value json = to_json(report);
-                   context.server.root.relativise(json);
-                   return json;
-                 }};
-}
 
 void mesh_frames(CommandContext& context, const MeshOcclusionReport& report) {
   const auto& fraction = report.result.face_visible_fraction;
@@ -82,13 +68,13 @@ void extract_polygons_frames(CommandContext& context, const ExtractPolygonsRepor
 // A segmenter command would let whatever reaches the server run a shell
 // command as the server's user; over the protocol the study segments with the
 // built-in baseline only, and a network runs from the command line.
-StudyReport run_baseline_study(const StudyRequest& request, const Progress& progress) {
-  if (request.segmenter != kBaselineSegmenter) {
+void refuse_segmenter_commands(const Json::Value& params) {
+  if (params.isObject() && params.isMember("segmenter") &&
+      !(params["segmenter"].isString() && params["segmenter"].asString() == kBaselineSegmenter)) {
     throw UsageError(
         "'segmenter': only \"baseline\" over the server; a segmenter command runs with "
         "'occlusion study' on the command line");
   }
-  return run_study(request, progress);
 }
 
 // The reconstructed cloud itself, read back from what the job wrote, so the
@@ -99,25 +85,45 @@ void reconstruct_frames(CommandContext& context, const ReconstructReport& report
   context.send(cloud_frames(read_cloud(report.outputs.front())));
 }
 
+using Frames = void (*)(CommandContext&, const JobRun&);
+
+template <class Report, void (*send)(CommandContext&, const Report&)>
+void typed_frames(CommandContext& context, const JobRun& run) {
+  send(context, run.report_as<Report>());
+}
+
+// What each job sends beside its JSON report.
+const std::map<std::string, Frames>& job_frames() {
+  static const std::map<std::string, Frames> table = {
+      {"mesh_occlusion", &typed_frames<MeshOcclusionReport, mesh_frames>},
+      {"cloud_occlusion", &typed_frames<CloudOcclusionReport, escape_frames>},
+      {"region_growing_occlusion", &typed_frames<RegionGrowingReport, region_growing_frames>},
+      {"scan", &typed_frames<ScanReport, scan_frames>},
+      {"reconstruct", &typed_frames<ReconstructReport, reconstruct_frames>},
+      {"extract_polygons", &typed_frames<ExtractPolygonsReport, extract_polygons_frames>},
+  };
+  return table;
+}
+
 }  // namespace
 
 std::vector<Command> job_commands() {
-  return {
-      job_command("mesh_occlusion", {"mesh", true, {}}, &run_mesh_occlusion, &mesh_frames),
-      job_command("cloud_occlusion", {"point_cloud", true, {}}, &run_cloud_occlusion,
-                  &escape_frames),
-      job_command("region_growing_occlusion", {"region_growing", true, {}},
-                  &run_region_growing_occlusion, &region_growing_frames),
-      job_command("scan", {"point_cloud", true, {}}, &run_scan, &scan_frames),
-      job_command("reconstruct", {"reconstruct", true, {}}, &run_reconstruct, &reconstruct_frames),
-      job_command<EvaluateRequest, EvaluateReport>(
-          "evaluate", {"evaluate", true, {"ground_truth", "predictions"}}, &run_evaluate, nullptr),
-      job_command<ExtractPolygonsRequest, ExtractPolygonsReport>(
-          "extract_polygons", {"region_growing", true, {}}, &run_extract_polygons,
-          &extract_polygons_frames),
-      job_command<StudyRequest, StudyReport>("study", {"study", true, {"scenes"}},
-                                             &run_baseline_study, nullptr),
-  };
+  std::vector<Command> commands;
+  for (const JobInfo& job : jobs()) {
+    commands.push_back(Command{job.name, Where::kWorker, [&job](CommandContext& context) {
+                                 if (job.name == "study") refuse_segmenter_commands(context.params);
+                                 const JobRun run =
+                                     job.run({job_source(context.params, job, context.server.root)},
+                                             context.progress());
+                                 context.progress().check_cancel();
+                                 const auto frames = job_frames().find(job.name);
+                                 if (frames != job_frames().end()) frames->second(context, run);
+                                 Json::Value json = run.json;
+                                 context.server.root.relativise(json);
+                                 return json;
+                               }});
+  }
+  return commands;
 }
 
 }  // namespace occlusion::server

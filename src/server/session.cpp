@@ -2,6 +2,7 @@
 
 #include "command_params.hpp"
 #include "error_reply.hpp"
+#include "occlusion/app/job_registry.hpp"
 #include "occlusion/server/protocol_error.hpp"
 #include "upload.hpp"
 
@@ -23,6 +24,19 @@ std::string hello_message(const Limits& limits) {
   Json::Value commands(Json::objectValue);
   for (const auto& command : command_table()) commands[command.name] = command.available();
   json["commands"] = commands;
+  // Each job's keys as declared (type, default, range, unit, doc): the viewer
+  // builds its settings from them instead of keeping its own copies.
+  Json::Value jobs_json(Json::objectValue);
+  for (const JobInfo& job : jobs()) {
+    Json::Value entry(Json::objectValue);
+    entry["section"] = job.section;
+    entry["summary"] = job.summary;
+    Json::Value keys(Json::arrayValue);
+    for (const KeyInfo& info : job.keys) keys.append(to_json(info));
+    entry["keys"] = keys;
+    jobs_json[job.name] = entry;
+  }
+  json["jobs"] = jobs_json;
   Json::Value limit(Json::objectValue);
   limit["max_text_bytes"] = Json::UInt64(limits.max_text_bytes);
   limit["max_upload_bytes"] = Json::UInt64(limits.max_upload_bytes);

@@ -1,4 +1,5 @@
 #include "occlusion/app/study_job.hpp"
+#include "occlusion/app/config.hpp"
 
 #include <gtest/gtest.h>
 
@@ -24,7 +25,7 @@ const std::string kSource = OCCLUSION_SOURCE_DIR;
 // few rays, so that a whole study takes about a second.
 StudyRequest office_study(const std::string& out) {
   StudyRequest request;
-  apply_config(load_config(kSource + "/config/study.json"), request);
+  apply_config(load_config(kSource + "/config/study.json"), "study", study_keys(), request);
   request.tracing.num_rays_per_vp = 400;
   request.out = out;
   return request;
@@ -226,7 +227,7 @@ TEST(StudyJob, ConfigurationsComeFromTheConfig) {
       {"name": "grid", "num_vp": 4},
       {"name": "two", "viewpoints": [[1, 1, 1], [2, 2, 2]]}]}}})");
   StudyRequest other;
-  apply_config(load_config(dir.file("c.json")), other);
+  apply_config(load_config(dir.file("c.json")), "study", study_keys(), other);
   ASSERT_EQ(other.configurations.size(), 2u);
   EXPECT_EQ(other.configurations[0].choice.kind, ViewpointChoice::Kind::kGrid);
   EXPECT_EQ(other.configurations[1].choice.points.size(), 2u);

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "occlusion/analysis/cloud_occlusion.hpp"
-#include "occlusion/app/config.hpp"
+#include "occlusion/app/key.hpp"
 #include "occlusion/app/viewpoint_choice.hpp"
 
 namespace occlusion {
@@ -58,10 +58,10 @@ struct CloudOcclusionReport {
 };
 
 void validate(const CloudOcclusionRequest& request);
-// Copies the config's `occlusion.point_cloud` section into the request.
-void apply_config(const Config& config, CloudOcclusionRequest& request);
-// The same keys from another section (the study's carries the tracing keys).
-void apply_section(const ConfigSection& section, CloudOcclusionRequest& request);
+// Every key of the job (config section occlusion.point_cloud), declared once.
+const Keys<CloudOcclusionRequest>& cloud_occlusion_keys();
+// The tracing keys alone (no path, viewpoints or outputs): the study takes them too.
+const Keys<CloudOcclusionRequest>& cloud_tracing_keys();
 
 CloudOcclusionReport run_cloud_occlusion(const CloudOcclusionRequest& request,
                                          const Progress& progress = {});

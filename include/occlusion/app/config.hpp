@@ -1,20 +1,21 @@
 #pragma once
 // The JSON configuration file, in the seed's shape (thesis listing 4.14):
 //   { "occlusion": { "mesh": { "path": ..., "pattern": 4, ... },
-//                    "point_cloud": { ... }, "reconstruct": { ... }, "study": { ... } } }
-// The whole file is checked on load: an unknown key or a wrong type is a
-// UsageError that names the key. Relative paths are resolved against the
-// config file's folder. Each job reads its own section (ConfigSection).
+//                    "point_cloud": { ... }, "scan": { ... }, "study": { ... } } }
+// One section per job (job_registry.hpp names them). The whole file is checked
+// on load against the jobs' key declarations: an unknown section or key, a
+// wrong type or an out-of-range value is a UsageError that names it. Relative
+// paths resolve against the config file's folder.
 
 #include <json/value.h>
 
-#include <cstdint>
 #include <string>
-#include <vector>
 
-#include "occlusion/app/viewpoint_choice.hpp"
+#include "occlusion/app/key_sources.hpp"
 
 namespace occlusion {
+
+struct JobInfo;
 
 struct Config {
   Json::Value root;
@@ -25,38 +26,32 @@ struct Config {
 // Reads and checks the whole file (all sections). Throws UsageError.
 Config load_config(const std::string& path);
 
-// Checks a config given as JSON (e.g. a server request's parameters), as
-// load_config does a file. `name` prefixes error messages; relative paths
-// resolve against `directory`. Throws UsageError.
+// Checks a config given as JSON, as load_config does a file. `name` prefixes
+// error messages; relative paths resolve against `directory`. Throws UsageError.
 Config config_from_json(const Json::Value& root, const std::string& directory,
                         const std::string& name);
 
-// One section, e.g. "mesh". Each read leaves `out` unchanged when the key is
-// absent; types were checked by load_config.
-class ConfigSection {
- public:
-  ConfigSection(const Config& config, const std::string& name);
+// The job's section as a source of key values (empty when the file has none).
+KeySource config_source(const Config& config, const JobInfo& job);
 
-  bool has(const std::string& key) const;
-  void read(const std::string& key, std::string& out) const;
-  // Resolved against the config's folder; "" stays "" (none).
-  void read_path(const std::string& key, std::string& out) const;
-  void read(const std::string& key, double& out) const;
-  void read(const std::string& key, bool& out) const;
-  void read(const std::string& key, std::uint64_t& out) const;
-  void read(const std::string& key, unsigned& out) const;
-  void read(const std::string& key, std::vector<std::string>& out) const;
-  // A list of paths, each resolved as read_path does.
-  void read_paths(const std::string& key, std::vector<std::string>& out) const;
-  // A list of named viewpoint choices (the study's configurations).
-  void read(const std::string& key, std::vector<NamedViewpointChoice>& out) const;
-  // "viewpoints", "pattern" or "num_vp": at most one may be present.
-  void read_viewpoints(ViewpointChoice& out) const;
+// Fills `request` from the config's section for its job, e.g.
+// apply_config(load_config(path), "study", study_keys(), request).
+template <class R>
+void apply_config(const Config& config, const std::string& job_name, const Keys<R>& keys,
+                  R& request);
 
- private:
-  const Config& config_;
-  std::string name_;
-  const Json::Value& body_;
-};
+}  // namespace occlusion
+
+#include "occlusion/app/job_registry.hpp"
+
+namespace occlusion {
+
+template <class R>
+void apply_config(const Config& config, const std::string& job_name, const Keys<R>& keys,
+                  R& request) {
+  const JobInfo* job = find_job(job_name);
+  if (job == nullptr) throw std::logic_error("no job " + job_name);
+  apply_sources(keys, {config_source(config, *job)}, request);
+}
 
 }  // namespace occlusion

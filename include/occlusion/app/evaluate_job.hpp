@@ -18,7 +18,7 @@
 #include "occlusion/analysis/class_mapping.hpp"
 #include "occlusion/analysis/confusion_matrix.hpp"
 #include "occlusion/analysis/progress.hpp"
-#include "occlusion/app/config.hpp"
+#include "occlusion/app/key.hpp"
 #include "occlusion/core/point_cloud.hpp"
 
 namespace occlusion {
@@ -86,8 +86,8 @@ struct EvaluateReport {
 };
 
 void validate(const EvaluateRequest& request);
-// Copies the config's `occlusion.evaluate` section into the request.
-void apply_config(const Config& config, EvaluateRequest& request);
+// Every key of the job (config section occlusion.evaluate), declared once.
+const Keys<EvaluateRequest>& evaluate_keys();
 // A mapping file (or, for "", table 3.1) with `ignored_classes` added.
 // UsageError for a bad file.
 ClassMapping resolve_mapping(const std::string& mapping_path,

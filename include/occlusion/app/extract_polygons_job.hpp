@@ -13,7 +13,7 @@
 
 #include "occlusion/analysis/mesh_estimation.hpp"
 #include "occlusion/analysis/progress.hpp"
-#include "occlusion/app/config.hpp"
+#include "occlusion/app/key.hpp"
 
 namespace occlusion {
 
@@ -38,8 +38,8 @@ struct ExtractPolygonsReport {
 };
 
 void validate(const ExtractPolygonsRequest& request);
-// Copies the config's `occlusion.region_growing` section into the request.
-void apply_config(const Config& config, ExtractPolygonsRequest& request);
+// Every key of the job (config section occlusion.extract_polygons), declared once.
+const Keys<ExtractPolygonsRequest>& extract_polygons_keys();
 // With `out`: CLOUD.polygons.obj, CLOUD.segmented.ply (an int `cluster` per
 // point) and CLOUD.polygons.json. Errors as run_region_growing_occlusion's.
 ExtractPolygonsReport run_extract_polygons(const ExtractPolygonsRequest& request,

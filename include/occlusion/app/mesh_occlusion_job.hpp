@@ -12,7 +12,7 @@
 
 #include "occlusion/analysis/mesh_occlusion.hpp"
 #include "occlusion/analysis/progress.hpp"
-#include "occlusion/app/config.hpp"
+#include "occlusion/app/key.hpp"
 #include "occlusion/app/viewpoint_choice.hpp"
 
 namespace occlusion {
@@ -41,8 +41,8 @@ struct MeshOcclusionReport {
 // Checks the request's values; throws UsageError naming the offending option.
 void validate(const MeshOcclusionRequest& request);
 
-// Copies the config's `occlusion.mesh` section into the request.
-void apply_config(const Config& config, MeshOcclusionRequest& request);
+// Every key of the job (config section occlusion.mesh), declared once.
+const Keys<MeshOcclusionRequest>& mesh_occlusion_keys();
 
 // Loads the mesh, computes, writes outputs. Throws UsageError, InputError,
 // OutputError, Cancelled.

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "occlusion/analysis/progress.hpp"
-#include "occlusion/app/config.hpp"
+#include "occlusion/app/key.hpp"
 
 namespace occlusion {
 
@@ -38,7 +38,8 @@ struct ReconstructReport {
 };
 
 void validate(const ReconstructRequest& request);
-void apply_config(const Config& config, ReconstructRequest& request);
+// Every key of the job (config section occlusion.reconstruct), declared once.
+const Keys<ReconstructRequest>& reconstruct_keys();
 ReconstructReport run_reconstruct(const ReconstructRequest& request, const Progress& progress = {});
 Json::Value to_json(const ReconstructReport& report);
 

@@ -13,7 +13,7 @@
 #include "occlusion/analysis/mesh_estimation.hpp"
 #include "occlusion/analysis/mesh_occlusion.hpp"
 #include "occlusion/analysis/progress.hpp"
-#include "occlusion/app/config.hpp"
+#include "occlusion/app/key.hpp"
 #include "occlusion/app/viewpoint_choice.hpp"
 
 namespace occlusion {
@@ -49,8 +49,10 @@ struct RegionGrowingReport {
 // Throws UsageError naming the offending option.
 void validate(const RegionGrowingRequest& request);
 
-// Copies the config's `occlusion.region_growing` section into the request.
-void apply_config(const Config& config, RegionGrowingRequest& request);
+// Every key of the job (config section occlusion.region_growing), declared once.
+const Keys<RegionGrowingRequest>& region_growing_keys();
+// The region-growing keys alone (also -rgoc's, extract_polygons' and the study's).
+const Keys<RegionGrowingOptions>& estimation_keys();
 
 // Loads the cloud, estimates the mesh, computes its occlusion, writes outputs.
 // A cloud in which no cluster becomes a plane is a UsageError whose message

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "occlusion/analysis/scan.hpp"
-#include "occlusion/app/config.hpp"
+#include "occlusion/app/key.hpp"
 #include "occlusion/app/viewpoint_choice.hpp"
 
 namespace occlusion {
@@ -48,8 +48,8 @@ struct ScanReport {
 };
 
 void validate(const ScanRequest& request);
-// Copies the config's `occlusion.point_cloud` section into the request.
-void apply_config(const Config& config, ScanRequest& request);
+// Every key of the job (config section occlusion.scan), declared once.
+const Keys<ScanRequest>& scan_keys();
 ScanReport run_scan(const ScanRequest& request, const Progress& progress = {});
 // What run_scan computes once the cloud is loaded, for a cloud already in
 // memory and viewpoints already placed (the study scans each scene it holds

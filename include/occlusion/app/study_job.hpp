@@ -24,7 +24,7 @@
 #include "occlusion/analysis/mesh_estimation.hpp"
 #include "occlusion/analysis/progress.hpp"
 #include "occlusion/app/cloud_occlusion_job.hpp"
-#include "occlusion/app/config.hpp"
+#include "occlusion/app/key.hpp"
 #include "occlusion/app/viewpoint_choice.hpp"
 #include "occlusion/io/csv_file.hpp"
 
@@ -93,8 +93,8 @@ struct StudyReport {
 
 // Throws UsageError naming the option at fault.
 void validate(const StudyRequest& request);
-// Copies the config's `occlusion.study` section into the request.
-void apply_config(const Config& config, StudyRequest& request);
+// Every key of the job (config section occlusion.study), declared once.
+const Keys<StudyRequest>& study_keys();
 // Writes OUT/study.csv (after every run), study.svg, study.md, study.json and
 // OUT/runs/ (each run's scanned cloud and prediction). UsageError for bad
 // options, a scene whose classes the mapping does not know, or a study.csv

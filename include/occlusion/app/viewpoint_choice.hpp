@@ -17,6 +17,8 @@ struct ViewpointChoice {
   std::vector<Eigen::Vector3d> points;
   int pattern = 7;
   std::size_t grid_count = 9;
+  // More viewpoints than this is a mistake, not a study (each traces its own rays).
+  static constexpr std::size_t kMaxViewpoints = 10000;
 
   static ViewpointChoice from_points(std::vector<Eigen::Vector3d> points);
   static ViewpointChoice from_pattern(int pattern);

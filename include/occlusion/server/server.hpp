@@ -8,6 +8,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace occlusion::server {
 
@@ -26,6 +27,10 @@ struct ServerOptions {
   // One line per notable event; default: stderr.
   std::function<void(const std::string&)> log;
 };
+
+// `occlusion serve [options]`: parses the options, serves until a signal.
+// Returns the exit code; throws UsageError for bad options.
+int run_serve_command(const std::vector<std::string>& args);
 
 class Server {
  public:

@@ -1,0 +1,33 @@
+// The keys of -eval (config section occlusion.evaluate).
+
+#include "occlusion/app/evaluate_job.hpp"
+#include "occlusion/app/shared_keys.hpp"
+
+namespace occlusion {
+
+const Keys<EvaluateRequest>& evaluate_keys() {
+  using R = EvaluateRequest;
+  static const Keys<R> keys = join<R>({
+      {key("ground_truth", &R::ground_truth)
+           .path()
+           .metavar("GT")
+           .doc("labelled clouds with class names (PLY/PCD written by occlusion, S3DIS rooms or "
+                "Areas), one per scene"),
+       key("predictions", &R::predictions)
+           .path()
+           .cli("--prediction")
+           .alias("--predictions")
+           .repeatable()
+           .metavar("PRED")
+           .doc("the prediction for each ground truth, in the same order: a label file or a "
+                "labelled cloud")},
+      scoring_keys<R>(),
+      {skip_bad_lines_key(&R::skip_bad_lines), threads_key(&R::threads),
+       out_key(&R::out,
+               "write GT.eval.json, .csv (per class) and .md (a table); with several scenes "
+               "eval.json, eval.csv, eval.md")},
+  });
+  return keys;
+}
+
+}  // namespace occlusion

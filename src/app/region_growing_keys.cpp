@@ -1,0 +1,46 @@
+// The keys of -rgoc (config section occlusion.region_growing) and of
+// extract_polygons (occlusion.extract_polygons): region growing, then, for
+// -rgoc, the estimated mesh's occlusion as -moc measures it.
+
+#include "occlusion/app/extract_polygons_job.hpp"
+#include "occlusion/app/region_growing_job.hpp"
+#include "occlusion/app/shared_keys.hpp"
+
+namespace occlusion {
+
+namespace {
+const char kCloudDoc[] = "point cloud: .pcd, .ply, .txt or an S3DIS room/Area folder";
+}
+
+const Keys<RegionGrowingRequest>& region_growing_keys() {
+  using R = RegionGrowingRequest;
+  static const Keys<R> keys = join<R>({
+      {input_key(&R::path, kCloudDoc)},
+      viewpoint_keys(&R::viewpoints),
+      mount(estimation_keys(), &R::estimation),
+      {samples_per_unit_area_key(&R::samples_per_unit_area),
+       octree_resolution_key(&R::octree_resolution),
+       enable_acceleration_key(&R::enable_acceleration), seed_key(&R::seed),
+       threads_key(&R::threads), skip_bad_lines_key(&R::skip_bad_lines),
+       out_key(&R::out,
+               "write CLOUD.rgoc.obj and CLOUD.rgoc.ply (the estimated mesh, group = cluster; "
+               "the PLY with per-face visible_fraction), CLOUD.segmented.ply (every point with "
+               "its cluster, -1 for none) and CLOUD.rgoc.json")},
+  });
+  return keys;
+}
+
+const Keys<ExtractPolygonsRequest>& extract_polygons_keys() {
+  using R = ExtractPolygonsRequest;
+  static const Keys<R> keys = join<R>({
+      {input_key(&R::path, kCloudDoc)},
+      mount(estimation_keys(), &R::estimation),
+      {threads_key(&R::threads), skip_bad_lines_key(&R::skip_bad_lines),
+       out_key(&R::out,
+               "write CLOUD.polygons.obj, CLOUD.segmented.ply (an int cluster per point) and "
+               "CLOUD.polygons.json")},
+  });
+  return keys;
+}
+
+}  // namespace occlusion

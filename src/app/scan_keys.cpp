@@ -1,0 +1,25 @@
+// The keys of -fscan (config section occlusion.scan).
+
+#include "occlusion/app/scan_job.hpp"
+#include "occlusion/app/shared_keys.hpp"
+
+namespace occlusion {
+
+const Keys<ScanRequest>& scan_keys() {
+  using R = ScanRequest;
+  static const Keys<R> keys = join<R>({
+      {input_key(&R::path, "point cloud: .pcd, .ply, .txt or an S3DIS room/Area folder")},
+      viewpoint_keys(&R::viewpoints),
+      {point_radius_key(&R::point_radius), self_tolerance_key(&R::self_tolerance),
+       octree_resolution_key(&R::octree_resolution),
+       enable_acceleration_key(&R::enable_acceleration),
+       cloud_format_key(&R::format, "format of the written clouds"),
+       skip_bad_lines_key(&R::skip_bad_lines), threads_key(&R::threads),
+       out_key(&R::out,
+               "write CLOUD.scan.FMT (the seen points, all attributes), CLOUD.scan_full.FMT "
+               "(every point + visible_count) and CLOUD.fscan.json")},
+  });
+  return keys;
+}
+
+}  // namespace occlusion

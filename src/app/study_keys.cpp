@@ -1,0 +1,100 @@
+// The keys of the occlusion study (config section occlusion.study): its own,
+// then -poc's tracing keys, -fscan's self tolerance, -eval's scoring keys and
+// the region-growing keys of the baseline segmenter, each declared once by
+// its own job.
+
+#include "occlusion/app/region_growing_job.hpp"
+#include "occlusion/app/shared_keys.hpp"
+#include "occlusion/app/study_job.hpp"
+
+namespace occlusion {
+
+namespace {
+
+ViewpointChoice choice_from_json(const Json::Value& set) {
+  if (set.isMember("pattern")) return ViewpointChoice::from_pattern(set["pattern"].asInt());
+  if (set.isMember("num_vp")) return ViewpointChoice::from_grid(set["num_vp"].asUInt64());
+  std::vector<Eigen::Vector3d> points;
+  for (const auto& p : set["viewpoints"]) {
+    points.emplace_back(p[0].asDouble(), p[1].asDouble(), p[2].asDouble());
+  }
+  return ViewpointChoice::from_points(std::move(points));
+}
+
+std::string pattern_configuration_name(int pattern) {
+  return "pattern_" + std::to_string(pattern);
+}
+
+}  // namespace
+
+const Keys<StudyRequest>& study_keys() {
+  using R = StudyRequest;
+  static const Keys<R> keys = join<R>({
+      {key("scenes", &R::scenes)
+           .path()
+           .cli("--scene")
+           .repeatable()
+           .metavar("PATH")
+           .doc("labelled scenes (clouds with class names, S3DIS rooms); each --scene adds one "
+                "and together they replace the config's"),
+       custom_key<R>(
+           "configurations", ValueType::kViewpointSets,
+           [](R& r, const Json::Value& v) {
+             r.configurations.clear();
+             for (const auto& set : v) {
+               r.configurations.push_back({set["name"].asString(), choice_from_json(set)});
+             }
+           },
+           [](const R& r) {
+             Json::Value list(Json::arrayValue);
+             for (const auto& c : r.configurations) {
+               Json::Value set = c.choice.to_json();
+               set["name"] = c.name;
+               list.append(set);
+             }
+             return list;
+           })
+           .exclusive("configurations")
+           .doc("viewpoint configurations: [{\"name\": ..., \"pattern\" | \"num_vp\" | "
+                "\"viewpoints\": ...}]"),
+       custom_key<R>(
+           "patterns", ValueType::kIntegerList,
+           [](R& r, const Json::Value& v) {
+             r.configurations.clear();
+             for (const auto& p : v) {
+               r.configurations.push_back({pattern_configuration_name(p.asInt()),
+                                           ViewpointChoice::from_pattern(p.asInt())});
+             }
+           },
+           [](const R&) { return Json::Value(); })
+           .range(1, 7)
+           .cli("--pattern")
+           .repeatable()
+           .metavar("N")
+           .exclusive("configurations")
+           .doc("configurations 'pattern_N', one per pattern (instead of configurations)"),
+       key("occlusion_num_vp", &R::occlusion_num_vp)
+           .range(0, ViewpointChoice::kMaxViewpoints)
+           .metavar("N")
+           .doc("measure occlusion from N grid viewpoints (the same for every configuration); "
+                "0: from each configuration's own viewpoints"),
+       key("segmenter", &R::segmenter)
+           .metavar("CMD")
+           .doc("'baseline' (a geometric baseline on the region-growing planes, not a network) "
+                "or a command with {input} (the scanned cloud) and {output} (its prediction, "
+                "evaluation ids), e.g. 'python infer.py {input} {output}'"),
+       key("segmenter_output", &R::segmenter_output)
+           .choices({"labels", "label", "ply", "pcd", "txt"})
+           .doc("extension of {output}"),
+       cloud_format_key(&R::format, "format of the scanned clouds in OUT/runs"),
+       key("shard", &R::shard).metavar("I/N").doc("make only the runs k with k mod N = I"),
+       out_key(&R::out, "study.csv, study.md, study.svg, study.json, runs/")},
+      mount(cloud_tracing_keys(), &R::tracing),
+      {self_tolerance_key(&R::self_tolerance)},
+      scoring_keys<R>(),
+      mount(estimation_keys(), &R::estimation),
+  });
+  return keys;
+}
+
+}  // namespace occlusion
