@@ -71,7 +71,7 @@ def test_mesh_occlusion_equals_cli():
 
 def test_cloud_occlusion_equals_cli():
     args = ["--point-radius", "0.06", "--num-rays-per-vp", "2000", "--num-vp", "2", "--seed", "5"]
-    cli = cli_json("-poc", OFFICE, "--polygon-path", OPENINGS, *args)
+    cli = cli_json("-poc", OFFICE, "--polygon-path", OPENINGS, "--escape-directions", *args)
     result = occlusion.cloud_occlusion(
         OFFICE, polygon_path=OPENINGS, point_radius=0.06, num_rays_per_vp=2000, num_vp=2, seed=5,
         escape_directions=True,
