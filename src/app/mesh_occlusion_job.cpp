@@ -40,17 +40,12 @@ void validate(const MeshOcclusionRequest& request) {
   request.viewpoints.validate();
 }
 
-MeshOcclusionReport run_mesh_occlusion(const MeshOcclusionRequest& request,
-                                       const Progress& progress) {
+MeshOcclusionReport run_mesh_occlusion_on(const TriangleMesh& mesh,
+                                          const MeshOcclusionRequest& request,
+                                          const Progress& progress) {
   validate(request);
-  const auto start = job::Clock::now();
   MeshOcclusionReport report;
   report.request = request;
-
-  progress("loading", 0.0);
-  const TriangleMesh mesh = read_mesh(request.path);
-  report.load_seconds = job::seconds_since(start);
-  progress.check_cancel();
 
   Eigen::Vector3d lo, hi;
   mesh.bounds(lo, hi);
@@ -75,6 +70,21 @@ MeshOcclusionReport run_mesh_occlusion(const MeshOcclusionRequest& request,
   options.seed = request.seed;
   options.threads = request.threads;
   report.result = compute_mesh_occlusion(mesh, viewpoints.positions, options, progress);
+  return report;
+}
+
+MeshOcclusionReport run_mesh_occlusion(const MeshOcclusionRequest& request,
+                                       const Progress& progress) {
+  validate(request);
+  const auto start = job::Clock::now();
+
+  progress("loading", 0.0);
+  const TriangleMesh mesh = read_mesh(request.path);
+  const double load_seconds = job::seconds_since(start);
+  progress.check_cancel();
+
+  MeshOcclusionReport report = run_mesh_occlusion_on(mesh, request, progress);
+  report.load_seconds = load_seconds;
 
   if (!request.out.empty()) {
     ensure_directory(request.out);

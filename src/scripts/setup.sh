@@ -14,6 +14,8 @@ packages=(
   slurm-wlm munge parallel
   # libFuzzer targets with ASan + UBSan (src/scripts/fuzz.sh).
   clang-14 libfuzzer-14-dev libclang-rt-14-dev
+  # The Python module (src/python) and its tests.
+  pybind11-dev python3-dev python3-numpy python3-pytest
 )
 if [[ "${1:-}" == "--bench" ]]; then
   packages+=(libembree-dev)

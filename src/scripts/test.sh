@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Sets up, builds once and runs every test: C++ formatting, all GoogleTest
 # cases in parallel through ctest, a brief fuzzing of every reader
-# (src/scripts/fuzz.sh), then the browser viewer's checks
+# (src/scripts/fuzz.sh), the Python module's pytest suite, then the browser viewer's checks
 # (src/scripts/web.sh installs and builds it): prettier, tsc, the Vitest unit
 # tests, and the end-to-end tests in headless Chromium (Debian's chromium,
 # installed here if missing) against a real `occlusion serve`.
@@ -15,6 +15,19 @@ ctest --test-dir "$build" -j "$(nproc)" --output-on-failure
 # Every reader under libFuzzer with ASan + UBSan, 15 s each (docs/fuzzing.md);
 # the outer limit keeps a stuck build or target from holding CI.
 FUZZ_SECONDS="${FUZZ_SECONDS:-15}" timeout --kill-after=20 1500 bash "$root/src/scripts/fuzz.sh"
+
+# Debian's interpreter, the one the module is built for (not a pyenv shim).
+if [[ ! -f "$build/python/occlusion/__init__.py" ]]; then
+  echo "test: the Python module was not built (is pybind11-dev installed?)" >&2
+  exit 1
+fi
+pytest_status=0
+PYTHONPATH="$build/python" /usr/bin/python3 -m pytest -q -p no:cacheprovider "$root/tests/python" ||
+  pytest_status=$?
+if ((pytest_status == 5)); then
+  echo "test: pytest collected no tests in tests/python" >&2
+fi
+((pytest_status == 0)) || exit "$pytest_status"
 
 bash "$root/src/scripts/web.sh"
 chromium="${CHROMIUM_PATH:-/usr/bin/chromium}"

@@ -51,6 +51,13 @@ const Keys<MeshOcclusionRequest>& mesh_occlusion_keys();
 MeshOcclusionReport run_mesh_occlusion(const MeshOcclusionRequest& request,
                                        const Progress& progress = {});
 
+// What run_mesh_occlusion computes once the mesh is loaded, for a mesh
+// already in memory; request.path names it in messages. Nothing is read or
+// written (request.out is not looked at).
+MeshOcclusionReport run_mesh_occlusion_on(const TriangleMesh& mesh,
+                                          const MeshOcclusionRequest& request,
+                                          const Progress& progress = {});
+
 // The report as one JSON object with the headline figure `occlusion_level`.
 Json::Value to_json(const MeshOcclusionReport& report);
 

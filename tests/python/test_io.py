@@ -1,0 +1,174 @@
+"""Readers and writers: round trips through every format, dtypes and shapes,
+real files from the shared data, and the error classification."""
+
+import pathlib
+
+import numpy as np
+import pytest
+
+import occlusion
+
+ROOT = pathlib.Path(__file__).resolve().parents[2]
+SHARED = ROOT.parent / "shared" / "data"
+
+
+def sample_cloud(rng, count=50):
+    return dict(
+        positions=rng.uniform(-5, 5, (count, 3)).astype(np.float32),
+        colours=rng.integers(0, 256, (count, 3)).astype(np.uint8),
+        labels=rng.integers(-1, 3, count).astype(np.int32),
+        instances=rng.integers(-1, 7, count).astype(np.int32),
+    )
+
+
+@pytest.mark.parametrize(
+    "name,fmt",
+    [
+        ("c.pcd", None),
+        ("c.pcd", "pcd_binary"),
+        ("c.pcd", "pcd_ascii"),
+        ("c.ply", None),
+        ("c.ply", "ply_ascii"),
+    ],
+)
+def test_cloud_round_trip(tmp_path, name, fmt):
+    rng = np.random.default_rng(7)
+    data = sample_cloud(rng)
+    intensity = rng.uniform(0, 1, 50).astype(np.float32)
+    ring = rng.integers(0, 16, 50)
+    path = str(tmp_path / name)
+    occlusion.write_cloud(
+        path,
+        data["positions"],
+        colours=data["colours"],
+        labels=data["labels"],
+        instances=data["instances"],
+        class_names=["wall", "floor", "chair"],
+        fields={"intensity": intensity, "ring": ring},
+        format=fmt,
+    )
+    cloud = occlusion.read_cloud(path)
+    assert len(cloud) == 50
+    assert cloud.positions.dtype == np.float32 and cloud.positions.shape == (50, 3)
+    assert cloud.colours.dtype == np.uint8 and cloud.colours.shape == (50, 3)
+    assert cloud.labels.dtype == np.int32 and cloud.instances.dtype == np.int32
+    np.testing.assert_array_equal(cloud.positions, data["positions"])
+    np.testing.assert_array_equal(cloud.colours, data["colours"])
+    np.testing.assert_array_equal(cloud.labels, data["labels"])
+    np.testing.assert_array_equal(cloud.instances, data["instances"])
+    assert cloud.class_names == ["wall", "floor", "chair"]
+    assert cloud.fields["intensity"].dtype == np.float32
+    np.testing.assert_array_equal(cloud.fields["intensity"], intensity)
+    assert cloud.fields["ring"].dtype == np.int32
+    np.testing.assert_array_equal(cloud.fields["ring"], ring)
+
+
+def test_cloud_without_attributes_has_none(tmp_path):
+    path = tmp_path / "c.txt"
+    path.write_text("0 0 0\n1 2 3\nnan 0 0\n")
+    cloud = occlusion.read_cloud(str(path))
+    np.testing.assert_array_equal(cloud.positions, [[0, 0, 0], [1, 2, 3]])
+    assert cloud.colours is None and cloud.labels is None and cloud.instances is None
+    assert cloud.dropped_nan == 1 and cloud.fields == {}
+
+
+def test_skip_bad_lines(tmp_path):
+    path = tmp_path / "c.txt"
+    path.write_text("0 0 0\n1 x 3\n2 2 2\n")
+    with pytest.raises(occlusion.InputError) as error:
+        occlusion.read_cloud(str(path))
+    assert error.value.line == 2
+    cloud = occlusion.read_cloud(str(path), skip_bad_lines=True)
+    assert len(cloud) == 2 and cloud.skipped_lines == 1
+
+
+@pytest.mark.skipif(not (SHARED / "room_scan1.pcd").exists(), reason="shared data absent")
+def test_real_scan_reads():
+    cloud = occlusion.read_cloud(str(SHARED / "room_scan1.pcd"))
+    assert cloud.positions.shape[1] == 3 and len(cloud) > 1000
+    assert np.isfinite(cloud.positions).all()
+
+
+def test_mesh_round_trip(tmp_path):
+    vertices = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0, 0, 1]], dtype=np.float64) / 3
+    faces = np.array([[0, 1, 2], [0, 2, 3], [0, 1, 4]])
+    path = str(tmp_path / "m.obj")
+    occlusion.write_obj(path, vertices, faces, face_group=[0, 0, 1], group_names=["floor", "wall"])
+    mesh = occlusion.read_mesh(path)
+    assert mesh.vertices.dtype == np.float64 and mesh.vertices.shape == (5, 3)
+    assert mesh.faces.dtype == np.uint32 and mesh.faces.shape == (3, 3)
+    np.testing.assert_array_equal(mesh.vertices, vertices)  # shortest round-trip decimals
+    np.testing.assert_array_equal(mesh.faces, faces)
+    np.testing.assert_array_equal(mesh.face_group, [0, 0, 1])
+    assert mesh.group_names == ["floor", "wall"]
+    ply = tmp_path / "m.ply"
+    occlusion.write_mesh_ply(str(ply), mesh.vertices, mesh.faces, [0.0, 0.5, 1.0])
+    assert ply.read_bytes().startswith(b"ply\n")
+    with pytest.raises(ValueError, match="face_values"):
+        occlusion.write_mesh_ply(str(ply), mesh.vertices, mesh.faces, [0.0, 0.5])
+
+
+def test_cornell_box_reads():
+    mesh = occlusion.read_mesh(str(ROOT / "files" / "cornell_box" / "CornellBox-Original.obj"))
+    assert mesh.faces.shape[1] == 3 and len(mesh.group_names) > 1
+    assert mesh.faces.max() < len(mesh.vertices)
+
+
+def test_labels_polygons_csv_round_trip(tmp_path):
+    labels = np.array([0, 1, 25, -1])
+    occlusion.write_labels(str(tmp_path / "p.labels"), labels)
+    read = occlusion.read_labels(str(tmp_path / "p.labels"))
+    assert read.dtype == np.int32
+    np.testing.assert_array_equal(read, labels)
+    assert occlusion.is_label_file(str(tmp_path / "p.labels"))
+
+    polygons = [np.array([[0, 0, 0], [1, 0, 0], [1, 0, 1.5]]), np.array([[0, 2, 0], [0, 3, 0], [0, 3, 1], [0, 2, 1]])]
+    occlusion.write_polygons(str(tmp_path / "o.txt"), polygons)
+    back = occlusion.read_polygons(str(tmp_path / "o.txt"))
+    assert len(back) == 2
+    for a, b in zip(back, polygons):
+        np.testing.assert_array_equal(a, b)
+
+    occlusion.write_csv(str(tmp_path / "t.csv"), ["a", "b"], [["1", "x,y"], ["2", 'q"']])
+    assert occlusion.read_csv(str(tmp_path / "t.csv")) == (["a", "b"], [["1", "x,y"], ["2", 'q"']])
+    assert occlusion.s3dis_class_names()[0] == "ceiling" and len(occlusion.s3dis_class_names()) == 13
+
+
+class TestErrors:
+    def test_missing_file_is_file_not_found(self, tmp_path):
+        missing = str(tmp_path / "nope.ply")
+        with pytest.raises(FileNotFoundError) as error:
+            occlusion.read_cloud(missing)
+        assert error.value.filename == missing
+        with pytest.raises(FileNotFoundError):
+            occlusion.read_mesh(str(tmp_path / "nope.obj"))
+
+    def test_malformed_file_names_file_and_line(self, tmp_path):
+        path = tmp_path / "bad.obj"
+        path.write_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n")
+        with pytest.raises(occlusion.InputError) as error:
+            occlusion.read_mesh(str(path))
+        e = error.value
+        assert isinstance(e, ValueError) and isinstance(e, OSError)
+        assert e.path == str(path) and e.filename == str(path) and e.line == 4
+        assert str(e).startswith(f"{path}:4: ")
+
+    def test_unwritable_output(self, tmp_path):
+        target = tmp_path / "dir.pcd"
+        target.mkdir()
+        with pytest.raises(occlusion.OutputError) as error:
+            occlusion.write_cloud(str(target / "x" / "c.pcd"), np.zeros((1, 3)))
+        assert isinstance(error.value, OSError)
+
+    def test_bad_arrays(self, tmp_path):
+        path = str(tmp_path / "c.ply")
+        with pytest.raises(ValueError, match="colours"):
+            occlusion.write_cloud(path, np.zeros((2, 3)), colours=np.full((2, 3), 300))
+        with pytest.raises(ValueError, match="labels"):
+            occlusion.write_cloud(path, np.zeros((2, 3)), labels=[-2, 0])
+        with pytest.raises(ValueError):
+            occlusion.write_cloud(path, np.zeros((2, 3)), labels=[0, 0, 0])
+        with pytest.raises(ValueError, match="format"):
+            occlusion.write_cloud(path, np.zeros((2, 3)), format="las")
+        with pytest.raises(ValueError, match="face_group"):
+            occlusion.write_obj(path + ".obj", np.eye(3), [[0, 1, 2]], face_group=[0])
