@@ -7,7 +7,8 @@
 //   OutputError  -> occlusion.OutputError(OSError) with path, reason
 //   Cancelled    -> KeyboardInterrupt (a job stopped by Ctrl-C re-raises the
 //                   interrupt itself; see interrupt.hpp)
-//   std::invalid_argument -> ValueError (pybind11's own mapping)
+//   std::invalid_argument -> occlusion.UsageError (a ValueError), as the CLI's exit 2
+//   std::bad_alloc -> MemoryError
 
 #include <pybind11/pybind11.h>
 
@@ -86,17 +87,32 @@ void bind_errors(py::module_& m) {
                           "An output that could not be written. Attributes: path (also "
                           "filename) and reason.");
 
+  // The app layer's one classification (app/errors.hpp) picks the Python type.
   py::register_exception_translator([](std::exception_ptr pointer) {
     try {
       if (pointer) std::rethrow_exception(pointer);
-    } catch (const UsageError& error) {
-      raise(usage_error_type, py::reinterpret_borrow<py::object>(usage_error_type)(error.what()));
-    } catch (const InputError& error) {
-      raise_input_error(error);
-    } catch (const OutputError& error) {
-      raise_output_error(error);
-    } catch (const Cancelled& error) {
-      PyErr_SetString(PyExc_KeyboardInterrupt, error.what());
+    } catch (const std::exception& error) {
+      switch (classify(error)) {
+        case ErrorKind::kUsage:
+          raise(usage_error_type,
+                py::reinterpret_borrow<py::object>(usage_error_type)(error.what()));
+          return;
+        case ErrorKind::kInput:
+          raise_input_error(dynamic_cast<const InputError&>(error));
+          return;
+        case ErrorKind::kOutput:
+          raise_output_error(dynamic_cast<const OutputError&>(error));
+          return;
+        case ErrorKind::kCancelled:
+          PyErr_SetString(PyExc_KeyboardInterrupt, error.what());
+          return;
+        case ErrorKind::kResource:
+          PyErr_SetString(PyExc_MemoryError, error.what());
+          return;
+        case ErrorKind::kInternal:
+          break;
+      }
+      throw;  // pybind11's own translation (RuntimeError and the standard ones)
     }
   });
 }

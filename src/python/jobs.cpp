@@ -23,6 +23,7 @@
 #include "occlusion/app/errors.hpp"
 #include "occlusion/app/evaluate_job.hpp"
 #include "occlusion/app/in_memory_jobs.hpp"
+#include "occlusion/app/job_registry.hpp"
 #include "occlusion/app/key.hpp"
 #include "occlusion/app/key_sources.hpp"
 #include "occlusion/app/mesh_occlusion_job.hpp"
@@ -239,9 +240,34 @@ constexpr const char* kKeysDoc =
     "naming it. progress(stage, fraction) is called now and then; Ctrl-C or an exception from "
     "progress stops the job.";
 
+// The job's keys, generated from their declarations: name, meaning, values, default.
+std::string keys_doc(const char* job_name) {
+  std::string text = std::string(kKeysDoc) + "\n\nKeys:\n";
+  for (const KeyInfo& info : find_job(job_name)->keys) {
+    text += "  " + info.name + ": " + info.doc + " (" + describe_values(info);
+    const std::string fallback = default_text(info);
+    if (!fallback.empty()) text += "; default " + fallback;
+    if (!info.unit.empty()) text += "; " + info.unit;
+    text += ")\n";
+  }
+  return text;
+}
+
 }  // namespace
 
 void bind_jobs(py::module_& m) {
+  m.def(
+      "keys",
+      [](const std::string& job_name) {
+        const JobInfo* job = find_job(job_name);
+        if (job == nullptr) throw UsageError("no job '" + job_name + "'");
+        py::list keys;
+        for (const KeyInfo& info : job->keys) keys.append(to_python(to_json(info)));
+        return keys;
+      },
+      py::arg("job"),
+      "The declared keys of a job (name, type, default, range, unit, doc), as the CLI's --help "
+      "and the server's hello publish them.");
   py::class_<JobResult>(m, "Result", R"doc(What a job returns.
 
 report: the JSON report as a dict, exactly what the CLI prints with --json.
@@ -270,7 +296,7 @@ result.occlusion_level, result.face_visible_fraction.)doc")
   m.def("mesh_occlusion", &mesh_occlusion, source, py::kw_only(), progress,
         (std::string("Occlusion of a mesh (-moc): an OBJ path or (vertices, faces).\n"
                      "arrays: face_visible_fraction float32 (M,).") +
-         kKeysDoc)
+         keys_doc("mesh_occlusion"))
             .c_str());
   m.def("cloud_occlusion", &cloud_occlusion, source, py::kw_only(), py::arg("labels") = py::none(),
         py::arg("class_names") = py::none(), progress,
@@ -278,33 +304,33 @@ result.occlusion_level, result.face_visible_fraction.)doc")
                      "Cloud (labels and class_names for exterior=True).\n"
                      "arrays: escape_directions, per viewpoint float32 (k, 3) (kept with "
                      "escape_directions=True).") +
-         kKeysDoc)
+         keys_doc("cloud_occlusion"))
             .c_str());
   m.def("scan", &scan, source, py::kw_only(), py::arg("labels") = py::none(),
         py::arg("class_names") = py::none(), progress,
         (std::string("The points the viewpoints see (-fscan): a path, points (N, 3) or a Cloud.\n"
                      "arrays: visible_count uint16 (N,) (viewpoints that see each point), mask "
                      "bool (N,) (seen by any).") +
-         kKeysDoc)
+         keys_doc("scan"))
             .c_str());
   m.def(
       "region_growing_occlusion", &region_growing_occlusion, source, py::kw_only(), progress,
       (std::string("Estimate a mesh by region growing, then its occlusion (-rgoc): a cloud path.\n"
                    "arrays: face_visible_fraction float32 (M,), point_cluster int32 (N,), "
                    "vertices float64 (V, 3), faces uint32 (M, 3), face_group uint32 (M,).") +
-       kKeysDoc)
+       keys_doc("region_growing_occlusion"))
           .c_str());
   m.def("evaluate", &evaluate, py::kw_only(), progress,
         (std::string("Score semantic segmentations (-eval): ground_truth=[paths], "
                      "predictions=[paths].\n"
                      "arrays: confusion uint64 (C, C + 1), rows ground truth, columns "
                      "prediction then 'other'; scene_confusions, one per scene.") +
-         kKeysDoc)
+         keys_doc("evaluate"))
             .c_str());
   m.def("reconstruct", &reconstruct, source, py::kw_only(), progress,
         (std::string("An S3DIS room or Area folder into one labelled cloud (-recon), written "
                      "to out (default '.').") +
-         kKeysDoc)
+         keys_doc("reconstruct"))
             .c_str());
 }
 
