@@ -24,7 +24,7 @@
 #include "occlusion/analysis/mesh_occlusion.hpp"
 #include "occlusion/analysis/mesh_sampling.hpp"
 #include "occlusion/analysis/viewpoints.hpp"
-#include "occlusion/core/octree.hpp"
+#include "occlusion/core/triangle_octree.hpp"
 #include "occlusion/io/obj_writer.hpp"
 #include "room_generator.hpp"
 

@@ -5,7 +5,7 @@
 #include <stdexcept>
 
 #include "analysis_support.hpp"
-#include "occlusion/core/octree.hpp"
+#include "occlusion/core/triangle_octree.hpp"
 
 namespace occlusion {
 

@@ -7,6 +7,7 @@
 
 #include "analysis_support.hpp"
 #include "occlusion/analysis/mesh_sampling.hpp"
+#include "occlusion/core/triangle_octree.hpp"
 
 namespace occlusion {
 

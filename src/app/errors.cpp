@@ -2,7 +2,7 @@
 
 #include <new>
 
-#include "occlusion/analysis/progress.hpp"
+#include "occlusion/core/progress.hpp"
 #include "occlusion/io/input_error.hpp"
 
 namespace occlusion {

@@ -7,6 +7,7 @@
 #include "occlusion/analysis/mesh_sampling.hpp"
 #include "occlusion/app/errors.hpp"
 #include "occlusion/core/parallel.hpp"
+#include "occlusion/core/triangle_octree.hpp"
 
 namespace occlusion {
 

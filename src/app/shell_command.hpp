@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "occlusion/analysis/progress.hpp"
+#include "occlusion/core/progress.hpp"
 
 namespace occlusion::job {
 

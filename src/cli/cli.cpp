@@ -7,8 +7,8 @@
 
 #include "commands.hpp"
 #include "interrupt.hpp"
-#include "occlusion/analysis/progress.hpp"
 #include "occlusion/app/errors.hpp"
+#include "occlusion/core/progress.hpp"
 
 namespace occlusion::cli {
 

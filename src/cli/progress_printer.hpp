@@ -1,5 +1,5 @@
 #pragma once
-#include "occlusion/analysis/progress.hpp"
+#include "occlusion/core/progress.hpp"
 
 namespace occlusion::cli {
 

@@ -1,3 +1,5 @@
+#include "occlusion/core/triangle_octree.hpp"
+
 #include "octree_impl.hpp"
 
 namespace occlusion {

@@ -17,8 +17,8 @@
 #include <string>
 
 #include "bindings.hpp"
-#include "occlusion/analysis/progress.hpp"
 #include "occlusion/app/errors.hpp"
+#include "occlusion/core/progress.hpp"
 #include "occlusion/io/input_error.hpp"
 
 namespace py = pybind11;

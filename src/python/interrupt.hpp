@@ -9,7 +9,7 @@
 #include <memory>
 #include <mutex>
 
-#include "occlusion/analysis/progress.hpp"
+#include "occlusion/core/progress.hpp"
 
 namespace occlusion::python {
 

@@ -20,9 +20,9 @@
 #include "numpy_views.hpp"
 #include "occlusion/app/json_output.hpp"
 #include "occlusion/core/mesh.hpp"
-#include "occlusion/core/octree.hpp"
 #include "occlusion/core/parallel.hpp"
 #include "occlusion/core/sphere_octree.hpp"
+#include "occlusion/core/triangle_octree.hpp"
 
 namespace py = pybind11;
 

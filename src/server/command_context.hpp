@@ -11,7 +11,7 @@
 #include <mutex>
 #include <vector>
 
-#include "occlusion/analysis/progress.hpp"
+#include "occlusion/core/progress.hpp"
 #include "occlusion/server/binary_frame.hpp"
 #include "outbox.hpp"
 #include "server_context.hpp"

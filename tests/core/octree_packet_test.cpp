@@ -13,10 +13,10 @@
 #include <numeric>
 #include <string>
 
-#include "occlusion/core/octree.hpp"
 #include "occlusion/core/random.hpp"
 #include "occlusion/core/sampling.hpp"
 #include "occlusion/core/sphere_octree.hpp"
+#include "occlusion/core/triangle_octree.hpp"
 #include "support/brute_force.hpp"
 
 namespace occlusion {

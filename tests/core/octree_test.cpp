@@ -1,4 +1,4 @@
-#include "occlusion/core/octree.hpp"
+#include "occlusion/core/triangle_octree.hpp"
 
 #include <gtest/gtest.h>
 

@@ -25,11 +25,11 @@
 #include <vector>
 
 #include "occlusion/analysis/field_of_view.hpp"
-#include "occlusion/analysis/progress.hpp"
 #include "occlusion/analysis/sphere_directions.hpp"
 #include "occlusion/core/octree.hpp"
 #include "occlusion/core/point_cloud.hpp"
 #include "occlusion/core/polygon.hpp"
+#include "occlusion/core/progress.hpp"
 #include "occlusion/core/ray.hpp"
 #include "occlusion/core/sphere_octree.hpp"
 

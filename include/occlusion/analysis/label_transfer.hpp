@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "occlusion/analysis/progress.hpp"
+#include "occlusion/core/progress.hpp"
 
 namespace occlusion {
 

@@ -25,9 +25,9 @@
 #include <string>
 #include <vector>
 
-#include "occlusion/analysis/progress.hpp"
 #include "occlusion/core/mesh.hpp"
 #include "occlusion/core/point_cloud.hpp"
+#include "occlusion/core/progress.hpp"
 
 namespace occlusion {
 

@@ -14,9 +14,9 @@
 #include <string>
 #include <vector>
 
-#include "occlusion/analysis/progress.hpp"
 #include "occlusion/core/mesh.hpp"
 #include "occlusion/core/octree.hpp"
+#include "occlusion/core/progress.hpp"
 #include "occlusion/core/ray.hpp"
 
 namespace occlusion {

@@ -5,8 +5,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "occlusion/analysis/progress.hpp"
 #include "occlusion/core/mesh.hpp"
+#include "occlusion/core/progress.hpp"
 
 namespace occlusion {
 

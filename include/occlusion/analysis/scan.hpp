@@ -17,9 +17,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "occlusion/analysis/progress.hpp"
 #include "occlusion/core/octree.hpp"
 #include "occlusion/core/point_cloud.hpp"
+#include "occlusion/core/progress.hpp"
 #include "occlusion/core/ray.hpp"
 #include "occlusion/core/sphere_octree.hpp"
 

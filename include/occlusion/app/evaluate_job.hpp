@@ -17,9 +17,9 @@
 
 #include "occlusion/analysis/class_mapping.hpp"
 #include "occlusion/analysis/confusion_matrix.hpp"
-#include "occlusion/analysis/progress.hpp"
 #include "occlusion/app/key.hpp"
 #include "occlusion/core/point_cloud.hpp"
+#include "occlusion/core/progress.hpp"
 
 namespace occlusion {
 

@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "occlusion/analysis/mesh_estimation.hpp"
-#include "occlusion/analysis/progress.hpp"
 #include "occlusion/app/key.hpp"
+#include "occlusion/core/progress.hpp"
 
 namespace occlusion {
 

@@ -5,12 +5,12 @@
 // openings read from request.polygon_path. request.path only names the data in
 // messages and reports. Nothing is written: UsageError when request.out is set.
 
-#include "occlusion/analysis/progress.hpp"
 #include "occlusion/app/cloud_occlusion_job.hpp"
 #include "occlusion/app/mesh_occlusion_job.hpp"
 #include "occlusion/app/scan_job.hpp"
 #include "occlusion/core/mesh.hpp"
 #include "occlusion/core/point_cloud.hpp"
+#include "occlusion/core/progress.hpp"
 
 namespace occlusion {
 

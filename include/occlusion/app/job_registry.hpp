@@ -12,9 +12,9 @@
 #include <typeindex>
 #include <vector>
 
-#include "occlusion/analysis/progress.hpp"
 #include "occlusion/app/key.hpp"
 #include "occlusion/app/key_sources.hpp"
+#include "occlusion/core/progress.hpp"
 
 namespace occlusion {
 

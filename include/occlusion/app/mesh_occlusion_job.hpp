@@ -11,9 +11,9 @@
 #include <vector>
 
 #include "occlusion/analysis/mesh_occlusion.hpp"
-#include "occlusion/analysis/progress.hpp"
 #include "occlusion/app/key.hpp"
 #include "occlusion/app/viewpoint_choice.hpp"
+#include "occlusion/core/progress.hpp"
 
 namespace occlusion {
 

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "occlusion/analysis/progress.hpp"
 #include "occlusion/app/key.hpp"
+#include "occlusion/core/progress.hpp"
 
 namespace occlusion {
 

@@ -12,9 +12,9 @@
 
 #include "occlusion/analysis/mesh_estimation.hpp"
 #include "occlusion/analysis/mesh_occlusion.hpp"
-#include "occlusion/analysis/progress.hpp"
 #include "occlusion/app/key.hpp"
 #include "occlusion/app/viewpoint_choice.hpp"
+#include "occlusion/core/progress.hpp"
 
 namespace occlusion {
 

@@ -27,10 +27,10 @@
 #include "occlusion/analysis/confusion_matrix.hpp"
 #include "occlusion/analysis/correlation.hpp"
 #include "occlusion/analysis/mesh_estimation.hpp"
-#include "occlusion/analysis/progress.hpp"
 #include "occlusion/app/cloud_occlusion_job.hpp"
 #include "occlusion/app/key.hpp"
 #include "occlusion/app/viewpoint_choice.hpp"
+#include "occlusion/core/progress.hpp"
 #include "occlusion/io/csv_file.hpp"
 
 namespace occlusion {

@@ -1,5 +1,6 @@
 #pragma once
-// A hand-built octree over primitives (triangles now, spheres later).
+// A hand-built octree over primitives: triangle_octree.hpp and sphere_octree.hpp
+// plug their shapes in.
 //
 // Construction: the root cell is the cube around all primitive centroids. A
 // cell is split at its centre into eight octants and each primitive goes to the
@@ -28,7 +29,6 @@
 #include "occlusion/core/aabb.hpp"
 #include "occlusion/core/hit.hpp"
 #include "occlusion/core/ray.hpp"
-#include "occlusion/core/triangle.hpp"
 
 namespace occlusion {
 
@@ -121,17 +121,5 @@ class Octree {
   OctreeStats stats_;
   OctreeTraversal traversal_ = OctreeTraversal::kAuto;  // resolved: never kAuto
 };
-
-// The kernel the triangle octree calls.
-inline std::optional<float> intersect_shape(const Ray& ray, float direction_length,
-                                            const PackedTriangle& tri) {
-  return intersect_triangle(ray, direction_length, tri);
-}
-
-using TriangleOctree = Octree<PackedTriangle>;
-extern template class Octree<PackedTriangle>;
-
-// Convenience: pack triangles for the octree.
-std::vector<PackedTriangle> pack_triangles(const std::vector<Triangle>& triangles);
 
 }  // namespace occlusion

@@ -1,6 +1,7 @@
 #pragma once
 // Progress reporting and cancellation for long analyses. The app layer turns
-// these into stderr lines (CLI) or rate-limited events (server).
+// these into stderr lines (CLI) or rate-limited events (server). It lives in
+// core so that every layer, readers included, can report progress and be cancelled.
 
 #include <atomic>
 #include <functional>

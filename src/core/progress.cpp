@@ -1,4 +1,4 @@
-#include "occlusion/analysis/progress.hpp"
+#include "occlusion/core/progress.hpp"
 
 namespace occlusion {
 

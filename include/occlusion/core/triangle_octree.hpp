@@ -1,0 +1,25 @@
+#pragma once
+// The octree over triangles: meshes as seen by shadow rays. A hit's primitive
+// id is the triangle's index in the construction vector.
+
+#include <optional>
+#include <vector>
+
+#include "occlusion/core/octree.hpp"
+#include "occlusion/core/triangle.hpp"
+
+namespace occlusion {
+
+// The kernel the triangle octree calls.
+inline std::optional<float> intersect_shape(const Ray& ray, float direction_length,
+                                            const PackedTriangle& tri) {
+  return intersect_triangle(ray, direction_length, tri);
+}
+
+using TriangleOctree = Octree<PackedTriangle>;
+extern template class Octree<PackedTriangle>;
+
+// Convenience: pack triangles for the octree.
+std::vector<PackedTriangle> pack_triangles(const std::vector<Triangle>& triangles);
+
+}  // namespace occlusion
