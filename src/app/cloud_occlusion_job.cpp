@@ -235,10 +235,7 @@ CloudOcclusionReport run_cloud_occlusion(const CloudOcclusionRequest& request,
         job::output_path(request.out, request.path, ".poc.escapes.csv");
     OutputSet outputs;
     write_escapes(outputs.add(escapes_path), report.result);
-    report.outputs = {json_path, escapes_path};
-    report.total_seconds = job::seconds_since(start);
-    job::write_json_report(outputs.add(json_path), to_json(report));
-    outputs.commit();
+    job::commit_outputs(outputs, report, json_path, {json_path, escapes_path}, start);
   }
   report.total_seconds = job::seconds_since(start);
   return report;
@@ -283,8 +280,7 @@ Json::Value to_json(const CloudOcclusionReport& report) {
   timings["trace_seconds"] = report.result.trace_seconds;
   timings["total_seconds"] = report.total_seconds;
   json["timings"] = timings;
-  json["outputs"] = to_json(report.outputs);
-  json["warnings"] = to_json(report.warnings);
+  job::add_outputs_and_warnings(report, json);
   return json;
 }
 

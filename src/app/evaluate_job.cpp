@@ -126,10 +126,7 @@ EvaluateReport run_evaluate(const EvaluateRequest& request, const Progress& prog
     OutputSet outputs;
     job::write_evaluation_csv(outputs.add(csv_path), report);
     job::write_evaluation_markdown(outputs.add(markdown_path), report);
-    report.outputs = {json_path, csv_path, markdown_path};
-    report.total_seconds = job::seconds_since(start);
-    job::write_json_report(outputs.add(json_path), to_json(report));
-    outputs.commit();
+    job::commit_outputs(outputs, report, json_path, {json_path, csv_path, markdown_path}, start);
   }
   report.total_seconds = job::seconds_since(start);
   return report;
@@ -212,8 +209,7 @@ Json::Value to_json(const EvaluateReport& report) {
   timings["transfer_seconds"] = report.transfer_seconds;
   timings["total_seconds"] = report.total_seconds;
   json["timings"] = timings;
-  json["outputs"] = to_json(report.outputs);
-  json["warnings"] = to_json(report.warnings);
+  job::add_outputs_and_warnings(report, json);
   return json;
 }
 

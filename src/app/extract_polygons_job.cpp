@@ -41,10 +41,7 @@ ExtractPolygonsReport run_extract_polygons(const ExtractPolygonsRequest& request
               "planes found by region growing in " + request.path);
     write_cloud(outputs.add(segmented_path), input.loaded.cloud,
                 {job::cluster_field(report.estimate)});
-    report.outputs = {json_path, obj_path, segmented_path};
-    report.total_seconds = job::seconds_since(start);
-    job::write_json_report(outputs.add(json_path), to_json(report));
-    outputs.commit();
+    job::commit_outputs(outputs, report, json_path, {json_path, obj_path, segmented_path}, start);
   }
   report.total_seconds = job::seconds_since(start);
   return report;
@@ -75,8 +72,7 @@ Json::Value to_json(const ExtractPolygonsReport& report) {
   job::add_estimation_timings(e, timings);
   timings["total_seconds"] = report.total_seconds;
   json["timings"] = timings;
-  json["outputs"] = to_json(report.outputs);
-  json["warnings"] = to_json(report.warnings);
+  job::add_outputs_and_warnings(report, json);
   return json;
 }
 

@@ -10,9 +10,11 @@
 #include "occlusion/analysis/point_spacing.hpp"
 #include "occlusion/analysis/scene_frame.hpp"
 #include "occlusion/analysis/up_axis.hpp"
+#include "occlusion/app/json_output.hpp"
 #include "occlusion/app/viewpoint_choice.hpp"
 #include "occlusion/core/mesh.hpp"
 #include "occlusion/core/point_cloud.hpp"
+#include "occlusion/io/atomic_file.hpp"
 
 namespace occlusion::job {
 
@@ -61,6 +63,24 @@ std::string cloud_extension(const std::string& format);
 
 // Writes a job's JSON report atomically.
 void write_json_report(const std::string& path, const Json::Value& json);
+
+// The end of every job that writes files: the JSON report last (it lists
+// them all, `paths`), then every output renamed into place at once.
+template <class Report>
+void commit_outputs(OutputSet& outputs, Report& report, const std::string& json_path,
+                    std::vector<std::string> paths, Clock::time_point start) {
+  report.outputs = std::move(paths);
+  report.total_seconds = seconds_since(start);
+  write_json_report(outputs.add(json_path), to_json(report));
+  outputs.commit();
+}
+
+// The end of every report: the files written and what the user should know.
+template <class Report>
+void add_outputs_and_warnings(const Report& report, Json::Value& json) {
+  json["outputs"] = to_json(report.outputs);
+  json["warnings"] = to_json(report.warnings);
+}
 
 // A cloud as the point-cloud jobs load it, with what reading dropped or skipped.
 struct LoadedCloud {

@@ -96,10 +96,7 @@ MeshOcclusionReport run_mesh_occlusion(const MeshOcclusionRequest& request,
     write_mesh_ply(outputs.add(ply_path), mesh, report.result.face_visible_fraction,
                    "visible_fraction");
     write_face_csv(outputs.add(csv_path), mesh, report);
-    report.outputs = {json_path, ply_path, csv_path};
-    report.total_seconds = job::seconds_since(start);
-    job::write_json_report(outputs.add(json_path), to_json(report));
-    outputs.commit();
+    job::commit_outputs(outputs, report, json_path, {json_path, ply_path, csv_path}, start);
   }
   report.total_seconds = job::seconds_since(start);
   return report;
@@ -153,8 +150,7 @@ Json::Value to_json(const MeshOcclusionReport& report) {
   timings["total_seconds"] = report.total_seconds;
   json["timings"] = timings;
 
-  json["outputs"] = to_json(report.outputs);
-  json["warnings"] = to_json(report.warnings);
+  job::add_outputs_and_warnings(report, json);
   return json;
 }
 

@@ -59,10 +59,7 @@ ReconstructReport run_reconstruct(const ReconstructRequest& request, const Progr
   const std::string json_path = job::output_path(request.out, request.path, ".recon.json");
   OutputSet outputs;
   write_cloud(outputs.add(cloud_path), cloud);
-  report.outputs = {cloud_path, json_path};
-  report.total_seconds = job::seconds_since(start);
-  job::write_json_report(outputs.add(json_path), to_json(report));
-  outputs.commit();
+  job::commit_outputs(outputs, report, json_path, {cloud_path, json_path}, start);
   progress("done", 1.0);
   return report;
 }
@@ -87,8 +84,7 @@ Json::Value to_json(const ReconstructReport& report) {
   json["skipped_lines"] = Json::UInt64(report.skipped_lines);
   json["format"] = report.request.format;
   json["parameters"] = parameters_json(reconstruct_keys(), report.request);
-  json["outputs"] = to_json(report.outputs);
-  json["warnings"] = to_json(report.warnings);
+  job::add_outputs_and_warnings(report, json);
   json["timings"]["total_seconds"] = report.total_seconds;
   return json;
 }

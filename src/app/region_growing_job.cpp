@@ -31,10 +31,8 @@ void write_outputs(const PointCloud& cloud, RegionGrowingReport& report,
   write_mesh_ply(outputs.add(ply_path), mesh, report.occlusion.face_visible_fraction,
                  "visible_fraction");
   write_cloud(outputs.add(segmented_path), cloud, {job::cluster_field(report.estimate)});
-  report.outputs = {json_path, obj_path, ply_path, segmented_path};
-  report.total_seconds = job::seconds_since(start);
-  job::write_json_report(outputs.add(json_path), to_json(report));
-  outputs.commit();
+  job::commit_outputs(outputs, report, json_path, {json_path, obj_path, ply_path, segmented_path},
+                      start);
 }
 
 Json::Value planes_json(const MeshEstimate& estimate, const MeshOcclusionResult& occlusion) {
@@ -145,8 +143,7 @@ Json::Value to_json(const RegionGrowingReport& report) {
   timings["total_seconds"] = report.total_seconds;
   json["timings"] = timings;
 
-  json["outputs"] = to_json(report.outputs);
-  json["warnings"] = to_json(report.warnings);
+  job::add_outputs_and_warnings(report, json);
   return json;
 }
 

@@ -117,10 +117,7 @@ ScanReport run_scan(const ScanRequest& request, const Progress& progress) {
     OutputSet outputs;
     write_cloud(outputs.add(scanned_path), cloud.subset(seen_points(report.result)));
     write_cloud(outputs.add(full_path), cloud, {visible_count});
-    report.outputs = {json_path, scanned_path, full_path};
-    report.total_seconds = job::seconds_since(start);
-    job::write_json_report(outputs.add(json_path), to_json(report));
-    outputs.commit();
+    job::commit_outputs(outputs, report, json_path, {json_path, scanned_path, full_path}, start);
   }
   report.total_seconds = job::seconds_since(start);
   return report;
@@ -176,8 +173,7 @@ Json::Value to_json(const ScanReport& report) {
   timings["trace_seconds"] = r.trace_seconds;
   timings["total_seconds"] = report.total_seconds;
   json["timings"] = timings;
-  json["outputs"] = to_json(report.outputs);
-  json["warnings"] = to_json(report.warnings);
+  job::add_outputs_and_warnings(report, json);
   return json;
 }
 

@@ -389,8 +389,7 @@ Json::Value to_json(const StudyReport& report) {
   Json::Value timings(Json::objectValue);
   timings["total_seconds"] = report.total_seconds;
   json["timings"] = timings;
-  json["outputs"] = to_json(report.outputs);
-  json["warnings"] = to_json(report.warnings);
+  job::add_outputs_and_warnings(report, json);
   return json;
 }
 

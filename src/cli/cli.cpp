@@ -46,9 +46,11 @@ int run(const std::vector<std::string>& args) {
   try {
     return run_command_line(args);
   } catch (const Cancelled&) {
-    // The job unwound and removed its temporary files: die as signalled.
+    // The job unwound and removed its temporary files: say so, then die of
+    // the signal that asked for it, as a signalled process should.
+    std::fprintf(stderr, "occlusion: cancelled\n");
     reraise_interrupt();
-    throw;
+    return exit_code(ErrorKind::kCancelled);
   }
 }
 

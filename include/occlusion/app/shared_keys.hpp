@@ -110,15 +110,21 @@ KeyBuilder<R> up_key(std::string R::*field) {
           "data");
 }
 
+// "auto" (held as a negative number): 2 x the point radius in use.
 template <class R>
 KeyBuilder<R> self_tolerance_key(double R::*field) {
-  return key("self_tolerance", field)
-      .at_least(-1)
-      .at_most(1e6)
+  return custom_key<R>(
+             "self_tolerance", ValueType::kNumber,
+             [field](R& r, const Json::Value& v) { r.*field = v.isString() ? -1.0 : v.asDouble(); },
+             [field](const R& r) {
+               return r.*field < 0.0 ? Json::Value("auto") : Json::Value(r.*field);
+             })
+      .range(0, 1e6)
+      .auto_allowed()
       .unit("scene units")
       .metavar("D")
       .doc(
-          "a point is seen if nothing blocks the ray closer than this to it; -1 = 2 x "
+          "a point is seen if nothing blocks the ray closer than this to it; auto: 2 x "
           "point_radius");
 }
 
