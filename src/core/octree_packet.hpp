@@ -10,7 +10,9 @@
 #include "occlusion/core/octree.hpp"
 #include "octree_slab.hpp"
 
-#if defined(__x86_64__) && defined(__SSE2__) && defined(__GNUC__)
+// Packets need GCC's per-function target pragmas; clang ignores them, so a
+// clang build (the libFuzzer targets) traces single rays only.
+#if defined(__x86_64__) && defined(__SSE2__) && defined(__GNUC__) && !defined(__clang__)
 #define OCCLUSION_PACKETS 1
 #include "octree_packet_lanes.hpp"
 #else
