@@ -118,6 +118,13 @@ class PcdCloudReader {
                          "field " + std::to_string(f + 1) + " has SIZE " +
                              std::to_string(sizes[f]) + "; PCD fields are 1, 2, 4 or 8 bytes");
       }
+      if (count == 0) {
+        // PCL's own parse indexes past such a field (std::out_of_range, not a message).
+        throw InputError(path_, 0,
+                         "field " + std::to_string(f + 1) +
+                             " has COUNT 0; a field holds at least "
+                             "one value");
+      }
       if (count > kMaxPcdFieldCount) {
         throw InputError(path_, 0,
                          "field " + std::to_string(f + 1) + " has COUNT " + std::to_string(count) +

@@ -42,6 +42,14 @@ TEST(PcdHeaderLimits, LargeCountInATinyFileIsRefused) {
                               "has COUNT 268435456, more than the 65536");
 }
 
+// fuzz_pcd_* finding: PCL's parse ran past a field of COUNT 0 (std::out_of_range).
+TEST(PcdHeaderLimits, ZeroCountIsAnInputError) {
+  testing::ScratchDirectory dir;
+  const std::string path = dir.file("zero.pcd");
+  testing::write_text(path, header("COUNT 0 1 1", "1", "1", "ascii") + "1 2 3\n");
+  testing::expect_input_error([&] { read_cloud(path); }, "zero.pcd", 0, "has COUNT 0");
+}
+
 TEST(PcdHeaderLimits, CountWithinTheLimitIsStillCheckedAgainstTheFile) {
   testing::ScratchDirectory dir;
   const std::string path = dir.file("count.pcd");
