@@ -12,6 +12,7 @@
 #include "io/cloud_test_support.hpp"
 #include "io/scratch_directory.hpp"
 #include "occlusion/io/cloud_io.hpp"
+#include "occlusion/io/input_error.hpp"
 
 namespace occlusion {
 namespace {
@@ -48,6 +49,18 @@ TEST(PcdHeaderLimits, ZeroCountIsAnInputError) {
   const std::string path = dir.file("zero.pcd");
   testing::write_text(path, header("COUNT 0 1 1", "1", "1", "ascii") + "1 2 3\n");
   testing::expect_input_error([&] { read_cloud(path); }, "zero.pcd", 0, "has COUNT 0");
+}
+
+// fuzz_pcd_* finding: FIELDS, SIZE and TYPE lines that disagree made PCL's
+// header parse throw std::out_of_range; it is an input error now.
+TEST(PcdHeaderLimits, FieldListsThatDisagreeAreAnInputError) {
+  testing::ScratchDirectory dir;
+  const std::string path = dir.file("lists.pcd");
+  testing::write_text(
+      path,
+      "# .PCD v0.7\nVERSION 0.7\nFIELDS x y\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 "
+      "1\nWIDTH 1\nHEIGHT 1\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS 1\nDATA ascii\n1 2 3\n");
+  EXPECT_THROW(read_cloud(path), InputError);
 }
 
 TEST(PcdHeaderLimits, CountWithinTheLimitIsStillCheckedAgainstTheFile) {
