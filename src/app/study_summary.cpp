@@ -89,8 +89,10 @@ std::string plot_title(const StudyReport& report) {
                       std::to_string(report.table.rows.size() - report.runs_failed) + " runs";
   if (p.isMember("point_radius")) {
     title += "; " + p["segmenter"].asString() + ", mIoU over " + p["mean_over"].asString() +
-             " classes, point radius " + format_number("%g", p["point_radius"].asDouble()) + ", " +
-             std::to_string(p["num_rays_per_vp"].asUInt64()) + " rays per viewpoint";
+             " classes, point radius " +
+             (p["point_radius"].isNumeric() ? format_number("%g", p["point_radius"].asDouble())
+                                            : p["point_radius"].asString()) +
+             ", " + std::to_string(p["num_rays_per_vp"].asUInt64()) + " rays per viewpoint";
   }
   return title + ")";
 }
