@@ -16,18 +16,25 @@ namespace occlusion::cli {
 
 namespace {
 
-using Printer = void (*)(const JobRun&, const FaceOptions&);
+// What the command line adds to each job: how its report reads to a person,
+// whether a completed run can still end with failures (the study's failed
+// runs), and whether it takes --confusion.
+struct JobFace {
+  void (*print)(const JobRun&, const FaceOptions&);
+  int (*exit_status)(const JobRun&) = nullptr;
+  bool takes_confusion = false;
+};
 
-const std::map<std::string, Printer>& printers() {
-  static const std::map<std::string, Printer> table = {
-      {"mesh_occlusion", &print_mesh_occlusion},
-      {"cloud_occlusion", &print_cloud_occlusion},
-      {"region_growing_occlusion", &print_region_growing},
-      {"scan", &print_scan},
-      {"reconstruct", &print_reconstruct},
-      {"evaluate", &print_evaluate},
-      {"extract_polygons", &print_extract_polygons},
-      {"study", &print_study},
+const std::map<std::string, JobFace>& job_faces() {
+  static const std::map<std::string, JobFace> table = {
+      {"mesh_occlusion", {&print_mesh_occlusion}},
+      {"cloud_occlusion", {&print_cloud_occlusion}},
+      {"region_growing_occlusion", {&print_region_growing}},
+      {"scan", {&print_scan}},
+      {"reconstruct", {&print_reconstruct}},
+      {"evaluate", {&print_evaluate, nullptr, true}},
+      {"extract_polygons", {&print_extract_polygons}},
+      {"study", {&print_study, &study_exit_status}},
   };
   return table;
 }
@@ -44,7 +51,7 @@ std::vector<std::string> take_face_options(const std::vector<std::string>& args,
       face.quiet = true;
     } else if (arg == "-h" || arg == "--help") {
       face.help = true;
-    } else if (arg == "--confusion" && job.name == "evaluate") {
+    } else if (arg == "--confusion" && job_faces().at(job.name).takes_confusion) {
       face.confusion = true;
     } else if (arg == "--config" || arg.rfind("--config=", 0) == 0) {
       if (!face.config.empty()) throw UsageError("--config given twice");
@@ -69,7 +76,7 @@ int run_job_command(const JobInfo& job, const std::vector<std::string>& args) {
   const std::vector<std::string> job_args = take_face_options(args, job, face);
   if (face.help) {
     std::printf("%s", job_help(job).c_str());
-    if (job.name == "evaluate") {
+    if (job_faces().at(job.name).takes_confusion) {
       std::printf(
           "  --confusion                 print the confusion matrix (the JSON always has it)\n");
     }
@@ -86,9 +93,10 @@ int run_job_command(const JobInfo& job, const std::vector<std::string>& args) {
   if (face.json) {
     print_json(run.json);
   } else {
-    printers().at(job.name)(run, face);
+    job_faces().at(job.name).print(run, face);
   }
-  return job.name == "study" ? study_exit_status(run) : 0;
+  const JobFace& job_face = job_faces().at(job.name);
+  return job_face.exit_status != nullptr ? job_face.exit_status(run) : 0;
 }
 
 }  // namespace occlusion::cli
