@@ -231,13 +231,13 @@ template <class Shape>
 template <bool kAnyHit>
 std::optional<Hit> Octree<Shape>::traverse(const Ray& query, PrimitiveId ignore_id) const {
   if (nodes_.empty() || !(query.t_min <= query.t_max)) return std::nullopt;
-  Ray ray = query;  // t_max shrinks as closer hits are found
-  const Eigen::Vector3f inv = safe_inverse(ray.direction);
-  const float direction_length = ray.direction.norm();
-  octree_detail::SlabRay slab(ray.origin, inv, ray.t_min, ray.t_max);
+  RayComponents<float> ray = ray_components(query);  // t_max shrinks as closer hits are found
+  const Eigen::Vector3f inv = safe_inverse(query.direction);
+  octree_detail::SlabRay slab(query.origin, inv, query.t_min, query.t_max);
   // The octant a ray enters first: lower half along an axis it travels up.
-  const int near_octant = (ray.direction.x() < 0.0f ? 1 : 0) | (ray.direction.y() < 0.0f ? 2 : 0) |
-                          (ray.direction.z() < 0.0f ? 4 : 0);
+  const int near_octant = (query.direction.x() < 0.0f ? 1 : 0) |
+                          (query.direction.y() < 0.0f ? 2 : 0) |
+                          (query.direction.z() < 0.0f ? 4 : 0);
 
   struct Entry {
     std::uint32_t index;
@@ -246,7 +246,7 @@ std::optional<Hit> Octree<Shape>::traverse(const Ray& query, PrimitiveId ignore_
   };
   Entry stack[octree_detail::kStackSize];
   std::size_t top = 0;
-  stack[top++] = {0, 0, ray.t_min};
+  stack[top++] = {0, 0, query.t_min};
   std::optional<Hit> best;
 
   while (top > 0) {
@@ -258,17 +258,17 @@ std::optional<Hit> Octree<Shape>::traverse(const Ray& query, PrimitiveId ignore_
       for (std::uint32_t i = entry.index; i < end; ++i) {
         const PrimitiveId id = ids_[i];
         if (id == ignore_id) continue;
-        const std::optional<float> t = intersect_shape(ray, direction_length, shapes_[i]);
-        if (!t) continue;
+        float t = 0.0f;
+        if (!shape_hit(ray, shapes_[i], true, t)) continue;
         if constexpr (kAnyHit) {
-          return Hit{*t, id};
+          return Hit{t, id};
         } else {
           // t <= t_max == best->t_hit here, so this takes a closer hit, and on a tie
           // the lower id: the answer does not depend on traversal order.
-          if (!best || *t < best->t_hit || id < best->primitive_id) {
-            best = Hit{*t, id};
-            ray.t_max = *t;
-            slab.set_t_max(*t);
+          if (!best || t < best->t_hit || id < best->primitive_id) {
+            best = Hit{t, id};
+            ray.t_max = t;
+            slab.set_t_max(t);
           }
         }
       }

@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "occlusion/core/octree.hpp"
+#include "occlusion/core/ray_lanes.hpp"
 #include "octree_slab.hpp"
 
 // Packets need GCC's per-function target pragmas; clang ignores them, so a

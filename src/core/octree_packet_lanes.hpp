@@ -8,6 +8,8 @@
 
 #include <immintrin.h>
 
+#include <cstdint>
+
 namespace occlusion::octree_detail {
 
 namespace packet_sse2 {
@@ -16,12 +18,15 @@ inline constexpr unsigned kLanes = 8;
 
 struct Lanes {
   __m128 a, b;  // lanes 0-3, 4-7
+  Lanes() = default;
+  Lanes(__m128 low, __m128 high) : a(low), b(high) {}
+  Lanes(float x) : a(_mm_set1_ps(x)), b(_mm_set1_ps(x)) {}  // NOLINT: broadcast, implicit
 };
 inline Lanes load(const float* p) {
   return {_mm_load_ps(p), _mm_load_ps(p + 4)};
 }
 inline Lanes broadcast(float x) {
-  return {_mm_set1_ps(x), _mm_set1_ps(x)};
+  return Lanes(x);
 }
 inline Lanes mul(Lanes x, Lanes y) {
   return {_mm_mul_ps(x.a, y.a), _mm_mul_ps(x.b, y.b)};
@@ -44,6 +49,49 @@ inline unsigned less_equal(Lanes x, Lanes y) {
   return static_cast<unsigned>(_mm_movemask_ps(_mm_cmple_ps(x.a, y.a)) |
                                (_mm_movemask_ps(_mm_cmple_ps(x.b, y.b)) << 4));
 }
+inline unsigned less(Lanes x, Lanes y) {
+  return static_cast<unsigned>(_mm_movemask_ps(_mm_cmplt_ps(x.a, y.a)) |
+                               (_mm_movemask_ps(_mm_cmplt_ps(x.b, y.b)) << 4));
+}
+inline Lanes add(Lanes x, Lanes y) {
+  return {_mm_add_ps(x.a, y.a), _mm_add_ps(x.b, y.b)};
+}
+inline Lanes div(Lanes x, Lanes y) {
+  return {_mm_div_ps(x.a, y.a), _mm_div_ps(x.b, y.b)};
+}
+inline Lanes sqrt(Lanes x) {
+  return {_mm_sqrt_ps(x.a), _mm_sqrt_ps(x.b)};
+}
+inline Lanes bit_and(Lanes x, Lanes y) {
+  return {_mm_and_ps(x.a, y.a), _mm_and_ps(x.b, y.b)};
+}
+inline Lanes bit_or(Lanes x, Lanes y) {
+  return {_mm_or_ps(x.a, y.a), _mm_or_ps(x.b, y.b)};
+}
+inline Lanes bit_xor(Lanes x, Lanes y) {
+  return {_mm_xor_ps(x.a, y.a), _mm_xor_ps(x.b, y.b)};
+}
+inline Lanes select(unsigned mask, Lanes if_set, Lanes if_clear) {
+  const __m128i bits = _mm_set_epi32(8, 4, 2, 1);
+  const __m128 low = _mm_castsi128_ps(
+      _mm_cmpeq_epi32(_mm_and_si128(_mm_set1_epi32(static_cast<int>(mask)), bits), bits));
+  const __m128 high = _mm_castsi128_ps(
+      _mm_cmpeq_epi32(_mm_and_si128(_mm_set1_epi32(static_cast<int>(mask >> 4)), bits), bits));
+  return {_mm_or_ps(_mm_and_ps(low, if_set.a), _mm_andnot_ps(low, if_clear.a)),
+          _mm_or_ps(_mm_and_ps(high, if_set.b), _mm_andnot_ps(high, if_clear.b))};
+}
+// Bit j set where ids[j] == id.
+inline unsigned equal_ids(const std::uint32_t* ids, std::uint32_t id) {
+  const __m128i target = _mm_set1_epi32(static_cast<int>(id));
+  const __m128i low =
+      _mm_cmpeq_epi32(_mm_loadu_si128(reinterpret_cast<const __m128i*>(ids)), target);
+  const __m128i high =
+      _mm_cmpeq_epi32(_mm_loadu_si128(reinterpret_cast<const __m128i*>(ids + 4)), target);
+  return static_cast<unsigned>(_mm_movemask_ps(_mm_castsi128_ps(low)) |
+                               (_mm_movemask_ps(_mm_castsi128_ps(high)) << 4));
+}
+
+#include "octree_lane_operators.inc"
 
 }  // namespace packet_sse2
 
@@ -58,12 +106,15 @@ inline constexpr unsigned kLanes = 8;
 // compiled with -ffp-contract=off (CMakeLists.txt) to keep GCC from fusing.
 struct Lanes {
   __m256 v;
+  Lanes() = default;
+  Lanes(__m256 x) : v(x) {}                 // NOLINT: implicit
+  Lanes(float x) : v(_mm256_set1_ps(x)) {}  // NOLINT: broadcast, implicit
 };
 inline Lanes load(const float* p) {
   return {_mm256_load_ps(p)};
 }
 inline Lanes broadcast(float x) {
-  return {_mm256_set1_ps(x)};
+  return Lanes(x);
 }
 inline Lanes mul(Lanes x, Lanes y) {
   return {_mm256_mul_ps(x.v, y.v)};
@@ -83,6 +134,41 @@ inline void store(float* p, Lanes x) {
 inline unsigned less_equal(Lanes x, Lanes y) {
   return static_cast<unsigned>(_mm256_movemask_ps(_mm256_cmp_ps(x.v, y.v, _CMP_LE_OQ)));
 }
+inline unsigned less(Lanes x, Lanes y) {
+  return static_cast<unsigned>(_mm256_movemask_ps(_mm256_cmp_ps(x.v, y.v, _CMP_LT_OQ)));
+}
+inline Lanes add(Lanes x, Lanes y) {
+  return {_mm256_add_ps(x.v, y.v)};
+}
+inline Lanes div(Lanes x, Lanes y) {
+  return {_mm256_div_ps(x.v, y.v)};
+}
+inline Lanes sqrt(Lanes x) {
+  return {_mm256_sqrt_ps(x.v)};
+}
+inline Lanes bit_and(Lanes x, Lanes y) {
+  return {_mm256_and_ps(x.v, y.v)};
+}
+inline Lanes bit_or(Lanes x, Lanes y) {
+  return {_mm256_or_ps(x.v, y.v)};
+}
+inline Lanes bit_xor(Lanes x, Lanes y) {
+  return {_mm256_xor_ps(x.v, y.v)};
+}
+inline Lanes select(unsigned mask, Lanes if_set, Lanes if_clear) {
+  const __m256i bits = _mm256_set_epi32(128, 64, 32, 16, 8, 4, 2, 1);
+  const __m256i set =
+      _mm256_cmpeq_epi32(_mm256_and_si256(_mm256_set1_epi32(static_cast<int>(mask)), bits), bits);
+  return {_mm256_blendv_ps(if_clear.v, if_set.v, _mm256_castsi256_ps(set))};
+}
+inline unsigned equal_ids(const std::uint32_t* ids, std::uint32_t id) {
+  const __m256i equal =
+      _mm256_cmpeq_epi32(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(ids)),
+                         _mm256_set1_epi32(static_cast<int>(id)));
+  return static_cast<unsigned>(_mm256_movemask_ps(_mm256_castsi256_ps(equal)));
+}
+
+#include "octree_lane_operators.inc"
 
 }  // namespace packet_avx2
 #pragma GCC pop_options
@@ -95,12 +181,15 @@ inline constexpr unsigned kLanes = 16;
 
 struct Lanes {
   __m512 v;
+  Lanes() = default;
+  Lanes(__m512 x) : v(x) {}                 // NOLINT: implicit
+  Lanes(float x) : v(_mm512_set1_ps(x)) {}  // NOLINT: broadcast, implicit
 };
 inline Lanes load(const float* p) {
   return {_mm512_load_ps(p)};
 }
 inline Lanes broadcast(float x) {
-  return {_mm512_set1_ps(x)};
+  return Lanes(x);
 }
 inline Lanes mul(Lanes x, Lanes y) {
   return {_mm512_mul_ps(x.v, y.v)};
@@ -120,6 +209,39 @@ inline void store(float* p, Lanes x) {
 inline unsigned less_equal(Lanes x, Lanes y) {
   return static_cast<unsigned>(_mm512_cmp_ps_mask(x.v, y.v, _CMP_LE_OQ));
 }
+inline unsigned less(Lanes x, Lanes y) {
+  return static_cast<unsigned>(_mm512_cmp_ps_mask(x.v, y.v, _CMP_LT_OQ));
+}
+inline Lanes add(Lanes x, Lanes y) {
+  return {_mm512_add_ps(x.v, y.v)};
+}
+inline Lanes div(Lanes x, Lanes y) {
+  return {_mm512_div_ps(x.v, y.v)};
+}
+inline Lanes sqrt(Lanes x) {
+  return {_mm512_sqrt_ps(x.v)};
+}
+// AVX512F has no float logic (that is AVX512DQ): through the integer view.
+inline Lanes bit_and(Lanes x, Lanes y) {
+  return {
+      _mm512_castsi512_ps(_mm512_and_si512(_mm512_castps_si512(x.v), _mm512_castps_si512(y.v)))};
+}
+inline Lanes bit_or(Lanes x, Lanes y) {
+  return {_mm512_castsi512_ps(_mm512_or_si512(_mm512_castps_si512(x.v), _mm512_castps_si512(y.v)))};
+}
+inline Lanes bit_xor(Lanes x, Lanes y) {
+  return {
+      _mm512_castsi512_ps(_mm512_xor_si512(_mm512_castps_si512(x.v), _mm512_castps_si512(y.v)))};
+}
+inline Lanes select(unsigned mask, Lanes if_set, Lanes if_clear) {
+  return {_mm512_mask_blend_ps(static_cast<__mmask16>(mask), if_clear.v, if_set.v)};
+}
+inline unsigned equal_ids(const std::uint32_t* ids, std::uint32_t id) {
+  return static_cast<unsigned>(
+      _mm512_cmpeq_epi32_mask(_mm512_loadu_si512(ids), _mm512_set1_epi32(static_cast<int>(id))));
+}
+
+#include "octree_lane_operators.inc"
 
 }  // namespace packet_avx512
 #pragma GCC pop_options

@@ -1,6 +1,6 @@
 #pragma once
 // The reference the octree is checked against: every shape, in order, with
-// the same kernel (intersect_shape) and the same tie rule (equal t: lower id).
+// the same kernel (shape_hit) and the same tie rule (equal t: lower id).
 
 #include <optional>
 #include <vector>
@@ -14,15 +14,14 @@ namespace occlusion::testing {
 template <class Shape>
 std::optional<Hit> brute_force_intersect(const std::vector<Shape>& shapes, const Ray& query,
                                          PrimitiveId ignore_id = kNoPrimitive) {
-  Ray ray = query;
-  const float length = ray.direction.norm();
+  RayComponents<float> ray = ray_components(query);
   std::optional<Hit> best;
   for (PrimitiveId id = 0; id < shapes.size(); ++id) {
     if (id == ignore_id) continue;
-    const auto t = intersect_shape(ray, length, shapes[id]);
-    if (t && (!best || *t < best->t_hit)) {
-      best = Hit{*t, id};
-      ray.t_max = *t;
+    float t = 0.0f;
+    if (shape_hit(ray, shapes[id], true, t) && (!best || t < best->t_hit)) {
+      best = Hit{t, id};
+      ray.t_max = t;
     }
   }
   return best;

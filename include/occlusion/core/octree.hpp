@@ -82,8 +82,9 @@ struct alignas(64) OctreeNode {
 };
 
 // Shape must provide bounds() -> Aabb and centroid() -> Eigen::Vector3f, and a
-// free function intersect_shape(const Ray&, float direction_length, const Shape&)
-// -> std::optional<float> following the rules above.
+// free function template shape_hit(const RayComponents<Num>&, const Shape&,
+// Mask active, Num& t_hit) -> Mask following the rules above, for one ray
+// (Num = float) and for packets (ray_lanes.hpp).
 template <class Shape>
 class Octree {
  public:

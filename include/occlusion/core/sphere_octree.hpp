@@ -11,9 +11,10 @@
 namespace occlusion {
 
 // The kernel the sphere octree calls.
-inline std::optional<float> intersect_shape(const Ray& ray, float direction_length,
-                                            const Sphere& sphere) {
-  return intersect_sphere(ray, direction_length, sphere);
+template <class Num, class Mask>
+inline Mask shape_hit(const RayComponents<Num>& ray, const Sphere& sphere, Mask active,
+                      Num& t_hit) {
+  return sphere_hit(ray, sphere, active, t_hit);
 }
 
 // Leaves of up to 16 points: a dense cloud puts many spheres along any ray,

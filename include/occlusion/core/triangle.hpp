@@ -20,6 +20,7 @@
 
 #include "occlusion/core/aabb.hpp"
 #include "occlusion/core/ray.hpp"
+#include "occlusion/core/ray_lanes.hpp"
 
 namespace occlusion {
 
@@ -49,35 +50,57 @@ struct PackedTriangle {
 // about the float rounding of the determinant itself.
 inline constexpr float kParallelTolerance = 1e-7f;
 
-// Möller–Trumbore. Returns the hit parameter t, or nothing, under the rules above.
-// `direction_length` is ray.direction.norm(), passed in so that a traversal
-// computes it once per ray, not once per triangle. Inline: it is the octree's
-// leaf test.
-inline std::optional<float> intersect_triangle(const Ray& ray, float direction_length,
-                                               const PackedTriangle& tri) {
+// Möller–Trumbore under the rules above, for one ray (Num = float) or a packet
+// (ray_lanes.hpp). `active` says which rays to test; returns those that hit,
+// with their hit parameter in `t_hit` (unspecified for the others). Inline: it
+// is the octree's leaf test.
+template <class Num, class Mask>
+inline Mask triangle_hit(const RayComponents<Num>& ray, const PackedTriangle& tri, Mask active,
+                         Num& t_hit) {
+  // Unqualified below: a lane type brings its own through argument lookup.
+  using lane_math::abs, lane_math::dot3, lane_math::select, lane_math::sign_of, lane_math::sqrt;
   // det = e1 . (d x e2) = -(d . n), using the stored normal.
-  const float det = -ray.direction.dot(tri.normal);
-  if (!(std::abs(det) > kParallelTolerance * direction_length * tri.normal_length)) {
-    return std::nullopt;  // parallel to the plane, or a degenerate triangle (n = 0)
-  }
+  const Num det = -dot3(ray.direction_x, ray.direction_y, ray.direction_z, Num(tri.normal.x()),
+                        Num(tri.normal.y()), Num(tri.normal.z()));
+  // Parallel to the plane, or a degenerate triangle (n = 0): no hit.
+  active = active & (abs(det) > kParallelTolerance * ray.length * tri.normal_length);
+  if (!active) return active;
   // Barycentric tests on values scaled by |det|, so that the division is paid
   // only by rays that do cross the triangle's interior or boundary.
-  const float sign = det > 0.0f ? 1.0f : -1.0f;
-  const float abs_det = det * sign;
-  const Eigen::Vector3f s = ray.origin - tri.v0;
-  const Eigen::Vector3f p = ray.direction.cross(tri.e2);
-  const float u_scaled = s.dot(p) * sign;
-  if (u_scaled < 0.0f || u_scaled > abs_det) return std::nullopt;
-  const Eigen::Vector3f q = s.cross(tri.e1);
-  const float v_scaled = ray.direction.dot(q) * sign;
-  if (v_scaled < 0.0f || u_scaled + v_scaled > abs_det) return std::nullopt;
-  const float t = tri.e2.dot(q) / det;
-  if (t < ray.t_min || t > ray.t_max) return std::nullopt;
-  return t;
+  const Num sign = sign_of(det);
+  const Num abs_det = det * sign;
+  const Num s_x = ray.origin_x - tri.v0.x();
+  const Num s_y = ray.origin_y - tri.v0.y();
+  const Num s_z = ray.origin_z - tri.v0.z();
+  // p = d x e2
+  const Num p_x = ray.direction_y * tri.e2.z() - ray.direction_z * tri.e2.y();
+  const Num p_y = ray.direction_z * tri.e2.x() - ray.direction_x * tri.e2.z();
+  const Num p_z = ray.direction_x * tri.e2.y() - ray.direction_y * tri.e2.x();
+  const Num u_scaled = dot3(s_x, s_y, s_z, p_x, p_y, p_z) * sign;
+  active = active & (u_scaled >= 0.0f) & (u_scaled <= abs_det);
+  if (!active) return active;
+  // q = s x e1
+  const Num q_x = s_y * tri.e1.z() - s_z * tri.e1.y();
+  const Num q_y = s_z * tri.e1.x() - s_x * tri.e1.z();
+  const Num q_z = s_x * tri.e1.y() - s_y * tri.e1.x();
+  const Num v_scaled =
+      dot3(ray.direction_x, ray.direction_y, ray.direction_z, q_x, q_y, q_z) * sign;
+  active = active & (v_scaled >= 0.0f) & (u_scaled + v_scaled <= abs_det);
+  if (!active) return active;
+  t_hit = dot3(Num(tri.e2.x()), Num(tri.e2.y()), Num(tri.e2.z()), q_x, q_y, q_z) / det;
+  return active & (t_hit >= ray.t_min) & (t_hit <= ray.t_max);
+}
+
+// One ray: the hit parameter t, or nothing.
+inline std::optional<float> intersect_triangle(const RayComponents<float>& ray,
+                                               const PackedTriangle& tri) {
+  float t = 0.0f;
+  if (triangle_hit(ray, tri, true, t)) return t;
+  return std::nullopt;
 }
 
 inline std::optional<float> intersect_triangle(const Ray& ray, const Triangle& tri) {
-  return intersect_triangle(ray, ray.direction.norm(), PackedTriangle(tri));
+  return intersect_triangle(ray_components(ray), PackedTriangle(tri));
 }
 
 }  // namespace occlusion

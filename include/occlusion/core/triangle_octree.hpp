@@ -11,9 +11,10 @@
 namespace occlusion {
 
 // The kernel the triangle octree calls.
-inline std::optional<float> intersect_shape(const Ray& ray, float direction_length,
-                                            const PackedTriangle& tri) {
-  return intersect_triangle(ray, direction_length, tri);
+template <class Num, class Mask>
+inline Mask shape_hit(const RayComponents<Num>& ray, const PackedTriangle& tri, Mask active,
+                      Num& t_hit) {
+  return triangle_hit(ray, tri, active, t_hit);
 }
 
 using TriangleOctree = Octree<PackedTriangle>;
