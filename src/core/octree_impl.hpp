@@ -338,7 +338,11 @@ void Octree<Shape>::trace_batch(const Ray* rays, std::size_t count, const Primit
   }
 #if OCCLUSION_PACKETS
   octree_detail::TreeView<Shape> view;
-  if (!nodes_.empty()) view = {nodes_.data(), shapes_.data(), ids_.data()};
+  if (!nodes_.empty()) {
+    view = {nodes_.data(), shapes_.data(), ids_.data(),
+            std::max(pad_box(bounds_).lo.cwiseAbs().maxCoeff(),
+                     pad_box(bounds_).hi.cwiseAbs().maxCoeff())};
+  }
   const octree_detail::PacketQuery query{rays, ignore_ids, hits, occluded_out};
   parallel_for(count, octree_detail::kBatchGrain, threads, [&](std::size_t b, std::size_t e) {
     thread_local std::vector<std::uint32_t> order, scratch;
