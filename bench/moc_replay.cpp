@@ -16,8 +16,9 @@ ShadowRays make_shadow_rays(const MeshSamples& samples,
   out.rays.reserve(out.samples * out.viewpoints);
   out.ignore.reserve(out.rays.capacity());
   out.slot.reserve(out.rays.capacity());
-  for (std::size_t s = 0; s < out.samples; ++s) {
-    for (std::size_t v = 0; v < out.viewpoints; ++v) {
+  // Viewpoint by viewpoint, as compute_mesh_occlusion casts them.
+  for (std::size_t v = 0; v < out.viewpoints; ++v) {
+    for (std::size_t s = 0; s < out.samples; ++s) {
       Ray ray;
       if (!mesh_shadow_ray(samples.points[s], viewpoints[v], epsilon, ray)) continue;
       out.rays.push_back(ray);

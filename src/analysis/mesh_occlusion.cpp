@@ -38,22 +38,22 @@ double mesh_shadow_epsilon(const TriangleMesh& mesh, const MeshOcclusionOptions&
 
 bool mesh_shadow_ray(const Eigen::Vector3d& sample, const Eigen::Vector3d& viewpoint,
                      double epsilon, Ray& ray, double reach) {
-  Eigen::Vector3d direction = viewpoint - sample;
-  const double length = direction.norm();
+  const double length = (viewpoint - sample).norm();
   if (length <= 2.0 * epsilon) return false;
-  ray.origin = sample.cast<float>();
-  ray.t_min = static_cast<float>(epsilon / length);
   if (length > reach) {
-    // Nothing lies beyond `reach`: the same ray, cut there, keeps float's
-    // precision (a viewpoint at 1e20 made the ray tests overflow and see
-    // through walls), and no tolerance is needed at its far end.
-    direction *= reach / length;
+    // Nothing lies beyond `reach`: the same segment from the sample, cut
+    // there, keeps float's precision (a viewpoint at 1e20 made the ray tests
+    // overflow and see through walls), and no tolerance is needed at its far end.
+    ray.origin = sample.cast<float>();
+    ray.direction = ((viewpoint - sample) * (reach / length)).cast<float>();
     ray.t_min = static_cast<float>(epsilon / reach);
     ray.t_max = 1.0f;
-  } else {
-    ray.t_max = static_cast<float>(1.0 - epsilon / length);
+    return true;
   }
-  ray.direction = direction.cast<float>();
+  ray.origin = viewpoint.cast<float>();
+  ray.direction = (sample - viewpoint).cast<float>();
+  ray.t_min = static_cast<float>(epsilon / length);
+  ray.t_max = static_cast<float>(1.0 - epsilon / length);
   return true;
 }
 
@@ -119,28 +119,32 @@ MeshOcclusionResult compute_mesh_occlusion(const TriangleMesh& mesh,
   std::vector<std::size_t> slot;
   std::vector<std::uint8_t> blocked;
   progress("tracing", 0.0);
-  for (std::size_t block = 0; block < ray_count; block += kRaysPerBlock) {
-    const std::size_t block_end = std::min(ray_count, block + kRaysPerBlock);
+  const std::size_t samples_per_block = std::max<std::size_t>(1, kRaysPerBlock / view_count);
+  for (std::size_t first = 0; first < samples.size(); first += samples_per_block) {
+    const std::size_t last = std::min(samples.size(), first + samples_per_block);
     rays.clear();
     ignore.clear();
     slot.clear();
-    for (std::size_t r = block; r < block_end; ++r) {
-      const std::size_t s = r / view_count;
-      Ray ray;
-      if (!mesh_shadow_ray(samples.points[s] - origin, local_viewpoints[r % view_count], epsilon,
-                           ray, reach)) {
-        seen[r] = 1;
-        continue;
+    // A viewpoint's rays together: they share an origin, so they trace as packets.
+    for (std::size_t v = 0; v < view_count; ++v) {
+      for (std::size_t s = first; s < last; ++s) {
+        const std::size_t r = s * view_count + v;
+        Ray ray;
+        if (!mesh_shadow_ray(samples.points[s] - origin, local_viewpoints[v], epsilon, ray,
+                             reach)) {
+          seen[r] = 1;
+          continue;
+        }
+        rays.push_back(ray);
+        ignore.push_back(samples.face[s]);
+        slot.push_back(r);
       }
-      rays.push_back(ray);
-      ignore.push_back(samples.face[s]);
-      slot.push_back(r);
     }
     blocked.resize(rays.size());
     tree.occluded_batch(rays.data(), rays.size(), ignore.data(), blocked.data(), options.threads);
     for (std::size_t i = 0; i < rays.size(); ++i) seen[slot[i]] = blocked[i] ? 0 : 1;
     progress.check_cancel();
-    progress("tracing", static_cast<double>(block_end) / static_cast<double>(ray_count));
+    progress("tracing", static_cast<double>(last) / static_cast<double>(samples.size()));
   }
   result.timings.trace_seconds = seconds_since(start);
 

@@ -11,6 +11,7 @@
 #include "occlusion/core/octree.hpp"
 #include "occlusion/core/parallel.hpp"
 #include "octree_packet.hpp"
+#include "octree_single_ray.hpp"
 #include "octree_slab.hpp"
 #include "ray_order.hpp"
 
@@ -231,67 +232,16 @@ template <class Shape>
 template <bool kAnyHit>
 std::optional<Hit> Octree<Shape>::traverse(const Ray& query, PrimitiveId ignore_id) const {
   if (nodes_.empty() || !(query.t_min <= query.t_max)) return std::nullopt;
-  RayComponents<float> ray = ray_components(query);  // t_max shrinks as closer hits are found
-  const Eigen::Vector3f inv = safe_inverse(query.direction);
-  octree_detail::SlabRay slab(query.origin, inv, query.t_min, query.t_max);
-  // The octant a ray enters first: lower half along an axis it travels up.
-  const int near_octant = (query.direction.x() < 0.0f ? 1 : 0) |
-                          (query.direction.y() < 0.0f ? 2 : 0) |
-                          (query.direction.z() < 0.0f ? 4 : 0);
+  return octree_detail::trace_single_ray<Shape, kAnyHit>(
+      view(), ray_components(query), safe_inverse(query.direction), ignore_id, 0, std::nullopt);
+}
 
-  struct Entry {
-    std::uint32_t index;
-    std::uint32_t count;  // 0 = inner node
-    float t_enter;
-  };
-  Entry stack[octree_detail::kStackSize];
-  std::size_t top = 0;
-  stack[top++] = {0, 0, query.t_min};
-  std::optional<Hit> best;
-
-  while (top > 0) {
-    const Entry entry = stack[--top];
-    // Only a closest-hit query shrinks t_max below what a child was pushed with.
-    if (!kAnyHit && entry.t_enter > ray.t_max) continue;
-    if (entry.count > 0) {
-      const std::uint32_t end = entry.index + entry.count;
-      for (std::uint32_t i = entry.index; i < end; ++i) {
-        const PrimitiveId id = ids_[i];
-        if (id == ignore_id) continue;
-        float t = 0.0f;
-        if (!shape_hit(ray, shapes_[i], true, t)) continue;
-        if constexpr (kAnyHit) {
-          return Hit{t, id};
-        } else {
-          // t <= t_max == best->t_hit here, so this takes a closer hit, and on a tie
-          // the lower id: the answer does not depend on traversal order.
-          if (!best || t < best->t_hit || id < best->primitive_id) {
-            best = Hit{t, id};
-            ray.t_max = t;
-            slab.set_t_max(t);
-          }
-        }
-      }
-      continue;
-    }
-
-    const OctreeNode& node = nodes_[entry.index];
-    // All eight slots in one fixed-length loop the compiler can vectorise;
-    // empty slots are masked out with `occupied` below.
-    float t_near[8];
-    std::uint32_t hit_mask = octree_detail::slab_test_8(node, slab, t_near);
-    hit_mask &= node.occupied;
-    // Push farthest first so that the nearest is popped next: relabel slot k as
-    // k ^ near_octant (front-to-back rank) and push from the highest rank down.
-    std::uint32_t ranked = octree_detail::kRankedMask[near_octant][hit_mask];
-    while (ranked != 0) {
-      const int rank = 31 - __builtin_clz(ranked);
-      ranked &= ~(1u << rank);
-      const int k = rank ^ near_octant;
-      stack[top++] = Entry{node.index[k], node.count[k], t_near[k]};
-    }
-  }
-  return best;
+template <class Shape>
+octree_detail::TreeView<Shape> Octree<Shape>::view() const {
+  if (nodes_.empty()) return {};
+  const Aabb padded = pad_box(bounds_);
+  return {nodes_.data(), shapes_.data(), ids_.data(),
+          std::max(padded.lo.cwiseAbs().maxCoeff(), padded.hi.cwiseAbs().maxCoeff())};
 }
 
 template <class Shape>
@@ -337,12 +287,7 @@ void Octree<Shape>::trace_batch(const Ray* rays, std::size_t count, const Primit
     return;
   }
 #if OCCLUSION_PACKETS
-  octree_detail::TreeView<Shape> view;
-  if (!nodes_.empty()) {
-    view = {nodes_.data(), shapes_.data(), ids_.data(),
-            std::max(pad_box(bounds_).lo.cwiseAbs().maxCoeff(),
-                     pad_box(bounds_).hi.cwiseAbs().maxCoeff())};
-  }
+  const octree_detail::TreeView<Shape> tree = view();
   const octree_detail::PacketQuery query{rays, ignore_ids, hits, occluded_out};
   parallel_for(count, octree_detail::kBatchGrain, threads, [&](std::size_t b, std::size_t e) {
     thread_local std::vector<std::uint32_t> order, scratch;
@@ -353,13 +298,13 @@ void Octree<Shape>::trace_batch(const Ray* rays, std::size_t count, const Primit
       order_by_direction(rays, window, window_end, order.data(), scratch);
       switch (traversal_) {
         case OctreeTraversal::kPacketAvx512:
-          octree_detail::packet_avx512::trace_packets<Shape, kAnyHit>(view, query, order.data(), n);
+          octree_detail::packet_avx512::trace_packets<Shape, kAnyHit>(tree, query, order.data(), n);
           break;
         case OctreeTraversal::kPacketAvx2:
-          octree_detail::packet_avx2::trace_packets<Shape, kAnyHit>(view, query, order.data(), n);
+          octree_detail::packet_avx2::trace_packets<Shape, kAnyHit>(tree, query, order.data(), n);
           break;
         default:
-          octree_detail::packet_sse2::trace_packets<Shape, kAnyHit>(view, query, order.data(), n);
+          octree_detail::packet_sse2::trace_packets<Shape, kAnyHit>(tree, query, order.data(), n);
           break;
       }
     }

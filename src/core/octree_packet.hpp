@@ -10,6 +10,7 @@
 #include "occlusion/core/octree.hpp"
 #include "occlusion/core/ray_lanes.hpp"
 #include "octree_packet_interval.hpp"
+#include "octree_single_ray.hpp"
 #include "octree_slab.hpp"
 
 // Packets need GCC's per-function target pragmas; clang ignores them, so a
@@ -22,14 +23,6 @@
 #endif
 
 namespace occlusion::octree_detail {
-
-template <class Shape>
-struct TreeView {
-  const OctreeNode* nodes = nullptr;  // null for an empty tree
-  const Shape* shapes = nullptr;
-  const PrimitiveId* ids = nullptr;
-  float magnitude = 0.0f;  // the largest coordinate magnitude of the scene's boxes
-};
 
 // A batch query: inputs, and one of the two outputs.
 struct PacketQuery {

@@ -79,14 +79,16 @@ MeshOcclusionResult compute_mesh_occlusion(const TriangleMesh& mesh,
 // diagonal of the mesh's bounding box.
 double mesh_shadow_epsilon(const TriangleMesh& mesh, const MeshOcclusionOptions& options);
 
-// The shadow ray from a sample to a viewpoint: direction = viewpoint - sample
-// (t = 1 at the viewpoint), formed in double and rounded to float once, over
-// [epsilon / |d|, 1 - epsilon / |d|] so that `epsilon` stays clear at both ends.
+// The shadow ray between a sample and a viewpoint, cast FROM the viewpoint:
+// direction = sample - viewpoint (t = 1 at the sample), formed in double and
+// rounded to float once, over [epsilon / |d|, 1 - epsilon / |d|] so that
+// `epsilon` stays clear at both ends. All rays of a viewpoint then share one
+// origin, bit for bit, which is what lets the octree trace them as packets.
 // False, and `ray` untouched, when the two are within 2 * epsilon of each other:
 // the sample is then visible from that viewpoint without a ray. A ray longer
-// than `reach` (beyond which nothing can block it) is cut to that length, over
-// [epsilon / reach, 1]. compute_mesh_occlusion passes both points relative to
-// the mesh's centre and reach = twice the mesh's diagonal.
+// than `reach` (beyond which nothing can block it) is cast from the sample
+// instead and cut to that length, over [epsilon / reach, 1]. compute_mesh_occlusion passes both
+// points relative to the mesh's centre and reach = twice the mesh's diagonal.
 bool mesh_shadow_ray(const Eigen::Vector3d& sample, const Eigen::Vector3d& viewpoint,
                      double epsilon, Ray& ray,
                      double reach = std::numeric_limits<double>::infinity());

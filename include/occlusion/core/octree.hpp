@@ -32,6 +32,11 @@
 
 namespace occlusion {
 
+namespace octree_detail {
+template <class Shape>
+struct TreeView;
+}  // namespace octree_detail
+
 // How the batch queries trace. All give the same answers; they differ in speed.
 enum class OctreeTraversal {
   kAuto,          // packets with AVX-512 or AVX2 if the CPU has them, else single rays
@@ -45,7 +50,7 @@ bool cpu_supports(OctreeTraversal traversal);
 
 struct OctreeOptions {
   // Stop subdividing a cell that holds at most this many primitives.
-  std::size_t max_leaf_size = 4;
+  std::size_t max_leaf_size = 8;
   // Stop at this depth whatever the count (guards against coincident centroids).
   int max_depth = 24;
   // The config's `octree_resolution`: smallest cell edge length, in scene units.
@@ -110,6 +115,8 @@ class Octree {
  private:
   template <bool kAnyHit>
   std::optional<Hit> traverse(const Ray& ray, PrimitiveId ignore_id) const;
+  // The flattened tree as the traversals read it.
+  octree_detail::TreeView<Shape> view() const;
   template <bool kAnyHit>
   void trace_batch(const Ray* rays, std::size_t count, const PrimitiveId* ignore_ids,
                    std::optional<Hit>* hits, std::uint8_t* occluded, unsigned threads) const;
