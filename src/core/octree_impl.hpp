@@ -10,174 +10,13 @@
 
 #include "occlusion/core/octree.hpp"
 #include "occlusion/core/parallel.hpp"
+#include "octree_build.hpp"
 #include "octree_packet.hpp"
 #include "octree_single_ray.hpp"
 #include "octree_slab.hpp"
 #include "ray_order.hpp"
 
 namespace occlusion {
-
-namespace octree_detail {
-
-// A child under construction: a leaf range of shapes or an inner node.
-struct BuiltChild {
-  int octant = 0;  // slot in the parent node
-  std::uint32_t index = 0;
-  std::uint32_t count = 0;  // 0 = inner node
-  Aabb box;
-};
-
-template <class Shape>
-class Builder {
- public:
-  Builder(const std::vector<Shape>& shapes, const OctreeOptions& options,
-          std::vector<OctreeNode>& nodes, std::vector<std::uint32_t>& order, OctreeStats& stats)
-      : shapes_(shapes), options_(options), nodes_(nodes), order_(order), stats_(stats) {
-    boxes_.reserve(shapes.size());
-    centroids_.reserve(shapes.size());
-    for (const Shape& shape : shapes) {
-      boxes_.push_back(shape.bounds());
-      centroids_.push_back(shape.centroid());
-    }
-    scratch_.resize(shapes.size());
-  }
-
-  BuiltChild build_root() {
-    Aabb centroid_box;
-    for (const auto& c : centroids_) centroid_box.extend(c);
-    const float half = 0.5f * centroid_box.extent().maxCoeff();
-    return build(0, static_cast<std::uint32_t>(order_.size()), centroid_box.center(), half, 0);
-  }
-
- private:
-  bool is_leaf(std::uint32_t count, float half, int depth) const {
-    return !options_.enable_acceleration || count <= options_.max_leaf_size ||
-           depth >= options_.max_depth || 2.0f * half <= options_.min_cell_size || half <= 0.0f;
-  }
-
-  BuiltChild make_leaf(std::uint32_t begin, std::uint32_t end, int depth) {
-    BuiltChild leaf;
-    leaf.index = begin;
-    leaf.count = end - begin;
-    for (std::uint32_t i = begin; i < end; ++i) leaf.box.extend(boxes_[order_[i]]);
-    ++stats_.leaves;
-    stats_.depth = std::max(stats_.depth, depth);
-    stats_.largest_leaf = std::max<std::size_t>(stats_.largest_leaf, leaf.count);
-    return leaf;
-  }
-
-  static int octant_of(const Eigen::Vector3f& p, const Eigen::Vector3f& centre) {
-    return (p.x() >= centre.x() ? 1 : 0) | (p.y() >= centre.y() ? 2 : 0) |
-           (p.z() >= centre.z() ? 4 : 0);
-  }
-
-  static Eigen::Vector3f octant_centre(int octant, const Eigen::Vector3f& centre, float half) {
-    const float q = 0.5f * half;
-    return centre +
-           Eigen::Vector3f((octant & 1) ? q : -q, (octant & 2) ? q : -q, (octant & 4) ? q : -q);
-  }
-
-  // Sorts order_[begin, end) by octant (a stable counting sort) and returns the
-  // start of each octant's run; starts[8] == end.
-  std::array<std::uint32_t, 9> partition(std::uint32_t begin, std::uint32_t end,
-                                         const Eigen::Vector3f& centre) {
-    std::array<std::uint32_t, 9> starts{};
-    for (std::uint32_t i = begin; i < end; ++i) {
-      ++starts[octant_of(centroids_[order_[i]], centre) + 1];
-    }
-    starts[0] = begin;
-    for (int k = 1; k <= 8; ++k) starts[k] += starts[k - 1];
-    std::array<std::uint32_t, 8> cursor;
-    std::copy(starts.begin(), starts.begin() + 8, cursor.begin());
-    for (std::uint32_t i = begin; i < end; ++i) {
-      const std::uint32_t id = order_[i];
-      scratch_[cursor[octant_of(centroids_[id], centre)]++] = id;
-    }
-    std::copy(scratch_.begin() + begin, scratch_.begin() + end, order_.begin() + begin);
-    return starts;
-  }
-
-  BuiltChild build(std::uint32_t begin, std::uint32_t end, Eigen::Vector3f centre, float half,
-                   int depth) {
-    std::array<std::uint32_t, 9> starts;
-    int cell_level = depth;
-    for (;;) {
-      if (is_leaf(end - begin, half, cell_level)) return make_leaf(begin, end, depth);
-      starts = partition(begin, end, centre);
-      int occupied = 0, last = 0;
-      for (int k = 0; k < 8; ++k) {
-        if (starts[k + 1] > starts[k]) {
-          ++occupied;
-          last = k;
-        }
-      }
-      if (occupied > 1) break;
-      // One occupied octant: descend into it without making a node.
-      centre = octant_centre(last, centre, half);
-      half *= 0.5f;
-      ++cell_level;
-    }
-
-    const auto node_index = static_cast<std::uint32_t>(nodes_.size());
-    nodes_.emplace_back();
-    ++stats_.inner_nodes;
-    std::array<BuiltChild, 8> children;
-    std::uint32_t child_count = 0;
-    for (int k = 0; k < 8; ++k) {
-      if (starts[k + 1] == starts[k]) continue;
-      children[child_count] =
-          build(starts[k], starts[k + 1], octant_centre(k, centre, half), 0.5f * half, depth + 1);
-      children[child_count++].octant = k;
-    }
-    // Fill after recursion: nodes_ may have reallocated meanwhile.
-    OctreeNode& node = nodes_[node_index];
-    fill_node(node, children.data(), child_count);
-    BuiltChild self;
-    self.index = node_index;
-    for (std::uint32_t k = 0; k < child_count; ++k) self.box.extend(children[k].box);
-    return self;
-  }
-
- public:
-  static void fill_node(OctreeNode& node, const BuiltChild* children, std::uint32_t child_count) {
-    node = OctreeNode{};
-    // Unused slots hold a zero box; traversal masks them with `occupied`.
-    std::fill(std::begin(node.lo_x), std::end(node.lo_x), 0.0f);
-    std::fill(std::begin(node.lo_y), std::end(node.lo_y), 0.0f);
-    std::fill(std::begin(node.lo_z), std::end(node.lo_z), 0.0f);
-    std::fill(std::begin(node.hi_x), std::end(node.hi_x), 0.0f);
-    std::fill(std::begin(node.hi_y), std::end(node.hi_y), 0.0f);
-    std::fill(std::begin(node.hi_z), std::end(node.hi_z), 0.0f);
-    std::fill(std::begin(node.index), std::end(node.index), 0u);
-    std::fill(std::begin(node.count), std::end(node.count), 0u);
-    for (std::uint32_t c = 0; c < child_count; ++c) {
-      const int k = children[c].octant;
-      node.occupied |= 1u << k;
-      // Padded: the traversal's branch-free slab test relies on it (aabb.hpp).
-      const Aabb box = pad_box(children[c].box);
-      node.lo_x[k] = box.lo.x();
-      node.lo_y[k] = box.lo.y();
-      node.lo_z[k] = box.lo.z();
-      node.hi_x[k] = box.hi.x();
-      node.hi_y[k] = box.hi.y();
-      node.hi_z[k] = box.hi.z();
-      node.index[k] = children[c].index;
-      node.count[k] = children[c].count;
-    }
-  }
-
- private:
-  const std::vector<Shape>& shapes_;
-  const OctreeOptions& options_;
-  std::vector<OctreeNode>& nodes_;
-  std::vector<std::uint32_t>& order_;
-  OctreeStats& stats_;
-  std::vector<Aabb> boxes_;
-  std::vector<Eigen::Vector3f> centroids_;
-  std::vector<std::uint32_t> scratch_;
-};
-
-}  // namespace octree_detail
 
 template <class Shape>
 Octree<Shape>::Octree(std::vector<Shape> shapes, const OctreeOptions& options) {
@@ -205,21 +44,18 @@ Octree<Shape>::Octree(std::vector<Shape> shapes, const OctreeOptions& options) {
   for (const Shape& shape : shapes) bounds_.extend(shape.bounds());
 
   if (!shapes.empty()) {
-    std::vector<std::uint32_t> order(shapes.size());
-    for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
-    octree_detail::Builder<Shape> builder(shapes, options, nodes_, order, stats_);
-    const octree_detail::BuiltChild top = builder.build_root();
+    octree_detail::MortonBuilder<Shape> builder(options, nodes_, stats_);
+    const octree_detail::BuiltChild top = builder.build(shapes, shapes_, ids_);
+    std::vector<Shape>().swap(shapes);  // the sorted copy replaces it
     if (top.count > 0) {
       // The whole scene is one leaf: give it a root node to live in.
       nodes_.emplace_back();
-      octree_detail::Builder<Shape>::fill_node(nodes_[0], &top, 1);
+      octree_detail::fill_node(nodes_[0], &top, 1);
     }
-    shapes_.reserve(shapes.size());
-    ids_ = order;
-    position_of_.resize(order.size());
-    for (std::uint32_t position = 0; position < order.size(); ++position) {
-      shapes_.push_back(shapes[order[position]]);
-      position_of_[order[position]] = position;
+    nodes_.shrink_to_fit();  // growth left up to half of it unused
+    position_of_.resize(ids_.size());
+    for (std::uint32_t position = 0; position < ids_.size(); ++position) {
+      position_of_[ids_[position]] = position;
     }
   }
   stats_.memory_bytes = nodes_.size() * sizeof(OctreeNode) + shapes_.size() * sizeof(Shape) +
