@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "occlusion/core/large_buffer.hpp"
 #include "occlusion/core/octree.hpp"
 #include "occlusion/core/parallel.hpp"
 
@@ -75,14 +76,14 @@ inline std::uint64_t spread_by_three(std::uint32_t x) {
 // Stable LSD radix sort of (codes[i], ids[i]) by code, on all cores: each
 // pass counts digits per part in parallel, then scatters each part to its own
 // offsets. Passes whose digit is the same for every code are skipped.
-inline void radix_sort_codes(std::vector<std::uint64_t>& codes, std::vector<std::uint32_t>& ids) {
+inline void radix_sort_codes(LargeVector<std::uint64_t>& codes, LargeVector<std::uint32_t>& ids) {
   constexpr int kDigitBits = 11;
   constexpr std::size_t kBuckets = std::size_t{1} << kDigitBits;
   const std::size_t n = codes.size();
   const unsigned parts = std::max(
       1u, std::min<unsigned>(resolve_thread_count(0), static_cast<unsigned>(n / 65536 + 1)));
-  std::vector<std::uint64_t> codes_out(n);
-  std::vector<std::uint32_t> ids_out(n);
+  LargeVector<std::uint64_t> codes_out(n);
+  LargeVector<std::uint32_t> ids_out(n);
   std::vector<std::array<std::size_t, kBuckets>> counts(parts);
   const auto part_begin = [&](unsigned p) { return n * p / parts; };
   for (int shift = 0; shift < 3 * kMortonLevels; shift += kDigitBits) {
@@ -128,14 +129,14 @@ inline void radix_sort_codes(std::vector<std::uint64_t>& codes, std::vector<std:
 template <class Shape>
 class MortonBuilder {
  public:
-  MortonBuilder(const OctreeOptions& options, std::vector<OctreeNode>& nodes, OctreeStats& stats)
+  MortonBuilder(const OctreeOptions& options, LargeVector<OctreeNode>& nodes, OctreeStats& stats)
       : options_(options), nodes_(nodes), stats_(stats) {}
 
   // Puts `shapes` in leaf order into `sorted` (ids[position] = index in
   // `shapes`), builds the nodes, and returns the root: an inner node, or a
   // leaf when the whole scene is one.
-  BuiltChild build(const std::vector<Shape>& shapes, std::vector<Shape>& sorted,
-                   std::vector<PrimitiveId>& ids) {
+  BuiltChild build(const std::vector<Shape>& shapes, LargeVector<Shape>& sorted,
+                   LargeVector<PrimitiveId>& ids) {
     const std::size_t n = shapes.size();
     Aabb centroid_box;
     for (const Shape& shape : shapes) centroid_box.extend(shape.centroid());
@@ -168,7 +169,7 @@ class MortonBuilder {
     });
     sorted_ = &sorted;
     BuiltChild root = build_range(0, static_cast<std::uint32_t>(n), 0);
-    std::vector<std::uint64_t>().swap(codes_);
+    LargeVector<std::uint64_t>().swap(codes_);
     return root;
   }
 
@@ -238,10 +239,10 @@ class MortonBuilder {
   }
 
   const OctreeOptions& options_;
-  std::vector<OctreeNode>& nodes_;
+  LargeVector<OctreeNode>& nodes_;
   OctreeStats& stats_;
-  const std::vector<Shape>* sorted_ = nullptr;
-  std::vector<std::uint64_t> codes_;
+  const LargeVector<Shape>* sorted_ = nullptr;
+  LargeVector<std::uint64_t> codes_;
   float root_half_ = 0.0f;
 };
 

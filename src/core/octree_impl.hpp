@@ -44,6 +44,10 @@ Octree<Shape>::Octree(std::vector<Shape> shapes, const OctreeOptions& options) {
   for (const Shape& shape : shapes) bounds_.extend(shape.bounds());
 
   if (!shapes.empty()) {
+    // Room for the usual tree (about one node per max_leaf_size / 2 shapes)
+    // up front: growing copies the nodes and touches their pages twice, and
+    // reserved pages never written cost nothing.
+    nodes_.reserve(std::min(shapes.size(), 2 * shapes.size() / options.max_leaf_size + 64));
     octree_detail::MortonBuilder<Shape> builder(options, nodes_, stats_);
     const octree_detail::BuiltChild top = builder.build(shapes, shapes_, ids_);
     std::vector<Shape>().swap(shapes);  // the sorted copy replaces it
@@ -52,7 +56,6 @@ Octree<Shape>::Octree(std::vector<Shape> shapes, const OctreeOptions& options) {
       nodes_.emplace_back();
       octree_detail::fill_node(nodes_[0], &top, 1);
     }
-    nodes_.shrink_to_fit();  // growth left up to half of it unused
     position_of_.resize(ids_.size());
     for (std::uint32_t position = 0; position < ids_.size(); ++position) {
       position_of_[ids_[position]] = position;

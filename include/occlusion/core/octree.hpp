@@ -28,6 +28,7 @@
 
 #include "occlusion/core/aabb.hpp"
 #include "occlusion/core/hit.hpp"
+#include "occlusion/core/large_buffer.hpp"
 #include "occlusion/core/ray.hpp"
 
 namespace occlusion {
@@ -121,10 +122,10 @@ class Octree {
   void trace_batch(const Ray* rays, std::size_t count, const PrimitiveId* ignore_ids,
                    std::optional<Hit>* hits, std::uint8_t* occluded, unsigned threads) const;
 
-  std::vector<OctreeNode> nodes_;           // nodes_[0] is the root
-  std::vector<Shape> shapes_;               // in leaf order
-  std::vector<PrimitiveId> ids_;            // ids_[leaf position] = original index
-  std::vector<std::uint32_t> position_of_;  // inverse of ids_
+  LargeVector<OctreeNode> nodes_;           // nodes_[0] is the root
+  LargeVector<Shape> shapes_;               // in leaf order
+  LargeVector<PrimitiveId> ids_;            // ids_[leaf position] = original index
+  LargeVector<std::uint32_t> position_of_;  // inverse of ids_
   Aabb bounds_;
   OctreeStats stats_;
   OctreeTraversal traversal_ = OctreeTraversal::kAuto;  // resolved: never kAuto

@@ -1,0 +1,37 @@
+#include "occlusion/core/large_buffer.hpp"
+
+#include <cstdlib>
+
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
+
+namespace occlusion::large_buffer_detail {
+
+namespace {
+constexpr std::size_t kHugePage = std::size_t{2} << 20;
+// Below this a buffer is not worth a whole huge page of alignment.
+constexpr std::size_t kLargeBuffer = 4 * kHugePage;
+}  // namespace
+
+void* allocate(std::size_t bytes) {
+  void* p = nullptr;
+  if (bytes >= kLargeBuffer) {
+    const std::size_t rounded = (bytes + kHugePage - 1) / kHugePage * kHugePage;
+    p = std::aligned_alloc(kHugePage, rounded);
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+    // Only advice: where huge pages are off or unavailable, nothing changes.
+    if (p != nullptr) madvise(p, rounded, MADV_HUGEPAGE);
+#endif
+  } else {
+    p = std::malloc(bytes == 0 ? 1 : bytes);
+  }
+  if (p == nullptr) throw std::bad_alloc();
+  return p;
+}
+
+void deallocate(void* p) noexcept {
+  std::free(p);
+}
+
+}  // namespace occlusion::large_buffer_detail
