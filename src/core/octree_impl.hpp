@@ -30,8 +30,14 @@ template <class Shape>
 class Builder {
  public:
   Builder(const std::vector<Shape>& shapes, const OctreeOptions& options,
-          std::vector<OctreeNode>& nodes, std::vector<std::uint32_t>& order, OctreeStats& stats)
-      : shapes_(shapes), options_(options), nodes_(nodes), order_(order), stats_(stats) {
+          std::vector<OctreeNode>& nodes, std::vector<std::uint32_t>& order, OctreeStats& stats,
+          const Progress& progress)
+      : shapes_(shapes),
+        options_(options),
+        nodes_(nodes),
+        order_(order),
+        stats_(stats),
+        progress_(progress) {
     boxes_.reserve(shapes.size());
     centroids_.reserve(shapes.size());
     for (const Shape& shape : shapes) {
@@ -117,6 +123,9 @@ class Builder {
       ++cell_level;
     }
 
+    // A relaxed load per inner node (a node costs a partition of its
+    // shapes): a cancelled build stops within a few nodes.
+    progress_.check_cancel();
     const auto node_index = static_cast<std::uint32_t>(nodes_.size());
     nodes_.emplace_back();
     ++stats_.inner_nodes;
@@ -171,6 +180,7 @@ class Builder {
   std::vector<OctreeNode>& nodes_;
   std::vector<std::uint32_t>& order_;
   OctreeStats& stats_;
+  const Progress& progress_;
   std::vector<Aabb> boxes_;
   std::vector<Eigen::Vector3f> centroids_;
   std::vector<std::uint32_t> scratch_;
@@ -179,7 +189,8 @@ class Builder {
 }  // namespace octree_detail
 
 template <class Shape>
-Octree<Shape>::Octree(std::vector<Shape> shapes, const OctreeOptions& options) {
+Octree<Shape>::Octree(std::vector<Shape> shapes, const OctreeOptions& options,
+                      const Progress& progress) {
   if (options.max_leaf_size == 0) {
     throw std::invalid_argument("octree: max_leaf_size must be at least 1");
   }
@@ -198,6 +209,7 @@ Octree<Shape>::Octree(std::vector<Shape> shapes, const OctreeOptions& options) {
   if (!cpu_supports(traversal_)) {
     throw std::invalid_argument("octree: this build or CPU cannot run the traversal asked for");
   }
+  progress.check_cancel();
   const auto start = std::chrono::steady_clock::now();
   stats_ = OctreeStats{};
   stats_.primitives = shapes.size();
@@ -206,7 +218,7 @@ Octree<Shape>::Octree(std::vector<Shape> shapes, const OctreeOptions& options) {
   if (!shapes.empty()) {
     std::vector<std::uint32_t> order(shapes.size());
     for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
-    octree_detail::Builder<Shape> builder(shapes, options, nodes_, order, stats_);
+    octree_detail::Builder<Shape> builder(shapes, options, nodes_, order, stats_, progress);
     const octree_detail::BuiltChild top = builder.build_root();
     if (top.count > 0) {
       // The whole scene is one leaf: give it a root node to live in.
