@@ -24,8 +24,8 @@ PointCloud read_by_kind(const std::string& path, const CloudReadOptions& options
   if (!std::filesystem::exists(kind)) throw InputError(path, 0, "no such file or directory");
   if (std::filesystem::is_directory(kind)) return detail::read_s3dis(path, options, report);
   const std::string extension = detail::lower_extension(path);
-  if (extension == ".pcd") return detail::read_pcd(path, report);
-  if (extension == ".ply") return detail::read_ply(path, report);
+  if (extension == ".pcd") return detail::read_pcd(path, options, report);
+  if (extension == ".ply") return detail::read_ply(path, options, report);
   if (extension == ".txt" || extension == ".xyz" || extension == ".pts") {
     return detail::read_text_cloud(path, options, report);
   }
