@@ -112,6 +112,16 @@ TEST(GlobalShift, EveryFormatRoundTripsTheFileCoordinates) {
   EXPECT_NE(pcd.find("\n500012.004 5400007.891 99.999\n"), std::string::npos) << pcd;
 }
 
+// A first point far from the rest: its shift would only move the loss of
+// precision onto the others, so the cloud is read without one.
+TEST(GlobalShift, AShiftThatWouldNotHelpIsDropped) {
+  const ScratchDirectory dir;
+  write_text(dir.file("stray.txt"), "0.5 -2500000 7\n0.1 0.1 -0.2\n2 2.25 1\n");
+  const PointCloud cloud = read_cloud(dir.file("stray.txt"));
+  EXPECT_FALSE(cloud.shifted());
+  EXPECT_EQ(cloud.positions[1], Eigen::Vector3f(0.1f, 0.1f, -0.2f));
+}
+
 TEST(GlobalShift, AGivenShiftIsUsed) {
   const ScratchDirectory dir;
   CloudReadOptions options;

@@ -24,7 +24,9 @@
 // Clouds far from the origin (UTM coordinates) are stored relative to a
 // global shift (PointCloud::shift, chosen from the first point: see
 // choose_global_shift), so float positions keep their precision; coordinates
-// are read in double and shifted before they become float.
+// are read in double and shifted before they become float. A shift that does
+// not shrink the cloud's largest coordinate sixteen-fold (a cloud as large as
+// it is far out, or a stray first point) is dropped and the file read again.
 // Points with a NaN or infinite coordinate (organised Kinect frames mark missing
 // depth that way) are dropped and counted in CloudReadReport::dropped_nan.
 // Properties the cloud has no slot for (PLY and PCD) are returned in the report.
