@@ -2,8 +2,8 @@
 # Builds the tool and every C++ test suite with AddressSanitizer and
 # UndefinedBehaviorSanitizer (gcc -O1 -g, into build-asan/, through ccache when
 # it is installed) and runs the whole ctest suite on them, in parallel; any
-# sanitizer report or leak fails its test. Tests labelled no_sanitizer are left
-# out (tests/CMakeLists.txt, docs/fuzzing.md say which and why). test.sh runs
+# sanitizer report or leak fails its test. Tests labelled <layer>_no_sanitizer
+# are left out (tests/CMakeLists.txt, docs/fuzzing.md say which and why). test.sh runs
 # it under a time limit.
 #
 #   bash src/scripts/sanitize.sh            # the whole suite (what test.sh runs)

@@ -123,8 +123,9 @@ TEST(Concurrency, CancelStopsAJobPromptly) {
   EXPECT_FALSE(nothing.final["result"]["found"].asBool());
 }
 
-// A cancel that arrives while the octree is built stops the build itself: the
-// job never reaches tracing, and answers long before a build would end.
+// A cancel that arrives as the octree build starts stops the build itself:
+// the job never reaches tracing, and answers long before a build would end
+// (core's OctreeCancel tests cancel in the middle of a build).
 TEST(Concurrency, CancelStopsAJobDuringItsOctreeBuild) {
   server::ServerOptions options = TestServer::quiet_options();
   options.progress_interval_seconds = 0.001;  // every stage is reported
@@ -159,7 +160,8 @@ TEST(Concurrency, CancelStopsAJobDuringItsOctreeBuild) {
   for (const Json::Value& progress : job.progress) {
     EXPECT_NE(progress["stage"].asString(), "tracing") << "the build ran to its end";
   }
-  EXPECT_LT(seconds_since(start), 0.5);
+  // Without the build's checks: 2.4 s (Release); with them 0.1 s, 0.6 s under ASan.
+  EXPECT_LT(seconds_since(start), 1.0);
 }
 
 TEST(Concurrency, ClientThatLeavesMidJobHasItsJobsCancelled) {
