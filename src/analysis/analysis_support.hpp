@@ -36,30 +36,41 @@ inline void check_positive(double value, const std::string& name, const std::str
   }
 }
 
-// Clouds are traced in float where they are: at a distance d from the origin,
-// neighbouring floats are d * 2^-23 apart. Throws std::invalid_argument when a
-// point or viewpoint is so far out that this spacing exceeds a quarter of
-// point_radius, where rays pass between the spheres they should hit (a
-// viewpoint at 1e20 saw through closed walls).
+// Clouds are traced in float, in their local frame (the readers subtract a
+// global shift from clouds far from the origin, PointCloud::shift): at a
+// distance d from that frame's origin, neighbouring floats are d * 2^-23
+// apart. Throws std::invalid_argument when a point or viewpoint is so far out
+// that this spacing exceeds a quarter of point_radius, where rays pass between
+// the spheres they should hit (a viewpoint at 1e20 saw through closed walls).
+// After the shift this is a cloud whose own extent is too large for float at
+// its radius, or a viewpoint far from the cloud.
 inline void check_float_precision(const Eigen::Vector3f& cloud_lo, const Eigen::Vector3f& cloud_hi,
                                   const std::vector<Eigen::Vector3d>& viewpoints,
                                   double point_radius, const std::string& analysis) {
   constexpr double kFloatSpacing = 1.0 / (1 << 23);
   const double limit = 0.25 * point_radius / kFloatSpacing;
-  const auto refuse = [&](const std::string& what, double distance) {
+  const auto refuse = [&](const std::string& what, double distance, const std::string& fix) {
     throw std::invalid_argument(
         analysis + ": " + what + " " + std::to_string(distance) +
-        " units from the origin, where float coordinates are " +
+        " units from the origin of the cloud's local frame (its coordinates minus its global "
+        "shift), where float coordinates are " +
         std::to_string(distance * kFloatSpacing) + " units apart, too coarse for point_radius " +
-        std::to_string(point_radius) + "; keep everything within " + std::to_string(limit) +
-        " units of the origin (shift the scene and viewpoints)");
+        std::to_string(point_radius) + "; everything must lie within " + std::to_string(limit) +
+        " units of it: " + fix);
   };
   const double cloud_extent = std::max(cloud_lo.cast<double>().cwiseAbs().maxCoeff(),
                                        cloud_hi.cast<double>().cwiseAbs().maxCoeff());
-  if (cloud_extent > limit) refuse("the cloud reaches", cloud_extent);
+  if (cloud_extent > limit) {
+    refuse("the cloud reaches", cloud_extent,
+           "split the cloud into smaller tiles, or shift its coordinates so it starts near the "
+           "origin");
+  }
   for (const auto& viewpoint : viewpoints) {
     const double distance = viewpoint.cwiseAbs().maxCoeff();
-    if (distance > limit) refuse("a viewpoint lies", distance);
+    if (distance > limit) {
+      refuse("a viewpoint lies", distance,
+             "place viewpoints near the cloud, in the cloud file's own coordinates");
+    }
   }
 }
 

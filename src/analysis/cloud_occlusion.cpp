@@ -96,7 +96,7 @@ CloudOcclusionResult compute_cloud_occlusion(const PointCloud& cloud,
   progress("building octree", 0.0);
   const SphereOctree tree(make_spheres(blocking_positions(cloud, options.blocking),
                                        static_cast<float>(options.point_radius)),
-                          options.octree);
+                          options.octree, progress);
   result.build_seconds = seconds_since(start);
   result.octree = tree.stats();
   result.points = cloud.size();

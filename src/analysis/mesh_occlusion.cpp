@@ -102,7 +102,8 @@ MeshOcclusionResult compute_mesh_occlusion(const TriangleMesh& mesh,
 
   start = Clock::now();
   progress("building octree", 0.0);
-  const TriangleOctree tree(pack_triangles(local_triangles(mesh, origin)), options.octree);
+  const TriangleOctree tree(pack_triangles(local_triangles(mesh, origin)), options.octree,
+                            progress);
   result.timings.build_seconds = seconds_since(start);
   result.octree = tree.stats();
   progress.check_cancel();

@@ -72,7 +72,7 @@ ScanResult scan_cloud(const PointCloud& cloud, const std::vector<Eigen::Vector3d
   auto start = Clock::now();
   progress("building octree", 0.0);
   const SphereOctree tree(make_spheres(cloud.positions, static_cast<float>(options.point_radius)),
-                          options.octree);
+                          options.octree, progress);
   result.build_seconds = seconds_since(start);
   result.octree = tree.stats();
   progress.check_cancel();

@@ -170,9 +170,12 @@ CloudOcclusionReport run_cloud_occlusion_on(const PointCloud& cloud,
   report.request = request;
   report.viewpoint_names = viewpoints.names;
   report.frame = viewpoints.frame;
+  report.shift = cloud.shift;
   report.warnings.insert(report.warnings.end(), viewpoints.warnings.begin(),
                          viewpoints.warnings.end());
   report.openings = openings.size();
+  const std::vector<PlanarPolygon> local_openings =
+      job::openings_in_frame(openings, cloud, request.polygon_path);
   check_memory_budget(
       cloud_occlusion_memory(cloud.size(), viewpoints.positions.size(), request.num_rays_per_vp,
                              request.escape_directions || !request.out.empty()),
@@ -192,7 +195,9 @@ CloudOcclusionReport run_cloud_occlusion_on(const PointCloud& cloud,
   options.keep_escape_directions = request.escape_directions || !request.out.empty();
   report.field_of_view = single_view_field(cloud, request, report);
   options.field_of_view = report.field_of_view;
-  report.result = compute_cloud_occlusion(cloud, viewpoints.positions, openings, options, progress);
+  report.result =
+      compute_cloud_occlusion(cloud, viewpoints.positions, local_openings, options, progress);
+  job::viewpoints_to_original(report.result.viewpoints, cloud);
 
   if (request.exterior) {
     ExteriorReport exterior;
@@ -203,7 +208,8 @@ CloudOcclusionReport run_cloud_occlusion_on(const PointCloud& cloud,
     exterior.interior_exterior_ratio = interior_exterior_ratio(options.blocking);
     options.keep_escape_directions = false;
     exterior.result =
-        compute_cloud_occlusion(cloud, viewpoints.positions, openings, options, progress);
+        compute_cloud_occlusion(cloud, viewpoints.positions, local_openings, options, progress);
+    job::viewpoints_to_original(exterior.result.viewpoints, cloud);
     report.exterior = exterior;
   }
   report.total_seconds = job::seconds_since(start);
@@ -246,6 +252,7 @@ Json::Value to_json(const CloudOcclusionReport& report) {
   Json::Value json = result_json(report.result, report.viewpoint_names);
   json["job"] = "cloud_occlusion";
   json["input"] = q.path;
+  json["global_shift"] = job::global_shift_json(report.shift);
   json["points"] = Json::UInt64(report.result.points);
   json["openings"] = Json::UInt64(report.openings);
   json["field_of_view"] =

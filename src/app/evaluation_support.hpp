@@ -2,6 +2,7 @@
 // Pieces of the evaluate job kept out of its main file (internal to app/):
 // reading a scene's two files, and the CSV and Markdown reports.
 
+#include <Eigen/Core>
 #include <string>
 
 #include "occlusion/app/evaluate_job.hpp"
@@ -21,8 +22,11 @@ void check_ground_truth(const std::string& name, const PointCloud& cloud,
                         const ClassMapping& mapping);
 
 // A prediction file: a label file (io/label_file.hpp decides) or a labelled
-// cloud. InputError for an unreadable file and a cloud without labels.
-Prediction load_prediction(const std::string& path, bool skip_bad_lines);
+// cloud. InputError for an unreadable file and a cloud without labels. A cloud
+// is read with the ground truth's global shift (`shift`, PointCloud::shift),
+// so the two compare point by point in one frame.
+Prediction load_prediction(const std::string& path, bool skip_bad_lines,
+                           const Eigen::Vector3d& shift);
 
 // The ground truth with read_cloud; the prediction as a label file
 // (io/label_file.hpp decides) or a cloud. InputError for unreadable files,

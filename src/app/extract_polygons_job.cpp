@@ -29,6 +29,8 @@ ExtractPolygonsReport run_extract_polygons(const ExtractPolygonsRequest& request
       job::load_and_estimate(request.path, request.skip_bad_lines, request.estimation,
                              request.threads, request.max_memory_mb, progress);
   job::take_estimate(input, report);
+  job::estimate_to_original(report.estimate, input.loaded.cloud.shift);
+  report.shift = input.loaded.cloud.shift;
 
   if (!request.out.empty()) {
     ensure_directory(request.out);
@@ -52,6 +54,7 @@ Json::Value to_json(const ExtractPolygonsReport& report) {
   Json::Value json(Json::objectValue);
   json["job"] = "extract_polygons";
   json["input"] = report.request.path;
+  json["global_shift"] = job::global_shift_json(report.shift);
   json["points"] = Json::UInt64(report.points);
   json["dropped_nan_points"] = Json::UInt64(report.dropped_nan);
   json["skipped_lines"] = Json::UInt64(report.skipped_lines);

@@ -9,6 +9,7 @@
 #include "occlusion/app/json_output.hpp"
 #include "occlusion/io/atomic_file.hpp"
 #include "occlusion/io/cloud_io.hpp"
+#include "occlusion/io/input_error.hpp"
 
 namespace occlusion::job {
 
@@ -38,10 +39,10 @@ UpAxis parse_up(const std::string& up) {
 
 namespace {
 
-Json::Value box_json(const Box& box) {
+Json::Value box_json(const Box& box, const Eigen::Vector3d& shift) {
   Json::Value json(Json::objectValue);
-  json["min"] = to_json(box.lo);
-  json["max"] = to_json(box.hi);
+  json["min"] = to_json(box.lo + shift);
+  json["max"] = to_json(box.hi + shift);
   return json;
 }
 
@@ -60,13 +61,16 @@ ViewpointChoice::Resolved resolve_for_cloud(const ViewpointChoice& choice, const
   const UpAxis up_axis = parse_up(up);
   const SceneFrame boxes = measure_scene_frame(cloud.positions);
   const Box& placement = kind == FrameKind::kRobust ? boxes.robust : boxes.bbox;
-  ViewpointChoice::Resolved resolved = choice.resolve(placement.lo, placement.hi, up_axis.axis);
+  ViewpointChoice local = choice;
+  for (auto& point : local.points) point = cloud.to_local(point);
+  ViewpointChoice::Resolved resolved = local.resolve(placement.lo, placement.hi, up_axis.axis);
+  resolved.shift = cloud.shift;
 
   resolved.frame = Json::Value(Json::objectValue);
   resolved.frame["frame"] = frame;
   resolved.frame["up"] = up_axis.name();
-  resolved.frame["bbox"] = box_json(boxes.bbox);
-  resolved.frame["robust"] = box_json(boxes.robust);
+  resolved.frame["bbox"] = box_json(boxes.bbox, cloud.shift);
+  resolved.frame["robust"] = box_json(boxes.robust, cloud.shift);
   resolved.frame["robust_quantile"] = kRobustQuantile;
   for (std::size_t v = 0; v < resolved.positions.size(); ++v) {
     // A single-view frame's sensor looks at the scene from outside it, rightly.
@@ -74,11 +78,12 @@ ViewpointChoice::Resolved resolve_for_cloud(const ViewpointChoice& choice, const
         cloud.sensor.single_view() &&
         (resolved.positions[v] - cloud.sensor.origin).cwiseAbs().maxCoeff() <= 1e-6;
     if (!at_sensor && !boxes.robust.contains(resolved.positions[v])) {
-      resolved.warnings.push_back(
-          "viewpoint " + resolved.names[v] + " at " + position_text(resolved.positions[v]) +
-          " lies outside the occupied space (the robust box from " +
-          position_text(boxes.robust.lo) + " to " + position_text(boxes.robust.hi) +
-          "): its rays measure the outside of the scene");
+      resolved.warnings.push_back("viewpoint " + resolved.names[v] + " at " +
+                                  position_text(cloud.to_original(resolved.positions[v])) +
+                                  " lies outside the occupied space (the robust box from " +
+                                  position_text(cloud.to_original(boxes.robust.lo)) + " to " +
+                                  position_text(cloud.to_original(boxes.robust.hi)) +
+                                  "): its rays measure the outside of the scene");
     }
   }
   if (choice.kind == ViewpointChoice::Kind::kGrid) {
@@ -164,6 +169,42 @@ Json::Value viewpoint_json(const std::string& name, const Eigen::Vector3d& posit
   return json;
 }
 
+Json::Value global_shift_json(const Eigen::Vector3d& shift) {
+  return to_json(shift);
+}
+
+std::vector<PlanarPolygon> openings_in_frame(const std::vector<PlanarPolygon>& openings,
+                                             const PointCloud& cloud,
+                                             const std::string& polygon_path) {
+  Eigen::Vector3f lo, hi;
+  cloud.bounds(lo, hi);
+  const double reach = 10.0 * (hi - lo).cast<double>().norm();
+  std::vector<PlanarPolygon> local;
+  for (std::size_t k = 0; k < openings.size(); ++k) {
+    std::vector<Eigen::Vector3d> boundary;
+    for (const auto& corner : openings[k].vertices()) boundary.push_back(cloud.to_local(corner));
+    const Eigen::Vector3d centre = local.emplace_back(boundary).origin();
+    const Eigen::Vector3d outside = (lo.cast<double>() - centre)
+                                        .cwiseMax(centre - hi.cast<double>())
+                                        .cwiseMax(Eigen::Vector3d::Zero());
+    if (outside.norm() > reach) {
+      std::ostringstream message;
+      message.precision(12);
+      message << "opening " << k + 1 << " (centre " << openings[k].origin().transpose() << ") lies "
+              << outside.norm() << " units outside the cloud's bounding box, over ten "
+              << "times its diagonal: it can block no ray. Give openings in the cloud's own "
+                 "coordinates, as its file holds them";
+      if (cloud.shifted()) {
+        message << " (the cloud is far from the origin and traced shifted by "
+                << cloud.shift.transpose() << "; coordinates picked in the viewer are in that "
+                << "shifted frame: add the shift)";
+      }
+      throw InputError(polygon_path, 0, message.str());
+    }
+  }
+  return local;
+}
+
 std::string cloud_extension(const std::string& format) {
   if (format == "ply" || format == "pcd") return format;
   throw KeyError("format", "must be ply or pcd, got '" + format + "'");
@@ -173,9 +214,11 @@ void write_json_report(const std::string& path, const Json::Value& json) {
   write_file_atomically(path, [&](std::ostream& out) { out << format_json(json) << '\n'; });
 }
 
-LoadedCloud load_cloud(const std::string& path, bool skip_bad_lines) {
+LoadedCloud load_cloud(const std::string& path, bool skip_bad_lines,
+                       const std::optional<Eigen::Vector3d>& shift) {
   CloudReadOptions options;
   options.skip_bad_lines = skip_bad_lines;
+  options.shift = shift;
   CloudReadReport report;
   LoadedCloud loaded;
   loaded.cloud = read_cloud(path, options, &report);

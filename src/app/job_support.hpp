@@ -4,6 +4,7 @@
 #include <json/value.h>
 
 #include <chrono>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,7 @@
 #include "occlusion/app/viewpoint_choice.hpp"
 #include "occlusion/core/mesh.hpp"
 #include "occlusion/core/point_cloud.hpp"
+#include "occlusion/core/polygon.hpp"
 #include "occlusion/io/atomic_file.hpp"
 
 namespace occlusion::job {
@@ -28,7 +30,9 @@ inline double seconds_since(Clock::time_point start) {
 std::string output_path(const std::string& out, const std::string& input,
                         const std::string& suffix);
 
-// Viewpoints for a cloud, placed on its robust frame or its bounding box
+// Viewpoints for a cloud, in its local frame (explicit ones are given in the
+// file's frame and converted here, the one place; Resolved::shift is the
+// cloud's global shift), placed on its robust frame or its bounding box
 // (`frame`: robust|bbox, scene_frame.hpp) with `up` a signed axis
 // (up_axis.hpp). Resolved::frame reports both boxes and the up axis; warnings
 // name each viewpoint outside the occupied space (the robust box) and, for a
@@ -57,6 +61,22 @@ Json::Value point_radius_json(const PointRadius& radius);
 
 // [{"name": ..., "position": [x, y, z], <figures>...}, ...] built by the caller.
 Json::Value viewpoint_json(const std::string& name, const Eigen::Vector3d& position);
+// A result's per-viewpoint positions (local, as traced) in the file's frame,
+// as reports give them.
+template <class PerViewpoint>
+void viewpoints_to_original(std::vector<PerViewpoint>& viewpoints, const PointCloud& cloud) {
+  for (auto& viewpoint : viewpoints) viewpoint.position = cloud.to_original(viewpoint.position);
+}
+// The report's "global_shift": what was subtracted from the cloud's
+// coordinates (point_cloud.hpp); positions in reports are in the file's frame.
+Json::Value global_shift_json(const Eigen::Vector3d& shift);
+// Openings (given in the file's frame) in the cloud's local frame. InputError
+// naming `polygon_path` for an opening that lies more than ten times the cloud's
+// diagonal outside its bounding box: such an opening can change nothing, and
+// is almost always in another frame (e.g. a viewer's local one).
+std::vector<PlanarPolygon> openings_in_frame(const std::vector<PlanarPolygon>& openings,
+                                             const PointCloud& cloud,
+                                             const std::string& polygon_path);
 
 // Throws UsageError unless format is "ply" or "pcd"; returns the file extension.
 std::string cloud_extension(const std::string& format);
@@ -91,6 +111,9 @@ struct LoadedCloud {
   std::vector<std::string> unverified_order;  // CloudReadReport::unverified_order
   std::vector<std::size_t> annotation_order;  // CloudReadReport::annotation_order
 };
-LoadedCloud load_cloud(const std::string& path, bool skip_bad_lines);
+// `shift` fixes the global shift (CloudReadOptions::shift); unset, the
+// reader chooses it.
+LoadedCloud load_cloud(const std::string& path, bool skip_bad_lines,
+                       const std::optional<Eigen::Vector3d>& shift = std::nullopt);
 
 }  // namespace occlusion::job

@@ -33,6 +33,7 @@ ReconstructReport run_reconstruct(const ReconstructRequest& request, const Progr
     throw UsageError(request.path + " is not an S3DIS room or Area folder (no Annotations found)");
   }
   report.points = cloud.size();
+  report.shift = cloud.shift;
   report.rooms = loaded.rooms;
   report.dropped_nan = loaded.dropped_nan;
   report.skipped_lines = loaded.skipped_lines;
@@ -68,6 +69,7 @@ Json::Value to_json(const ReconstructReport& report) {
   Json::Value json(Json::objectValue);
   json["job"] = "reconstruct";
   json["input"] = report.request.path;
+  json["global_shift"] = job::global_shift_json(report.shift);
   json["points"] = Json::UInt64(report.points);
   Json::Value classes(Json::arrayValue);
   for (std::size_t c = 0; c < report.classes.size(); ++c) {

@@ -83,8 +83,12 @@ RegionGrowingReport run_region_growing_occlusion(const RegionGrowingRequest& req
   options.octree.enable_acceleration = request.enable_acceleration;
   options.seed = request.seed;
   options.threads = request.threads;
+  // Traced in the cloud's local frame, reported and written in the file's.
   report.occlusion =
       compute_mesh_occlusion(report.estimate.mesh, viewpoints.positions, options, progress);
+  job::viewpoints_to_original(report.occlusion.viewpoints, cloud);
+  job::estimate_to_original(report.estimate, cloud.shift);
+  report.shift = cloud.shift;
 
   if (!request.out.empty()) write_outputs(cloud, report, start);
   report.total_seconds = job::seconds_since(start);
@@ -98,6 +102,7 @@ Json::Value to_json(const RegionGrowingReport& report) {
   Json::Value json(Json::objectValue);
   json["job"] = "region_growing_occlusion";
   json["input"] = q.path;
+  json["global_shift"] = job::global_shift_json(report.shift);
   json["occlusion_level"] = r.occlusion_level;
   json["visible_area"] = r.visible_area;
   json["total_area"] = r.total_area;

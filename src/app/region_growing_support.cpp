@@ -115,6 +115,15 @@ void add_estimation_json(const MeshEstimate& e, Json::Value& json) {
   json["regions"] = regions;
 }
 
+void estimate_to_original(MeshEstimate& estimate, const Eigen::Vector3d& shift) {
+  for (auto& vertex : estimate.mesh.vertices) vertex += shift;
+  for (auto& plane : estimate.planes) {
+    plane.centroid += shift;
+    // normal . (p - shift) + offset = 0
+    plane.offset -= plane.normal.dot(shift);
+  }
+}
+
 Json::Value plane_json(const EstimatedPlane& p) {
   Json::Value plane(Json::objectValue);
   plane["cluster"] = Json::UInt64(p.cluster);

@@ -47,6 +47,9 @@ void take_estimate(CloudEstimate& input, Report& report) {
   report.warnings = std::move(input.warnings);
 }
 
+// The estimate (made in the cloud's local frame, PointCloud::shift) moved to
+// the file's frame: mesh vertices, plane centroids and offsets.
+void estimate_to_original(MeshEstimate& estimate, const Eigen::Vector3d& shift);
 // Every point's cluster as an integer field (-1: none), for the segmented cloud.
 ScalarField cluster_field(const MeshEstimate& estimate);
 

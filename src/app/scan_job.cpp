@@ -60,7 +60,10 @@ ScanReport run_scan_on(const PointCloud& cloud, const ViewpointChoice::Resolved&
   report.frame = viewpoints.frame;
   report.warnings.insert(report.warnings.end(), viewpoints.warnings.begin(),
                          viewpoints.warnings.end());
-  report.viewpoint_positions = viewpoints.positions;
+  report.shift = cloud.shift;
+  for (const auto& position : viewpoints.positions) {
+    report.viewpoint_positions.push_back(cloud.to_original(position));
+  }
   check_memory_budget(scan_memory(cloud.size(), viewpoints.positions.size()),
                       request.max_memory_mb);
   report.point_radius =
@@ -129,6 +132,7 @@ Json::Value to_json(const ScanReport& report) {
   Json::Value json(Json::objectValue);
   json["job"] = "scan";
   json["input"] = q.path;
+  json["global_shift"] = job::global_shift_json(report.shift);
   json["visible_fraction"] = r.visible_fraction;
   json["points"] = Json::UInt64(r.visible_count.size());
   json["visible_points"] = Json::UInt64(r.visible_points);

@@ -77,7 +77,9 @@ StudyRow run_study_once(const StudyContext& context, const StudyRunInput& run,
   progress("scanning", 0.0);
   auto start = Clock::now();
   const ViewpointChoice::Resolved viewpoints = resolve_for_cloud(run.configuration->choice, cloud);
-  row.viewpoints = viewpoints.positions;
+  for (const auto& position : viewpoints.positions) {
+    row.viewpoints.push_back(cloud.to_original(position));  // the table is in the file's frame
+  }
   const ScanReport scan =
       run_scan_on(cloud, viewpoints, study_scan_request(request, run.scene_path), inner);
   row.visible_fraction = scan.result.visible_fraction;

@@ -79,8 +79,9 @@ std::string one_line(std::string text) {
   return text;
 }
 
-Prediction external(const StudyContext& context, const std::string& scanned_path,
-                    const std::string& stem, const Progress& progress, std::string& prediction_path,
+Prediction external(const StudyContext& context, const PointCloud& scanned,
+                    const std::string& scanned_path, const std::string& stem,
+                    const Progress& progress, std::string& prediction_path,
                     std::string& output_tail) {
   const StudyRequest& request = context.request;
   prediction_path =
@@ -106,7 +107,7 @@ Prediction external(const StudyContext& context, const std::string& scanned_path
     throw RunFailure("the segmenter wrote nothing to {output} (" + prediction_path + ")",
                      output_tail);
   }
-  return load_prediction(prediction_path, request.tracing.skip_bad_lines);
+  return load_prediction(prediction_path, request.tracing.skip_bad_lines, scanned.shift);
 }
 
 }  // namespace
@@ -133,7 +134,7 @@ Prediction segment_scanned_cloud(const StudyContext& context, const PointCloud& 
   if (is_baseline(context.request.segmenter)) {
     return baseline(context, scanned, stem, progress, prediction_path, warnings);
   }
-  return external(context, scanned_path, stem, progress, prediction_path, output_tail);
+  return external(context, scanned, scanned_path, stem, progress, prediction_path, output_tail);
 }
 
 }  // namespace occlusion::job

@@ -21,6 +21,7 @@
 #include "occlusion/core/large_buffer.hpp"
 #include "occlusion/core/octree.hpp"
 #include "occlusion/core/parallel.hpp"
+#include "occlusion/core/progress.hpp"
 
 namespace occlusion::octree_detail {
 
@@ -76,7 +77,8 @@ inline std::uint64_t spread_by_three(std::uint32_t x) {
 // Stable LSD radix sort of (codes[i], ids[i]) by code, on all cores: each
 // pass counts digits per part in parallel, then scatters each part to its own
 // offsets. Passes whose digit is the same for every code are skipped.
-inline void radix_sort_codes(LargeVector<std::uint64_t>& codes, LargeVector<std::uint32_t>& ids) {
+inline void radix_sort_codes(LargeVector<std::uint64_t>& codes, LargeVector<std::uint32_t>& ids,
+                             const Progress& progress) {
   constexpr int kDigitBits = 11;
   constexpr std::size_t kBuckets = std::size_t{1} << kDigitBits;
   const std::size_t n = codes.size();
@@ -87,6 +89,7 @@ inline void radix_sort_codes(LargeVector<std::uint64_t>& codes, LargeVector<std:
   std::vector<std::array<std::size_t, kBuckets>> counts(parts);
   const auto part_begin = [&](unsigned p) { return n * p / parts; };
   for (int shift = 0; shift < 3 * kMortonLevels; shift += kDigitBits) {
+    progress.check_cancel();
     parallel_for(parts, 1, parts, [&](std::size_t first, std::size_t last) {
       for (std::size_t p = first; p < last; ++p) {
         counts[p].fill(0);
@@ -129,8 +132,9 @@ inline void radix_sort_codes(LargeVector<std::uint64_t>& codes, LargeVector<std:
 template <class Shape>
 class MortonBuilder {
  public:
-  MortonBuilder(const OctreeOptions& options, LargeVector<OctreeNode>& nodes, OctreeStats& stats)
-      : options_(options), nodes_(nodes), stats_(stats) {}
+  MortonBuilder(const OctreeOptions& options, LargeVector<OctreeNode>& nodes, OctreeStats& stats,
+                const Progress& progress)
+      : options_(options), nodes_(nodes), stats_(stats), progress_(progress) {}
 
   // Puts `shapes` in leaf order into `sorted` (ids[position] = index in
   // `shapes`), builds the nodes, and returns the root: an inner node, or a
@@ -149,6 +153,7 @@ class MortonBuilder {
     const double scale = half > 0.0 ? std::ldexp(1.0, kMortonLevels) / (2.0 * half) : 0.0;
     constexpr double kLastCell = (1u << kMortonLevels) - 1;
     parallel_for(n, std::size_t{1} << 16, 0, [&](std::size_t first, std::size_t last) {
+      progress_.check_cancel();
       for (std::size_t i = first; i < last; ++i) {
         const Eigen::Vector3d c = shapes[i].centroid().template cast<double>();
         std::uint64_t code = 0;
@@ -161,10 +166,11 @@ class MortonBuilder {
         ids[i] = static_cast<PrimitiveId>(i);
       }
     });
-    radix_sort_codes(codes_, ids);
+    radix_sort_codes(codes_, ids, progress_);
 
     sorted.resize(n);
     parallel_for(n, std::size_t{1} << 16, 0, [&](std::size_t first, std::size_t last) {
+      progress_.check_cancel();
       for (std::size_t i = first; i < last; ++i) sorted[i] = shapes[ids[i]];
     });
     sorted_ = &sorted;
@@ -207,6 +213,8 @@ class MortonBuilder {
     // skipped levels too.
     if (split == kMortonLevels || is_leaf(end - begin, split)) return make_leaf(begin, end, depth);
 
+    // A relaxed load per inner node: a cancelled build stops within a few nodes.
+    progress_.check_cancel();
     const auto node_index = static_cast<std::uint32_t>(nodes_.size());
     nodes_.emplace_back();
     ++stats_.inner_nodes;
@@ -241,6 +249,7 @@ class MortonBuilder {
   const OctreeOptions& options_;
   LargeVector<OctreeNode>& nodes_;
   OctreeStats& stats_;
+  const Progress& progress_;
   const LargeVector<Shape>* sorted_ = nullptr;
   LargeVector<std::uint64_t> codes_;
   float root_half_ = 0.0f;

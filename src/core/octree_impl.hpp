@@ -19,7 +19,8 @@
 namespace occlusion {
 
 template <class Shape>
-Octree<Shape>::Octree(std::vector<Shape> shapes, const OctreeOptions& options) {
+Octree<Shape>::Octree(std::vector<Shape> shapes, const OctreeOptions& options,
+                      const Progress& progress) {
   if (options.max_leaf_size == 0) {
     throw std::invalid_argument("octree: max_leaf_size must be at least 1");
   }
@@ -38,6 +39,7 @@ Octree<Shape>::Octree(std::vector<Shape> shapes, const OctreeOptions& options) {
   if (!cpu_supports(traversal_)) {
     throw std::invalid_argument("octree: this build or CPU cannot run the traversal asked for");
   }
+  progress.check_cancel();
   const auto start = std::chrono::steady_clock::now();
   stats_ = OctreeStats{};
   stats_.primitives = shapes.size();
@@ -48,7 +50,7 @@ Octree<Shape>::Octree(std::vector<Shape> shapes, const OctreeOptions& options) {
     // up front: growing copies the nodes and touches their pages twice, and
     // reserved pages never written cost nothing.
     nodes_.reserve(std::min(shapes.size(), 2 * shapes.size() / options.max_leaf_size + 64));
-    octree_detail::MortonBuilder<Shape> builder(options, nodes_, stats_);
+    octree_detail::MortonBuilder<Shape> builder(options, nodes_, stats_, progress);
     const octree_detail::BuiltChild top = builder.build(shapes, shapes_, ids_);
     std::vector<Shape>().swap(shapes);  // the sorted copy replaces it
     if (top.count > 0) {

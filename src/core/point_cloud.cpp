@@ -1,5 +1,7 @@
 #include "occlusion/core/point_cloud.hpp"
 
+#include <charconv>
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 
@@ -21,7 +23,34 @@ void keep_where(const std::vector<T>& in, const std::vector<bool>& keep, std::ve
     if (keep[i]) out.push_back(in[i]);
   }
 }
+// The double nearest the shortest decimal that reads back as `value`.
+double shortest_decimal(float value) {
+  char text[32];
+  const auto written = std::to_chars(text, text + sizeof text, value);
+  double parsed = 0.0;
+  std::from_chars(text, written.ptr, parsed);
+  return parsed;
+}
 }  // namespace
+
+Eigen::Vector3d choose_global_shift(const Eigen::Vector3d& first_point) {
+  if (!first_point.allFinite() || first_point.cwiseAbs().maxCoeff() < kGlobalShiftThreshold) {
+    return Eigen::Vector3d::Zero();
+  }
+  Eigen::Vector3d shift;
+  for (int axis = 0; axis < 3; ++axis) {
+    shift[axis] = std::round(first_point[axis] / kGlobalShiftUnit) * kGlobalShiftUnit;
+  }
+  return shift;
+}
+
+Eigen::Vector3d PointCloud::original_position(std::size_t i) const {
+  const Eigen::Vector3f& p = positions.at(i);
+  if (!shifted()) return p.cast<double>();
+  return Eigen::Vector3d(shortest_decimal(p.x()), shortest_decimal(p.y()),
+                         shortest_decimal(p.z())) +
+         shift;
+}
 
 void PointCloud::validate() const {
   check_size(colours.size(), size(), "colours");
@@ -50,6 +79,7 @@ PointCloud PointCloud::subset(const std::vector<bool>& keep) const {
   PointCloud out;
   out.class_names = class_names;
   out.sensor = sensor;  // the same sensor saw the kept points
+  out.shift = shift;
   keep_where(positions, keep, out.positions);
   keep_where(colours, keep, out.colours);
   keep_where(labels, keep, out.labels);

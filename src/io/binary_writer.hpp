@@ -31,6 +31,13 @@ class LittleEndianWriter {
     std::memcpy(&bits, &value, sizeof bits);
     u32(bits);
   }
+  void f64(double value) {
+    static_assert(sizeof(double) == 8 && std::numeric_limits<double>::is_iec559,
+                  "PLY double is IEEE 754 binary64");
+    std::uint64_t bits;
+    std::memcpy(&bits, &value, sizeof bits);
+    for (int shift = 0; shift < 64; shift += 8) u8(static_cast<std::uint8_t>(bits >> shift));
+  }
 
  private:
   PutByte put_byte_;

@@ -15,8 +15,33 @@
 
 namespace occlusion::detail {
 
-PointCloud read_pcd(const std::string& path, CloudReadReport& report);
-PointCloud read_ply(const std::string& path, CloudReadReport& report);
+// Positions as the readers store them: relative to the global shift
+// (point_cloud.hpp) that `preset` fixes or else the first point whose
+// coordinates float can hold chooses. Coordinates stay double until shifted.
+class ShiftedPositions {
+ public:
+  explicit ShiftedPositions(const std::optional<Eigen::Vector3d>& preset)
+      : shift_(preset.value_or(Eigen::Vector3d::Zero())), chosen_(preset.has_value()) {}
+  // Not finite where a coordinate is not (the readers drop such points).
+  Eigen::Vector3f local(const double xyz[3]) {
+    const Eigen::Vector3d p(xyz[0], xyz[1], xyz[2]);
+    if (!chosen_ && p.cast<float>().allFinite()) {
+      shift_ = choose_global_shift(p);
+      chosen_ = true;
+    }
+    return (p - shift_).cast<float>();
+  }
+  const Eigen::Vector3d& shift() const { return shift_; }
+
+ private:
+  Eigen::Vector3d shift_;
+  bool chosen_;
+};
+
+PointCloud read_pcd(const std::string& path, const CloudReadOptions& options,
+                    CloudReadReport& report);
+PointCloud read_ply(const std::string& path, const CloudReadOptions& options,
+                    CloudReadReport& report);
 PointCloud read_text_cloud(const std::string& path, const CloudReadOptions& options,
                            CloudReadReport& report);
 // A room folder or an Area folder of rooms.

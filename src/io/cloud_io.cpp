@@ -24,8 +24,8 @@ PointCloud read_by_kind(const std::string& path, const CloudReadOptions& options
   if (!std::filesystem::exists(kind)) throw InputError(path, 0, "no such file or directory");
   if (std::filesystem::is_directory(kind)) return detail::read_s3dis(path, options, report);
   const std::string extension = detail::lower_extension(path);
-  if (extension == ".pcd") return detail::read_pcd(path, report);
-  if (extension == ".ply") return detail::read_ply(path, report);
+  if (extension == ".pcd") return detail::read_pcd(path, options, report);
+  if (extension == ".ply") return detail::read_ply(path, options, report);
   if (extension == ".txt" || extension == ".xyz" || extension == ".pts") {
     return detail::read_text_cloud(path, options, report);
   }
@@ -33,6 +33,35 @@ PointCloud read_by_kind(const std::string& path, const CloudReadOptions& options
                    "unknown point cloud extension '" + extension +
                        "'; supported: .pcd, .ply, .txt, .xyz, .pts, or an S3DIS room or Area "
                        "folder");
+}
+
+// A shift chosen from the first point helps a cloud that lies far from the
+// origin compared with its own size: its coordinates must shrink sixteen-fold
+// (four more bits of float). Otherwise (a cloud as large as it is far out, or
+// a first point far from the rest) the shift would only move the loss of
+// precision onto the other points.
+bool shift_helps(const PointCloud& cloud) {
+  Eigen::Vector3f lo, hi;
+  cloud.bounds(lo, hi);
+  const double local = std::max(lo.cwiseAbs().maxCoeff(), hi.cwiseAbs().maxCoeff());
+  const double original = std::max(cloud.to_original(lo.cast<double>()).cwiseAbs().maxCoeff(),
+                                   cloud.to_original(hi.cast<double>()).cwiseAbs().maxCoeff());
+  return 16.0 * local <= original;
+}
+
+// The cloud with the reader's shift, or read again without one where it
+// would not help; `counts` gets the counts of the reading kept.
+PointCloud read_shifted(const std::string& path, const CloudReadOptions& options,
+                        CloudReadReport& counts) {
+  CloudReadReport first = counts;
+  PointCloud cloud = read_by_kind(path, options, first);
+  if (options.shift || !cloud.shifted() || cloud.size() == 0 || shift_helps(cloud)) {
+    counts = std::move(first);
+    return cloud;
+  }
+  CloudReadOptions unshifted = options;
+  unshifted.shift = Eigen::Vector3d::Zero();
+  return read_by_kind(path, unshifted, counts);
 }
 
 }  // namespace
@@ -43,7 +72,7 @@ PointCloud read_cloud(const std::string& path, const CloudReadOptions& options,
   CloudReadReport& counts = report != nullptr ? *report : local;
   const std::size_t dropped_before = counts.dropped_nan;
   const std::size_t skipped_before = counts.skipped_lines;
-  PointCloud cloud = read_by_kind(path, options, counts);
+  PointCloud cloud = read_shifted(path, options, counts);
   if (cloud.size() == 0) {
     std::string reason = "no points";
     if (counts.dropped_nan > dropped_before) {

@@ -31,8 +31,8 @@ enum DataType { kAscii = 0, kBinary = 1, kBinaryCompressed = 2 };
 
 class PcdCloudReader {
  public:
-  PcdCloudReader(const std::string& path, CloudReadReport& report)
-      : path_(path), report_(report), bytes_(read_file_bytes(path)) {}
+  PcdCloudReader(const std::string& path, const CloudReadOptions& options, CloudReadReport& report)
+      : path_(path), report_(report), shifted_(options.shift), bytes_(read_file_bytes(path)) {}
 
   PointCloud run() {
     read_header();
@@ -472,11 +472,11 @@ class PcdCloudReader {
 
     for (std::size_t i = 0; i < points_; ++i) {
       const std::uint8_t* record = blob_.data.data() + i * blob_.point_step;
-      Eigen::Vector3f position;
+      double xyz[3];
       for (int axis = 0; axis < 3; ++axis) {
-        position[axis] =
-            static_cast<float>(load_value(record + axes_[axis]->offset, axes_[axis]->datatype));
+        xyz[axis] = load_value(record + axes_[axis]->offset, axes_[axis]->datatype);
       }
+      const Eigen::Vector3f position = shifted_.local(xyz);
       if (!position.allFinite()) {
         ++report_.dropped_nan;
         continue;
@@ -507,11 +507,14 @@ class PcdCloudReader {
       }
     }
     for (ScalarField& field : extra) report_.extra_fields.push_back(std::move(field));
+    cloud.shift = shifted_.shift();
+    cloud.sensor.origin = cloud.to_local(cloud.sensor.origin);
     return cloud;
   }
 
   const std::string& path_;
   CloudReadReport& report_;
+  ShiftedPositions shifted_;
   std::string bytes_;
   pcl::PCDReader reader_;
   pcl::PCLPointCloud2 blob_;
@@ -535,8 +538,9 @@ class PcdCloudReader {
 
 }  // namespace
 
-PointCloud read_pcd(const std::string& path, CloudReadReport& report) {
-  return PcdCloudReader(path, report).run();
+PointCloud read_pcd(const std::string& path, const CloudReadOptions& options,
+                    CloudReadReport& report) {
+  return PcdCloudReader(path, options, report).run();
 }
 
 }  // namespace occlusion::detail

@@ -1,6 +1,7 @@
 // PCL writes the header and, for binary_compressed, the LZF body; the ascii body
 // is written here so that floats keep every bit (PCL prints 8 significant
-// digits, one short of a float's 9).
+// digits, one short of a float's 9). A shifted cloud (PointCloud::shift) gets
+// x y z as double in its original frame.
 
 #include <pcl/PCLPointCloud2.h>
 #include <pcl/io/pcd_io.h>
@@ -27,19 +28,22 @@ void add_field(pcl::PCLPointCloud2& blob, const std::string& name, std::uint8_t 
   field.datatype = datatype;
   field.count = 1;
   blob.fields.push_back(field);
-  blob.point_step += 4;  // every field written is 4 bytes
+  blob.point_step += datatype == Field::FLOAT64 ? 8 : 4;
 }
 
 template <class T>
 void put(pcl::PCLPointCloud2& blob, std::size_t point, std::size_t field, T value) {
-  static_assert(sizeof(T) == 4, "every field written is 4 bytes");
+  static_assert(sizeof(T) == 4 || sizeof(T) == 8, "fields are written 4 or 8 bytes wide");
   std::memcpy(blob.data.data() + point * blob.point_step + blob.fields[field].offset, &value,
               sizeof value);
 }
 
 pcl::PCLPointCloud2 to_blob(const PointCloud& cloud, const std::vector<ScalarField>& extra) {
   pcl::PCLPointCloud2 blob;
-  for (const char* axis : {"x", "y", "z"}) add_field(blob, axis, Field::FLOAT32);
+  const bool shifted = cloud.shifted();
+  for (const char* axis : {"x", "y", "z"}) {
+    add_field(blob, axis, shifted ? Field::FLOAT64 : Field::FLOAT32);
+  }
   if (cloud.has_colours()) add_field(blob, "rgb", Field::FLOAT32);
   // uint32 as in PCL's PointXYZL and PointXYZRGBL, which load only an exact
   // type match; -1 (none) becomes 0xFFFFFFFF, which the reader maps back.
@@ -56,7 +60,12 @@ pcl::PCLPointCloud2 to_blob(const PointCloud& cloud, const std::vector<ScalarFie
 
   for (std::size_t i = 0; i < cloud.size(); ++i) {
     std::size_t f = 0;
-    for (int axis = 0; axis < 3; ++axis) put(blob, i, f++, cloud.positions[i][axis]);
+    if (shifted) {
+      const Eigen::Vector3d original = cloud.original_position(i);
+      for (int axis = 0; axis < 3; ++axis) put(blob, i, f++, original[axis]);
+    } else {
+      for (int axis = 0; axis < 3; ++axis) put(blob, i, f++, cloud.positions[i][axis]);
+    }
     if (cloud.has_colours()) {
       // PCL's packing, alpha opaque as PCL's own point types write it.
       const auto& rgb = cloud.colours[i];
@@ -94,6 +103,10 @@ std::string ascii_body(const pcl::PCLPointCloud2& blob) {
         end = std::to_chars(digits, digits + sizeof digits, value).ptr;
       } else if (field.datatype == Field::UINT32 || field.name == "rgb") {
         std::uint32_t value;
+        std::memcpy(&value, record + field.offset, sizeof value);
+        end = std::to_chars(digits, digits + sizeof digits, value).ptr;
+      } else if (field.datatype == Field::FLOAT64) {
+        double value;
         std::memcpy(&value, record + field.offset, sizeof value);
         end = std::to_chars(digits, digits + sizeof digits, value).ptr;
       } else {

@@ -67,8 +67,9 @@ const char* role_name(Role role) {
 
 class PlyCloudReader : public PlySink {
  public:
-  PlyCloudReader(std::string_view bytes, const std::string& path, CloudReadReport& report)
-      : bytes_(bytes), path_(path), report_(report) {}
+  PlyCloudReader(std::string_view bytes, const std::string& path, const CloudReadOptions& options,
+                 CloudReadReport& report)
+      : bytes_(bytes), path_(path), report_(report), shifted_(options.shift) {}
 
   PointCloud run() {
     header_ = parse_header(bytes_, path_);
@@ -79,6 +80,7 @@ class PlyCloudReader : public PlySink {
     for (std::size_t f = 0; f < extra_.size(); ++f) {
       report_.extra_fields.push_back(std::move(extra_[f]));
     }
+    cloud_.shift = shifted_.shift();
     return std::move(cloud_);
   }
 
@@ -205,8 +207,7 @@ class PlyCloudReader : public PlySink {
   }
 
   void commit_vertex() {
-    const Eigen::Vector3f position(static_cast<float>(xyz_[0]), static_cast<float>(xyz_[1]),
-                                   static_cast<float>(xyz_[2]));
+    const Eigen::Vector3f position = shifted_.local(xyz_);
     if (!position.allFinite()) {
       ++report_.dropped_nan;
       return;
@@ -231,6 +232,7 @@ class PlyCloudReader : public PlySink {
   bool has_colours_ = false;
   bool has_labels_ = false;
   bool has_instances_ = false;
+  ShiftedPositions shifted_;
   PointCloud cloud_;
 
   // The vertex being read, committed once all its properties are checked.
@@ -243,9 +245,10 @@ class PlyCloudReader : public PlySink {
 
 }  // namespace
 
-PointCloud read_ply(const std::string& path, CloudReadReport& report) {
+PointCloud read_ply(const std::string& path, const CloudReadOptions& options,
+                    CloudReadReport& report) {
   const std::string bytes = read_file_bytes(path);
-  return PlyCloudReader(bytes, path, report).run();
+  return PlyCloudReader(bytes, path, options, report).run();
 }
 
 }  // namespace occlusion::detail

@@ -22,7 +22,9 @@ std::string header(const PointCloud& cloud, const std::vector<ScalarField>& extr
       << "comment written by occlusion\n"
       << class_comment_lines(cloud.class_names, "comment ") << "element vertex " << cloud.size()
       << '\n'
-      << "property float x\nproperty float y\nproperty float z\n";
+      // A shifted cloud goes back to its original frame, in double.
+      << (cloud.shifted() ? "property double x\nproperty double y\nproperty double z\n"
+                          : "property float x\nproperty float y\nproperty float z\n");
   if (cloud.has_colours()) out << "property uchar red\nproperty uchar green\nproperty uchar blue\n";
   // The scalar_ prefix makes CloudCompare load them (cloud_formats.hpp).
   if (cloud.has_labels()) out << "property int " << kPlyScalarPrefix << "label\n";
@@ -44,10 +46,13 @@ void write_binary_body(std::ostream& out, const PointCloud& cloud,
     chunk.clear();
   };
   for (std::size_t i = 0; i < cloud.size(); ++i) {
-    const Eigen::Vector3f& p = cloud.positions[i];
-    buffer.f32(p.x());
-    buffer.f32(p.y());
-    buffer.f32(p.z());
+    if (cloud.shifted()) {
+      const Eigen::Vector3d p = cloud.original_position(i);
+      for (int axis = 0; axis < 3; ++axis) buffer.f64(p[axis]);
+    } else {
+      const Eigen::Vector3f& p = cloud.positions[i];
+      for (int axis = 0; axis < 3; ++axis) buffer.f32(p[axis]);
+    }
     if (cloud.has_colours()) {
       for (const std::uint8_t channel : cloud.colours[i]) buffer.u8(channel);
     }
@@ -65,8 +70,9 @@ void write_binary_body(std::ostream& out, const PointCloud& cloud,
   flush();
 }
 
-// The shortest text that reads back as exactly the same float.
-void append_float(std::string& text, float value) {
+// The shortest text that reads back as exactly the same float (or double).
+template <class Real>
+void append_float(std::string& text, Real value) {
   char digits[32];
   const auto result = std::to_chars(digits, digits + sizeof digits, value);
   text.append(digits, result.ptr);
@@ -82,12 +88,14 @@ void write_ascii_body(std::ostream& out, const PointCloud& cloud,
                       const std::vector<ScalarField>& extra) {
   std::string text;
   for (std::size_t i = 0; i < cloud.size(); ++i) {
-    const Eigen::Vector3f& p = cloud.positions[i];
-    append_float(text, p.x());
-    text += ' ';
-    append_float(text, p.y());
-    text += ' ';
-    append_float(text, p.z());
+    for (int axis = 0; axis < 3; ++axis) {
+      if (axis > 0) text += ' ';
+      if (cloud.shifted()) {
+        append_float(text, cloud.original_position(i)[axis]);
+      } else {
+        append_float(text, cloud.positions[i][axis]);
+      }
+    }
     if (cloud.has_colours()) {
       for (const std::uint8_t channel : cloud.colours[i]) {
         text += ' ';

@@ -127,14 +127,16 @@ std::vector<AnnotationFile> annotation_files(const fs::path& room) {
 
 // A room as its annotation files give it: each file one instance of its
 // class, the files in natural order. Instance ids continue from
-// `next_instance`, so they stay unique across an Area.
-PointCloud annotated_points(const fs::path& room, const CloudReadOptions& options,
+// `next_instance`, so they stay unique across an Area. The first file read
+// fixes options.shift for every other file of the folder.
+PointCloud annotated_points(const fs::path& room, CloudReadOptions& options,
                             CloudReadReport& report, std::int32_t& next_instance) {
   PointCloud cloud;
   for (const AnnotationFile& file : annotation_files(room)) {
     const std::string path = file.path.string();
     const std::string bytes = read_file_bytes(path);
     const PointCloud part = parse_text_cloud(bytes, path, kS3disColumns, options, report);
+    if (!options.shift && part.size() > 0) options.shift = part.shift;
     cloud.positions.insert(cloud.positions.end(), part.positions.begin(), part.positions.end());
     cloud.colours.insert(cloud.colours.end(), part.colours.begin(), part.colours.end());
     cloud.labels.resize(cloud.positions.size(), file.label);
@@ -144,7 +146,7 @@ PointCloud annotated_points(const fs::path& room, const CloudReadOptions& option
   return cloud;
 }
 
-std::string point_text(const Eigen::Vector3f& p) {
+std::string point_text(const Eigen::Vector3d& p) {
   return "(" + std::to_string(p.x()) + ", " + std::to_string(p.y()) + ", " + std::to_string(p.z()) +
          ")";
 }
@@ -153,7 +155,7 @@ std::string point_text(const Eigen::Vector3f& p) {
 // order when that file holds exactly the annotations' points, each point
 // labelled from the annotation file holding the same coordinates; otherwise
 // Annotations order, with the reason recorded in report.unverified_order.
-void append_room(const fs::path& room, const CloudReadOptions& options, CloudReadReport& report,
+void append_room(const fs::path& room, CloudReadOptions& options, CloudReadReport& report,
                  PointCloud& cloud, std::int32_t& next_instance) {
   const std::string name = room.filename().string();
   CloudReadReport annotation_report;
@@ -186,7 +188,7 @@ void append_room(const fs::path& room, const CloudReadOptions& options, CloudRea
       if (match.unmatched_targets > 0) {
         problem += "; " + std::to_string(match.unmatched_targets) + " of " + name +
                    ".txt's points are in no annotation file, the first " +
-                   point_text(listed.positions[match.first_unmatched_target]);
+                   point_text(listed.original_position(match.first_unmatched_target));
       }
       if (match.unmatched_sources > 0) {
         problem += "; " + std::to_string(match.unmatched_sources) +
@@ -222,15 +224,17 @@ bool is_room(const fs::path& directory) {
 
 }  // namespace
 
-PointCloud read_s3dis(const std::string& directory, const CloudReadOptions& options,
+PointCloud read_s3dis(const std::string& directory, const CloudReadOptions& read_options,
                       CloudReadReport& report) {
   fs::path root = fs::path(directory).lexically_normal();
   if (root.filename().empty()) root = root.parent_path();  // "room/" names "room"
   PointCloud cloud;
   cloud.class_names = s3dis_class_names();
+  CloudReadOptions options = read_options;  // every file of the folder gets one shift
   std::int32_t next_instance = 0;
   if (is_room(root)) {
     append_room(root, options, report, cloud, next_instance);
+    cloud.shift = options.shift.value_or(Eigen::Vector3d::Zero());
     return cloud;
   }
 
@@ -256,6 +260,7 @@ PointCloud read_s3dis(const std::string& directory, const CloudReadOptions& opti
     }
     append_room(path, options, report, cloud, next_instance);
   }
+  cloud.shift = options.shift.value_or(Eigen::Vector3d::Zero());
   return cloud;
 }
 

@@ -38,7 +38,8 @@ class TextCloudParser {
         columns_(required_columns.value_or(0)),
         columns_fixed_(required_columns.has_value()),
         options_(options),
-        report_(report) {}
+        report_(report),
+        shifted_(options.shift) {}
 
   PointCloud run() {
     // A UTF-8 byte order mark, which some Windows editors add, is not data.
@@ -59,6 +60,7 @@ class TextCloudParser {
       }
       add(point);
     }
+    cloud_.shift = shifted_.shift();
     return std::move(cloud_);
   }
 
@@ -125,9 +127,7 @@ class TextCloudParser {
   }
 
   void add(const TextPoint& point) {
-    const Eigen::Vector3f position(static_cast<float>(point.xyz[0]),
-                                   static_cast<float>(point.xyz[1]),
-                                   static_cast<float>(point.xyz[2]));
+    const Eigen::Vector3f position = shifted_.local(point.xyz);
     if (!position.allFinite()) {
       ++report_.dropped_nan;
       return;
@@ -146,6 +146,7 @@ class TextCloudParser {
   std::size_t columns_line_ = 0;
   const CloudReadOptions& options_;
   CloudReadReport& report_;
+  ShiftedPositions shifted_;
   PointCloud cloud_;
 };
 

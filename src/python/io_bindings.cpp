@@ -6,6 +6,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <array>
 #include <map>
 #include <optional>
 #include <string>
@@ -30,10 +31,11 @@ namespace {
 // A cloud as Python sees it: numpy arrays (None for an attribute the file
 // lacks) plus what the reader reports.
 struct CloudArrays {
-  py::array positions;   // float32 (N, 3)
-  py::object colours;    // uint8 (N, 3) or None
-  py::object labels;     // int32 (N,) or None; -1 = unlabelled
-  py::object instances;  // int32 (N,) or None
+  py::array positions;            // float32 (N, 3), relative to shift
+  std::array<double, 3> shift{};  // the global shift (PointCloud::shift)
+  py::object colours;             // uint8 (N, 3) or None
+  py::object labels;              // int32 (N,) or None; -1 = unlabelled
+  py::object instances;           // int32 (N,) or None
   std::vector<std::string> class_names;
   py::dict fields;  // other per-point properties: name -> float32 or int32 (N,)
   std::size_t dropped_nan = 0;
@@ -62,6 +64,7 @@ CloudArrays read_cloud_arrays(const std::string& path, bool skip_bad_lines) {
     cloud = read_cloud(path, options, &report);
   }
   CloudArrays out;
+  out.shift = {cloud.shift.x(), cloud.shift.y(), cloud.shift.z()};
   out.positions = to_numpy<float>(std::move(cloud.positions));
   const bool has_colours = cloud.has_colours(), has_labels = cloud.has_labels(),
              has_instances = cloud.has_instances();
@@ -123,9 +126,11 @@ void write_cloud_arrays(const std::string& path, const py::handle& positions,
                         const py::handle& colours, const py::handle& labels,
                         const py::handle& instances,
                         const std::optional<std::vector<std::string>>& class_names,
-                        const py::dict& fields, const std::optional<std::string>& format) {
+                        const py::dict& fields, const std::optional<std::string>& format,
+                        const std::array<double, 3>& shift) {
   PointCloud cloud;
   cloud.positions = points_from_array(positions, "positions");
+  cloud.shift = Eigen::Vector3d(shift[0], shift[1], shift[2]);
   if (!colours.is_none()) cloud.colours = colours_from_array(colours, "colours");
   if (!labels.is_none()) cloud.labels = int32_from_array(labels, "labels");
   if (!instances.is_none()) cloud.instances = int32_from_array(instances, "instances");
@@ -173,7 +178,11 @@ std::vector<std::vector<Eigen::Vector3d>> polygons_from_list(const py::list& pol
 
 void bind_io(py::module_& m) {
   py::class_<CloudArrays>(m, "Cloud", "A point cloud read by read_cloud.")
-      .def_readonly("positions", &CloudArrays::positions, "float32 (N, 3)")
+      .def_readonly("positions", &CloudArrays::positions,
+                    "float32 (N, 3), relative to shift: a point in the file is position + shift")
+      .def_readonly("shift", &CloudArrays::shift,
+                    "The global shift (x, y, z) subtracted from clouds far from the origin, "
+                    "else zeros; jobs take viewpoints and openings in the file's frame")
       .def_readonly("colours", &CloudArrays::colours, "uint8 (N, 3) RGB, or None")
       .def_readonly("labels", &CloudArrays::labels,
                     "int32 (N,) semantic class ids (-1 = unlabelled), or None")
@@ -214,9 +223,11 @@ malformed file; FileNotFoundError for a missing one.)doc");
         py::arg("colours") = py::none(), py::arg("labels") = py::none(),
         py::arg("instances") = py::none(), py::arg("class_names") = py::none(),
         py::arg("fields") = py::dict(), py::arg("format") = py::none(),
+        py::arg("shift") = std::array<double, 3>{0.0, 0.0, 0.0},
         R"doc(Writes a point cloud as .pcd or .ply, atomically.
 
-positions (N, 3); colours (N, 3) 0..255; labels and instances (N,) int, -1 = none;
+positions (N, 3), relative to shift (a Cloud's own shift: the file gets
+position + shift, in double, when it is not zero); colours (N, 3) 0..255; labels and instances (N,) int, -1 = none;
 class_names kept as header comments; fields: name -> (N,) array (integer dtypes
 are written as int32). format: pcd_binary_compressed (.pcd default),
 pcd_binary, pcd_ascii, ply_binary (.ply default), ply_ascii.)doc");

@@ -10,6 +10,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <array>
 #include <filesystem>
 #include <string>
 #include <utility>
@@ -89,6 +90,10 @@ PointCloud cloud_from_source(const py::handle& source, const py::handle& labels,
   }
   if (is_cloud && !source.attr("colours").is_none()) {
     cloud.colours = colours_from_array(source.attr("colours"), "colours");
+  }
+  if (is_cloud && py::hasattr(source, "shift")) {
+    const auto shift = source.attr("shift").cast<std::array<double, 3>>();
+    cloud.shift = Eigen::Vector3d(shift[0], shift[1], shift[2]);
   }
   return cloud;
 }

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Sets up, builds once and runs every test: C++ formatting, all GoogleTest
-# cases in parallel through ctest, a brief fuzzing of every reader
+# cases in parallel through ctest, then again under ASan + UBSan
+# (src/scripts/sanitize.sh), a brief fuzzing of every reader
 # (src/scripts/fuzz.sh), the Python module's pytest suite, then the browser viewer's checks
 # (src/scripts/web.sh installs and builds it): prettier, tsc, the Vitest unit
 # tests, and the end-to-end tests in headless Chromium (Debian's chromium,
@@ -12,6 +13,10 @@ bash "$root/src/scripts/check_format.sh"
 bash "$root/src/scripts/build.sh"
 build="${OCCLUSION_BUILD_DIR:-$root/build}"
 ctest --test-dir "$build" -j "$(nproc)" --output-on-failure
+# The whole C++ suite again with ASan + UBSan, in its own build-asan/
+# (src/scripts/sanitize.sh, docs/fuzzing.md: about 10 min on 2 cores with a
+# warm ccache); the limit keeps a stuck build or test from holding CI.
+timeout --kill-after=20 "${SANITIZE_SECONDS:-1500}" bash "$root/src/scripts/sanitize.sh"
 # Every reader under libFuzzer with ASan + UBSan, 15 s each (docs/fuzzing.md);
 # the outer limit keeps a stuck build or target from holding CI.
 FUZZ_SECONDS="${FUZZ_SECONDS:-15}" timeout --kill-after=20 1500 bash "$root/src/scripts/fuzz.sh"

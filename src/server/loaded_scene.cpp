@@ -53,6 +53,9 @@ std::shared_ptr<LoadedScene> cloud_scene(const PointCloud& cloud) {
   summary["class_names"] = to_json(cloud.class_names);
   Eigen::Vector3f lo, hi;
   cloud.bounds(lo, hi);
+  // The positions frame and the bounds are in the cloud's local frame: a
+  // point of the file is a position plus `shift` (PointCloud::shift).
+  summary["shift"] = to_json(cloud.shift);
   summary["bounds"] = bounds_json(lo.cast<double>(), hi.cast<double>());
   scene->frames = cloud_frames(cloud);
   return scene;

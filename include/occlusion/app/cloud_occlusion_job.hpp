@@ -65,6 +65,7 @@ struct CloudOcclusionReport {
   std::optional<ExteriorReport> exterior;
   std::vector<std::string> viewpoint_names;
   Json::Value frame;  // how the viewpoints were placed (ViewpointChoice::Resolved::frame)
+  Eigen::Vector3d shift = Eigen::Vector3d::Zero();  // the cloud's global shift
   std::size_t openings = 0;
   std::size_t dropped_nan = 0;
   std::size_t skipped_lines = 0;

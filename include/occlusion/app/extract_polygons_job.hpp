@@ -30,6 +30,9 @@ struct ExtractPolygonsRequest {
 struct ExtractPolygonsReport {
   ExtractPolygonsRequest request;
   MeshEstimate estimate;
+  // The cloud's global shift (PointCloud::shift); the estimate and the
+  // viewpoints are in the file's frame.
+  Eigen::Vector3d shift = Eigen::Vector3d::Zero();
   std::size_t points = 0;  // as loaded
   std::size_t dropped_nan = 0;
   std::size_t skipped_lines = 0;

@@ -4,6 +4,7 @@
 
 #include <json/value.h>
 
+#include <Eigen/Core>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,7 @@ struct ClassCount {
 struct ReconstructReport {
   ReconstructRequest request;
   std::size_t points = 0;
+  Eigen::Vector3d shift = Eigen::Vector3d::Zero();  // the cloud's global shift, written back
   std::vector<ClassCount> classes;
   std::vector<std::string> rooms;
   std::size_t dropped_nan = 0;

@@ -46,6 +46,9 @@ struct RegionGrowingReport {
   MeshEstimate estimate;
   MeshOcclusionResult occlusion;
   std::vector<std::string> viewpoint_names;
+  // The cloud's global shift (PointCloud::shift); the estimate and the
+  // viewpoints are in the file's frame.
+  Eigen::Vector3d shift = Eigen::Vector3d::Zero();
   std::size_t points = 0;  // as loaded
   std::size_t dropped_nan = 0;
   std::size_t skipped_lines = 0;

@@ -47,8 +47,9 @@ struct ScanReport {
   PointRadius point_radius;  // as traced, with the measured spacing
   std::vector<std::string> viewpoint_names;
   Json::Value frame;  // how the viewpoints were placed (ViewpointChoice::Resolved::frame)
-  std::vector<Eigen::Vector3d> viewpoint_positions;
-  std::vector<ClassVisibility> classes;  // empty for unlabelled clouds
+  std::vector<Eigen::Vector3d> viewpoint_positions;  // in the file's frame
+  Eigen::Vector3d shift = Eigen::Vector3d::Zero();   // the cloud's global shift
+  std::vector<ClassVisibility> classes;              // empty for unlabelled clouds
   std::size_t dropped_nan = 0;
   std::size_t skipped_lines = 0;
   std::vector<std::string> outputs;

@@ -28,7 +28,10 @@ struct ViewpointChoice {
   void validate() const;
 
   struct Resolved {
+    // In the scene's local frame: relative to `shift`, a cloud's global shift
+    // (PointCloud::shift; zero for meshes). Reports add it back.
     std::vector<Eigen::Vector3d> positions;
+    Eigen::Vector3d shift = Eigen::Vector3d::Zero();
     std::vector<std::string> names;
     // How they were placed, for the report (null when not recorded): the
     // frame used, both boxes, the up axis.

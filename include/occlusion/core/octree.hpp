@@ -29,6 +29,7 @@
 #include "occlusion/core/aabb.hpp"
 #include "occlusion/core/hit.hpp"
 #include "occlusion/core/large_buffer.hpp"
+#include "occlusion/core/progress.hpp"
 #include "occlusion/core/ray.hpp"
 
 namespace occlusion {
@@ -95,7 +96,11 @@ template <class Shape>
 class Octree {
  public:
   Octree() = default;
-  explicit Octree(std::vector<Shape> shapes, const OctreeOptions& options = {});
+  // Throws Cancelled when progress.cancel is set, before or during the build
+  // (checked at every inner node, so a build of millions of shapes stops within
+  // milliseconds).
+  explicit Octree(std::vector<Shape> shapes, const OctreeOptions& options = {},
+                  const Progress& progress = {});
 
   std::optional<Hit> intersect(const Ray& ray, PrimitiveId ignore_id = kNoPrimitive) const;
   bool occluded(const Ray& ray, PrimitiveId ignore_id = kNoPrimitive) const;

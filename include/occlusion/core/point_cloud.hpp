@@ -32,19 +32,44 @@ struct SensorFrame {
   bool single_view() const { return organised() || has_pose(); }
 };
 
+// A "global shift", as CloudCompare users know it: float keeps about seven
+// digits, so a cloud in UTM coordinates (x ~ 5e5, y ~ 5.4e6) would lose
+// everything below half a unit. The readers store such clouds relative to a
+// round shift, and every face converts between the two frames through the
+// cloud (to_local, to_original). A shift is chosen when the first point lies
+// kGlobalShiftThreshold or more from the origin on some axis (beyond 1024,
+// float coordinates are 2^-13 = 0.12 mm apart or more); it is that point
+// rounded to a multiple of kGlobalShiftUnit on every axis.
+inline constexpr double kGlobalShiftThreshold = 1e3;
+inline constexpr double kGlobalShiftUnit = 100.0;
+// Zero when `first_point` is within the threshold (or not finite).
+Eigen::Vector3d choose_global_shift(const Eigen::Vector3d& first_point);
+
 struct PointCloud {
+  // Relative to `shift`: the coordinates in the file are position + shift.
   std::vector<Eigen::Vector3f> positions;
   std::vector<std::array<std::uint8_t, 3>> colours;  // RGB
   std::vector<std::int32_t> labels;                  // semantic class id, -1 = unlabelled
   std::vector<std::int32_t> instances;               // instance id, -1 = none
   // class_names[label] when known (S3DIS: the 13 classes), else empty.
   std::vector<std::string> class_names;
-  SensorFrame sensor;  // PCD only; the default says "not a single-view frame"
+  SensorFrame sensor;  // PCD only, in the local frame; the default says "not a single-view frame"
+  Eigen::Vector3d shift = Eigen::Vector3d::Zero();  // the global shift (zero: none)
 
   std::size_t size() const { return positions.size(); }
   bool has_colours() const { return !colours.empty(); }
   bool has_labels() const { return !labels.empty(); }
   bool has_instances() const { return !instances.empty(); }
+  bool shifted() const { return shift != Eigen::Vector3d::Zero(); }
+
+  // A point given in the file's frame (a viewpoint, an opening's corner) in
+  // the frame of `positions`, and back.
+  Eigen::Vector3d to_local(const Eigen::Vector3d& original) const { return original - shift; }
+  Eigen::Vector3d to_original(const Eigen::Vector3d& local) const { return local + shift; }
+  // Point i in the file's frame, in double: the shortest decimal that reads
+  // back as its float position, plus the shift. So a coordinate read from
+  // "500003.123" is written back as 500003.123, not 500003.12299990654.
+  Eigen::Vector3d original_position(std::size_t i) const;
 
   // Throws std::invalid_argument if an attribute's size differs from the point
   // count, a position is not finite, or a label has no name while names exist.

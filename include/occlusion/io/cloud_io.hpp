@@ -21,6 +21,12 @@
 // multiset), each point labelled from the annotation file that holds it;
 // otherwise the annotation files in natural order, each file's lines in order,
 // and the room is listed in CloudReadReport::unverified_order.
+// Clouds far from the origin (UTM coordinates) are stored relative to a
+// global shift (PointCloud::shift, chosen from the first point: see
+// choose_global_shift), so float positions keep their precision; coordinates
+// are read in double and shifted before they become float. A shift that does
+// not shrink the cloud's largest coordinate sixteen-fold (a cloud as large as
+// it is far out, or a stray first point) is dropped and the file read again.
 // Points with a NaN or infinite coordinate (organised Kinect frames mark missing
 // depth that way) are dropped and counted in CloudReadReport::dropped_nan.
 // Properties the cloud has no slot for (PLY and PCD) are returned in the report.
@@ -52,6 +58,11 @@ struct CloudReadOptions {
   // 0x10 byte). When set, a text line that does not parse is skipped and
   // counted instead of being an error. Binary formats are never skipped over.
   bool skip_bad_lines = false;
+  // The global shift (PointCloud::shift) to store positions relative to,
+  // zero for none; unset, the reader chooses it from the first point (far
+  // clouds only). A second cloud compared point by point with a first one
+  // (a prediction with its ground truth) is read with the first one's shift.
+  std::optional<Eigen::Vector3d> shift;
 };
 
 struct CloudReadReport {

@@ -105,7 +105,8 @@ class SphereScene:
 class Cloud:
     """A point cloud read by read_cloud."""
 
-    positions: npt.NDArray[np.float32]  # (N, 3)
+    positions: npt.NDArray[np.float32]  # (N, 3), relative to shift
+    shift: tuple[float, float, float]  # the global shift: a point in the file is position + shift
     colours: Optional[npt.NDArray[np.uint8]]  # (N, 3)
     labels: Optional[npt.NDArray[np.int32]]  # (N,), -1 = unlabelled
     instances: Optional[npt.NDArray[np.int32]]  # (N,)
@@ -136,6 +137,7 @@ def write_cloud(
     class_names: Optional[Sequence[str]] = None,
     fields: dict[str, npt.ArrayLike] = ...,
     format: Optional[str] = None,
+    shift: tuple[float, float, float] = (0.0, 0.0, 0.0),
 ) -> None: ...
 def read_mesh(path: _Path) -> Mesh: ...
 def write_obj(
