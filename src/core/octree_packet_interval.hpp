@@ -38,6 +38,12 @@ struct PacketInterval {
 // margin's meaning (a ray along an axis has inverse 1e30): no culling then.
 inline constexpr float kIntervalLimit = 1e18f;
 
+// A node's lower and upper box planes, by axis.
+inline constexpr const float (OctreeNode::*kLowerPlane[3])[8] = {
+    &OctreeNode::lo_x, &OctreeNode::lo_y, &OctreeNode::lo_z};
+inline constexpr const float (OctreeNode::*kUpperPlane[3])[8] = {
+    &OctreeNode::hi_x, &OctreeNode::hi_y, &OctreeNode::hi_z};
+
 // Builds the interval over the lanes in `live`; false if it cannot cull
 // (directions of mixed signs, non-finite or extreme values).
 // origin[axis][j] and inverse[axis][j] are lane j's.
@@ -72,18 +78,8 @@ inline bool make_packet_interval(const float* const origin[3], const float* cons
     // a lane's near * i - o * i, both at most a few ulps of (|near| + |o|) |i|.
     out.margin[axis] = 0x1p-20f * (scene_magnitude + o_mag) * i_mag;
     if (!std::isfinite(out.margin[axis])) return false;
-    out.near_plane[axis] = up ? (axis == 0   ? &OctreeNode::lo_x
-                                 : axis == 1 ? &OctreeNode::lo_y
-                                             : &OctreeNode::lo_z)
-                              : (axis == 0   ? &OctreeNode::hi_x
-                                 : axis == 1 ? &OctreeNode::hi_y
-                                             : &OctreeNode::hi_z);
-    out.far_plane[axis] = up ? (axis == 0   ? &OctreeNode::hi_x
-                                : axis == 1 ? &OctreeNode::hi_y
-                                            : &OctreeNode::hi_z)
-                             : (axis == 0   ? &OctreeNode::lo_x
-                                : axis == 1 ? &OctreeNode::lo_y
-                                            : &OctreeNode::lo_z);
+    out.near_plane[axis] = up ? kLowerPlane[axis] : kUpperPlane[axis];
+    out.far_plane[axis] = up ? kUpperPlane[axis] : kLowerPlane[axis];
     // Entry (near - o) * i is smallest at the largest o going up, the
     // smallest o going down; the exit is largest at the opposite end.
     out.origin_near[axis] = up ? o_hi[axis] : o_lo[axis];
