@@ -44,6 +44,10 @@ Octree<Shape>::Octree(std::vector<Shape> shapes, const OctreeOptions& options,
   stats_ = OctreeStats{};
   stats_.primitives = shapes.size();
   for (const Shape& shape : shapes) bounds_.extend(shape.bounds());
+  if (!shapes.empty()) {
+    const Aabb padded = pad_box(bounds_);
+    magnitude_ = std::max(padded.lo.cwiseAbs().maxCoeff(), padded.hi.cwiseAbs().maxCoeff());
+  }
 
   if (!shapes.empty()) {
     // Room for the usual tree (about one node per max_leaf_size / 2 shapes)
@@ -80,9 +84,7 @@ std::optional<Hit> Octree<Shape>::traverse(const Ray& query, PrimitiveId ignore_
 template <class Shape>
 octree_detail::TreeView<Shape> Octree<Shape>::view() const {
   if (nodes_.empty()) return {};
-  const Aabb padded = pad_box(bounds_);
-  return {nodes_.data(), shapes_.data(), ids_.data(),
-          std::max(padded.lo.cwiseAbs().maxCoeff(), padded.hi.cwiseAbs().maxCoeff())};
+  return {nodes_.data(), shapes_.data(), ids_.data(), magnitude_};
 }
 
 template <class Shape>

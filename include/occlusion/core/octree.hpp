@@ -132,6 +132,7 @@ class Octree {
   LargeVector<PrimitiveId> ids_;            // ids_[leaf position] = original index
   LargeVector<std::uint32_t> position_of_;  // inverse of ids_
   Aabb bounds_;
+  float magnitude_ = 0.0f;  // largest coordinate magnitude of the padded bounds (TreeView)
   OctreeStats stats_;
   OctreeTraversal traversal_ = OctreeTraversal::kAuto;  // resolved: never kAuto
 };
