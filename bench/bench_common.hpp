@@ -31,6 +31,20 @@ double best_of(F&& run) {
   return best;
 }
 
+// The smallest of `repetitions` results of ours() and of theirs(), run in
+// turn (ours, theirs, ours, ...), so that a busy machine slows both alike and
+// the ratio of the two minima holds when the absolute figures drift.
+template <class F, class G>
+std::pair<double, double> best_of_alternating(int repetitions, F&& ours, G&& theirs) {
+  std::pair<double, double> best(std::numeric_limits<double>::infinity(),
+                                 std::numeric_limits<double>::infinity());
+  for (int k = 0; k < repetitions; ++k) {
+    best.first = std::min(best.first, ours());
+    best.second = std::min(best.second, theirs());
+  }
+  return best;
+}
+
 // 1234567 -> "1,234,567"
 inline std::string grouped(std::size_t n) {
   std::string digits = std::to_string(n);

@@ -1,4 +1,5 @@
 // bench_moc [--triangles N] [--samples N] [--threads T] [--seed S] [--cli PATH]
+//           [--repeat N]
 //
 // Times the mesh-occlusion hot path on a generated furnished room against
 // Intel Embree, and the `occlusion -moc` command end to end. See README.md.
@@ -36,14 +37,16 @@ namespace fs = std::filesystem;
 
 constexpr int kPattern = 7;
 constexpr const char* kUsage =
-    "usage: bench_moc [--triangles N] [--samples N] [--threads T] [--seed S] [--cli PATH]\n";
+    "usage: bench_moc [--triangles N] [--samples N] [--threads T] [--seed S] [--cli PATH]\n"
+    "                 [--repeat N]\n";
 
 struct Options {
   std::size_t triangles = 100'000;
   std::size_t samples = 100'000;
   unsigned threads = 2;
   std::uint64_t seed = 1;
-  std::string cli;  // empty: <build dir>/occlusion
+  std::string cli;            // empty: <build dir>/occlusion
+  int repeat = kRepetitions;  // traces of each tracer, alternating; the best counts
 };
 
 Options parse(int argc, char** argv) {
@@ -58,14 +61,17 @@ Options parse(int argc, char** argv) {
       o.threads = parse_threads(arg, flag_value(argc, argv, i));
     } else if (arg == "--seed") {
       o.seed = parse_unsigned(arg, flag_value(argc, argv, i));
+    } else if (arg == "--repeat") {
+      o.repeat = static_cast<int>(
+          std::min<std::size_t>(1000, parse_unsigned(arg, flag_value(argc, argv, i))));
     } else if (arg == "--cli") {
       o.cli = flag_value(argc, argv, i);
     } else {
       throw UsageError("unknown argument '" + arg + "'");
     }
   }
-  if (o.triangles == 0 || o.samples == 0 || o.threads == 0) {
-    throw UsageError("--triangles, --samples and --threads must be > 0");
+  if (o.triangles == 0 || o.samples == 0 || o.threads == 0 || o.repeat == 0) {
+    throw UsageError("--triangles, --samples, --threads and --repeat must be > 0");
   }
   return o;
 }
@@ -110,22 +116,24 @@ int run(const Options& o) {
     tree.emplace(pack_triangles(mesh.triangles()));
     return seconds_since(t0);
   });
-  std::vector<std::uint8_t> ours(n);
-  const double our_trace = best_of([&] {
-    const auto t0 = std::chrono::steady_clock::now();
-    tree->occluded_batch(shadow.rays.data(), n, shadow.ignore.data(), ours.data(), o.threads);
-    return seconds_since(t0);
-  });
-
   std::fprintf(stderr, "bench_moc: embree ...\n");
   EmbreeScene embree(o.threads);
   const double embree_build = best_of([&] { return embree.build(mesh); });
-  std::vector<std::uint8_t> theirs(n);
-  const double embree_trace = best_of([&] {
-    const auto t0 = std::chrono::steady_clock::now();
-    embree.occluded(shadow.rays.data(), n, theirs.data(), o.threads);
-    return seconds_since(t0);
-  });
+
+  std::fprintf(stderr, "bench_moc: tracing, ours and embree in turn, %d times ...\n", o.repeat);
+  std::vector<std::uint8_t> ours(n), theirs(n);
+  const auto [our_trace, embree_trace] = best_of_alternating(
+      o.repeat,
+      [&] {
+        const auto t0 = std::chrono::steady_clock::now();
+        tree->occluded_batch(shadow.rays.data(), n, shadow.ignore.data(), ours.data(), o.threads);
+        return seconds_since(t0);
+      },
+      [&] {
+        const auto t0 = std::chrono::steady_clock::now();
+        embree.occluded(shadow.rays.data(), n, theirs.data(), o.threads);
+        return seconds_since(t0);
+      });
 
   std::fprintf(stderr, "bench_moc: compute_mesh_occlusion in process ...\n");
   start = std::chrono::steady_clock::now();

@@ -42,8 +42,7 @@ inline void fill_node(OctreeNode& node, const BuiltChild* children, std::uint32_
   std::fill(std::begin(node.hi_x), std::end(node.hi_x), 0.0f);
   std::fill(std::begin(node.hi_y), std::end(node.hi_y), 0.0f);
   std::fill(std::begin(node.hi_z), std::end(node.hi_z), 0.0f);
-  std::fill(std::begin(node.index), std::end(node.index), 0u);
-  std::fill(std::begin(node.count), std::end(node.count), 0u);
+  std::fill(std::begin(node.child), std::end(node.child), OctreeChild{0, 0});
   for (std::uint32_t c = 0; c < child_count; ++c) {
     const int k = children[c].octant;
     node.occupied |= 1u << k;
@@ -55,8 +54,7 @@ inline void fill_node(OctreeNode& node, const BuiltChild* children, std::uint32_
     node.hi_x[k] = box.hi.x();
     node.hi_y[k] = box.hi.y();
     node.hi_z[k] = box.hi.z();
-    node.index[k] = children[c].index;
-    node.count[k] = children[c].count;
+    node.child[k] = OctreeChild{children[c].index, children[c].count};
   }
 }
 

@@ -33,26 +33,23 @@ inline std::optional<Hit> trace_single_ray(const TreeView<Shape>& tree, RayCompo
                                            std::uint32_t node_index, std::optional<Hit> best) {
   const Eigen::Vector3f origin(ray.origin_x, ray.origin_y, ray.origin_z);
   SlabRay slab(origin, inverse, ray.t_min, ray.t_max);
-  // The octant a ray enters first: lower half along an axis it travels up.
-  const int near_octant = (ray.direction_x < 0.0f ? 1 : 0) | (ray.direction_y < 0.0f ? 2 : 0) |
-                          (ray.direction_z < 0.0f ? 4 : 0);
+  const int near_octant = near_octant_of(ray.direction_x, ray.direction_y, ray.direction_z);
 
   struct Entry {
-    std::uint32_t index;
-    std::uint32_t count;  // 0 = inner node
+    OctreeChild child;
     float t_enter;
   };
   Entry stack[kStackSize];
   std::size_t top = 0;
-  stack[top++] = {node_index, 0, ray.t_min};
+  stack[top++] = {OctreeChild{node_index, 0}, ray.t_min};
 
   while (top > 0) {
     const Entry entry = stack[--top];
     // Only a closest-hit query shrinks t_max below what a child was pushed with.
     if (!kAnyHit && entry.t_enter > ray.t_max) continue;
-    if (entry.count > 0) {
-      const std::uint32_t end = entry.index + entry.count;
-      for (std::uint32_t i = entry.index; i < end; ++i) {
+    if (entry.child.count > 0) {
+      const std::uint32_t end = entry.child.index + entry.child.count;
+      for (std::uint32_t i = entry.child.index; i < end; ++i) {
         const PrimitiveId id = tree.ids[i];
         if (id == ignore_id) continue;
         float t = 0.0f;
@@ -72,7 +69,7 @@ inline std::optional<Hit> trace_single_ray(const TreeView<Shape>& tree, RayCompo
       continue;
     }
 
-    const OctreeNode& node = tree.nodes[entry.index];
+    const OctreeNode& node = tree.nodes[entry.child.index];
     // All eight slots in one fixed-length loop the compiler can vectorise;
     // empty slots are masked out with `occupied` below.
     float t_near[8];
@@ -85,7 +82,7 @@ inline std::optional<Hit> trace_single_ray(const TreeView<Shape>& tree, RayCompo
       const int rank = 31 - __builtin_clz(ranked);
       ranked &= ~(1u << rank);
       const int k = rank ^ near_octant;
-      stack[top++] = Entry{node.index[k], node.count[k], t_near[k]};
+      stack[top++] = Entry{node.child[k], t_near[k]};
     }
   }
   return best;

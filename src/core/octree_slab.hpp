@@ -22,6 +22,13 @@ namespace occlusion::octree_detail {
 inline constexpr int kMaxDepthLimit = 32;
 inline constexpr std::size_t kStackSize = 8 * (kMaxDepthLimit + 2);
 
+// The octant a ray travelling along (x, y, z) enters first: the lower half
+// along each axis it travels up. Visiting slots in the order k ^ near_octant
+// is front to back.
+inline int near_octant_of(float x, float y, float z) {
+  return (x < 0.0f ? 1 : 0) | (y < 0.0f ? 2 : 0) | (z < 0.0f ? 4 : 0);
+}
+
 // kRankedMask[s][m]: the bit mask m with bit k moved to bit k ^ s.
 struct RankedMaskTable {
   std::uint8_t table[8][256];

@@ -74,6 +74,13 @@ struct OctreeStats {
   std::size_t memory_bytes = 0;
 };
 
+// count == 0: the inner node at nodes[index].
+// count > 0: a leaf, shapes[index .. index + count).
+struct OctreeChild {
+  std::uint32_t index;
+  std::uint32_t count;
+};
+
 // One flattened 8-wide node: the boxes of up to eight children and where each
 // lives. Child k sits in slot k = its octant (bit 0: upper x, bit 1: upper y,
 // bit 2: upper z), so a ray visits slots front to back in the order k ^ s,
@@ -81,10 +88,10 @@ struct OctreeStats {
 struct alignas(64) OctreeNode {
   float lo_x[8], lo_y[8], lo_z[8];
   float hi_x[8], hi_y[8], hi_z[8];
-  // count[k] == 0: child k is the inner node at nodes[index[k]].
-  // count[k] > 0: child k is a leaf, shapes[index[k] .. index[k] + count[k]).
-  std::uint32_t index[8];
-  std::uint32_t count[8];
+  // Where child k lives. Copied whole onto the traversal stacks: one 8-byte
+  // store that the pop's 8-byte load forwards from, where two 4-byte stores
+  // would make it wait.
+  OctreeChild child[8];
   std::uint32_t occupied = 0;  // bit k set: slot k holds a child
 };
 
