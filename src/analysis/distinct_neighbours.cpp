@@ -191,7 +191,10 @@ std::vector<DistinctNeighbour> distinct_neighbours(const std::vector<Eigen::Vect
       const bool answered = spans_all || a.coincident >= cap ||
                             std::sqrt(static_cast<double>(a.nearest_squared)) <= trusted;
       if (answered) {
-        answers[open[j]] = {std::min(a.coincident, cap), a.nearest_squared};
+        // As a kd-tree's `cap` nearest: all within `same`, none beyond.
+        answers[open[j]] = {
+            std::min(a.coincident, cap),
+            a.coincident >= cap ? std::numeric_limits<float>::infinity() : a.nearest_squared};
       } else {
         still_open.push_back(open[j]);
       }

@@ -6,8 +6,9 @@
 // For each query point q (an index into the positions) and its distance
 // `same[q]` (closer points are one position with it), the answer holds
 // - coincident: how many points lie within `same` of q, q itself included;
-// - nearest_squared: the smallest squared distance beyond `same` (infinity
-//   when every point lies within it).
+// - nearest_squared: the smallest squared distance beyond `same`; infinity
+//   when every point lies within it, or `cap` points do (as a kd-tree's
+//   `cap` nearest neighbours would say).
 // Distances are those a float kd-tree (FLANN's L2_Simple, as PCL uses it)
 // computes: the squared distance summed in float, x then y then z; a point
 // lies within `same` when the square root of that float, in double, is at
