@@ -49,15 +49,17 @@ void check_inputs(const PointCloud& cloud, const std::vector<Eigen::Vector3d>& v
 }
 
 // Only blocking points go into the tree: the others must not stop rays, and
-// the result needs no hit ids, so they need not be mapped back.
-std::vector<Eigen::Vector3f> blocking_positions(const PointCloud& cloud,
-                                                const std::vector<bool>& blocking) {
-  if (blocking.empty()) return cloud.positions;
+// the result needs no hit ids, so they need not be mapped back. Without a
+// mask the cloud's own positions make the spheres: a copy of them would live
+// through the whole build (12 bytes a point at the peak).
+std::vector<Sphere> blocking_spheres(const PointCloud& cloud, const std::vector<bool>& blocking,
+                                     float radius) {
+  if (blocking.empty()) return make_spheres(cloud.positions, radius);
   std::vector<Eigen::Vector3f> kept;
   for (std::size_t i = 0; i < cloud.size(); ++i) {
     if (blocking[i]) kept.push_back(cloud.positions[i]);
   }
-  return kept;
+  return make_spheres(kept, radius);
 }
 
 // A ray that hit a point may still have left the room first, through an
@@ -94,9 +96,9 @@ CloudOcclusionResult compute_cloud_occlusion(const PointCloud& cloud,
 
   auto start = Clock::now();
   progress("building octree", 0.0);
-  const SphereOctree tree(make_spheres(blocking_positions(cloud, options.blocking),
-                                       static_cast<float>(options.point_radius)),
-                          options.octree, progress);
+  const SphereOctree tree(
+      blocking_spheres(cloud, options.blocking, static_cast<float>(options.point_radius)),
+      options.octree, progress);
   result.build_seconds = seconds_since(start);
   result.octree = tree.stats();
   result.points = cloud.size();

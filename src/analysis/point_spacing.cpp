@@ -1,12 +1,11 @@
 #include "occlusion/analysis/point_spacing.hpp"
 
-#include <pcl/kdtree/kdtree_flann.h>
-#include <pcl/point_cloud.h>
-#include <pcl/point_types.h>
-
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <vector>
+
+#include "occlusion/analysis/distinct_neighbours.hpp"
 
 namespace occlusion {
 
@@ -14,7 +13,7 @@ namespace {
 
 // Neighbours asked for per query: a point stored k times has k - 1 neighbours
 // at distance 0 before the first distinct one.
-constexpr int kNeighbours = 8;
+constexpr std::uint32_t kNeighbours = 8;
 
 // Positions closer than this (relative to their magnitude, floats) are one position.
 double same_position_distance(const Eigen::Vector3f& p) {
@@ -33,31 +32,26 @@ PointSpacing measure_point_spacing(const PointCloud& cloud) {
   if (cloud.size() < 2) {
     throw std::invalid_argument("point spacing: the cloud needs at least two points");
   }
-  pcl::PointCloud<pcl::PointXYZ>::Ptr points(new pcl::PointCloud<pcl::PointXYZ>);
-  points->reserve(cloud.size());
-  for (const auto& p : cloud.positions) points->push_back(pcl::PointXYZ(p.x(), p.y(), p.z()));
-  pcl::KdTreeFLANN<pcl::PointXYZ> tree;
-  tree.setInputCloud(points);
+  const std::size_t stride = std::max<std::size_t>(1, cloud.size() / kSpacingSamples);
+  std::vector<std::size_t> samples;
+  std::vector<double> same;
+  for (std::size_t i = 0; i < cloud.size(); i += stride) {
+    samples.push_back(i);
+    same.push_back(same_position_distance(cloud.positions[i]));
+  }
+  // A kd-tree's k nearest (k = kNeighbours, the sample itself among them):
+  // the first beyond `same` is the nearest distinct neighbour, unless all k
+  // are within it; any of them but the sample itself makes a duplicate.
+  const std::vector<DistinctNeighbour> found =
+      distinct_neighbours(cloud.positions, samples, same, kNeighbours);
 
   PointSpacing result;
-  const std::size_t stride = std::max<std::size_t>(1, cloud.size() / kSpacingSamples);
   std::vector<double> distances;
-  pcl::Indices nearest(kNeighbours);
-  std::vector<float> squared(kNeighbours);
-  for (std::size_t i = 0; i < cloud.size(); i += stride) {
-    const int found = tree.nearestKSearch((*points)[i], kNeighbours, nearest, squared);
-    const double same = same_position_distance(cloud.positions[i]);
-    bool duplicate = false;
-    for (int k = 0; k < found; ++k) {
-      const double distance = std::sqrt(static_cast<double>(squared[static_cast<std::size_t>(k)]));
-      if (distance <= same) {
-        duplicate = duplicate || nearest[static_cast<std::size_t>(k)] != static_cast<int>(i);
-        continue;
-      }
-      distances.push_back(distance);
-      break;
+  for (const DistinctNeighbour& neighbour : found) {
+    result.duplicate_hits += neighbour.coincident >= 2 ? 1 : 0;
+    if (neighbour.coincident < kNeighbours && std::isfinite(neighbour.nearest_squared)) {
+      distances.push_back(std::sqrt(static_cast<double>(neighbour.nearest_squared)));
     }
-    result.duplicate_hits += duplicate ? 1 : 0;
   }
   if (distances.empty()) {
     throw std::invalid_argument(

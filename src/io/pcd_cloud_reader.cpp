@@ -36,9 +36,14 @@ class PcdCloudReader {
 
   PointCloud run() {
     read_header();
-    const std::size_t expected = blob_.data.size();
+    const std::size_t expected = points_ * blob_.point_step;
     if (data_type_ == kAscii) {
       parse_ascii_body();
+    } else if (data_type_ == kBinary) {
+      // Read in place: PCL would copy the body into the blob and scan it for
+      // NaN, and convert() reads every value anyway.
+      check_binary_size(expected);
+      body_ = reinterpret_cast<const std::uint8_t*>(bytes_.data()) + data_index_;
     } else {
       check_binary_size(expected);
       const auto* data = reinterpret_cast<const unsigned char*>(bytes_.data());
@@ -55,8 +60,11 @@ class PcdCloudReader {
                          "PCL could not decode the binary data (its reason is printed above)");
       }
     }
-    if (blob_.data.size() != expected) {
-      throw InputError(path_, 0, "the data does not match the header's point count");
+    if (data_type_ != kBinary) {
+      if (blob_.data.size() != expected) {
+        throw InputError(path_, 0, "the data does not match the header's point count");
+      }
+      body_ = blob_.data.data();
     }
     map_fields();
     return convert();
@@ -208,7 +216,7 @@ class PcdCloudReader {
                            std::to_string(declared_bytes_) + " bytes");
     }
     check_field_layout();
-    blob_.data.resize(points_ * blob_.point_step);
+    if (data_type_ != kBinary) blob_.data.resize(points_ * blob_.point_step);
 
     // Class names ride in comments, which PCL skips.
     ClassNameList names;
@@ -471,7 +479,7 @@ class PcdCloudReader {
     }
 
     for (std::size_t i = 0; i < points_; ++i) {
-      const std::uint8_t* record = blob_.data.data() + i * blob_.point_step;
+      const std::uint8_t* record = body_ + i * blob_.point_step;
       double xyz[3];
       for (int axis = 0; axis < 3; ++axis) {
         xyz[axis] = load_value(record + axes_[axis]->offset, axes_[axis]->datatype);
@@ -517,7 +525,8 @@ class PcdCloudReader {
   ShiftedPositions shifted_;
   std::string bytes_;
   pcl::PCDReader reader_;
-  pcl::PCLPointCloud2 blob_;
+  pcl::PCLPointCloud2 blob_;            // its data holds decoded ascii and compressed bodies
+  const std::uint8_t* body_ = nullptr;  // the points, point_step bytes each
   int version_ = 0;
   int data_type_ = 0;
   unsigned int data_index_ = 0;

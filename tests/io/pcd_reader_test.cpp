@@ -106,6 +106,42 @@ TEST(PcdReader, BinaryWithNanAndSeparateColourChannels) {
   EXPECT_TRUE(report.extra_fields.empty()) << "padding is not a field";
 }
 
+// Binary bodies are read where they lie in the file: values of every size at
+// unaligned offsets (15-byte points) read as the same cloud written in ascii.
+TEST(PcdReader, BinaryOfOddPointSizeReadsAsItsAsciiTwin) {
+  testing::ScratchDirectory dir;
+  const std::string fields = "x y z _";
+  const std::string sizes = "4 8 2 1";
+  const std::string types = "F F I U";
+  std::string body;
+  std::string ascii;
+  for (int i = 0; i < 1000; ++i) {
+    const float x = 0.25f * static_cast<float>(i) - 7.5f;
+    const double y = 0.5 * i - 100.0;
+    const auto z = static_cast<std::int16_t>(300 - 7 * i);
+    char point[15];
+    std::memcpy(point, &x, 4);
+    std::memcpy(point + 4, &y, 8);
+    std::memcpy(point + 12, &z, 2);
+    point[14] = static_cast<char>(i);
+    body.append(point, 15);
+    ascii += std::to_string(x) + " " + std::to_string(y) + " " + std::to_string(z) + " " +
+             std::to_string(i % 256) + "\n";
+  }
+  const std::string binary_path = dir.file("odd.pcd");
+  const std::string ascii_path = dir.file("odd_ascii.pcd");
+  testing::write_text(binary_path, pcd_header(fields, sizes, types, 1000, 1, "binary") + body);
+  testing::write_text(ascii_path, pcd_header(fields, sizes, types, 1000, 1, "ascii") + ascii);
+  const PointCloud binary = read_cloud(binary_path);
+  const PointCloud text = read_cloud(ascii_path);
+  ASSERT_EQ(binary.size(), 1000u);
+  ASSERT_EQ(text.size(), 1000u);
+  for (std::size_t i = 0; i < binary.size(); ++i) {
+    ASSERT_EQ(binary.positions[i], text.positions[i]) << "point " << i;
+  }
+  EXPECT_EQ(binary.positions[3], Eigen::Vector3f(-6.75f, -98.5f, 279.0f));
+}
+
 TEST(PcdReader, PclLabelTypeAndObjectFieldMapToLabelsAndInstances) {
   testing::ScratchDirectory dir;
   const std::string path = dir.file("xyzl.pcd");
