@@ -22,11 +22,10 @@ using analysis_support::Clock;
 using analysis_support::seconds_since;
 using mesh_estimation::Cloud;
 using mesh_estimation::ClusterPolygon;
-using mesh_estimation::Normals;
+using mesh_estimation::Neighbourhoods;
 using mesh_estimation::PlaneOutcome;
 using mesh_estimation::PolygonOutcome;
 using mesh_estimation::Segmentation;
-using mesh_estimation::Tree;
 
 void check_options(const RegionGrowingOptions& options) {
   const auto fail = [](const std::string& message) {
@@ -214,19 +213,20 @@ MeshEstimate estimate_mesh(const PointCloud& cloud, const RegionGrowingOptions& 
   }
 
   auto start = Clock::now();
-  // One kd-tree for normals, region growing and edge points. Neither needs
-  // its neighbours sorted by distance, and sorting costs ~40 % of the normals.
-  const Tree::Ptr tree(new Tree(/*sorted=*/false));
-  const Normals::Ptr normals = mesh_estimation::estimate_normals(points, tree, options, progress);
+  // One neighbour search for normals, region growing and edge points.
+  Neighbourhoods hoods = mesh_estimation::find_neighbourhoods(points, options, progress);
   estimate.timings.normals_seconds = seconds_since(start);
 
   start = Clock::now();
-  const Segmentation segmentation =
-      mesh_estimation::grow_regions(points, normals, tree, options, progress);
+  const Segmentation segmentation = mesh_estimation::grow_regions(hoods, options, progress);
   estimate.timings.region_growing_seconds = seconds_since(start);
   if (segmentation.regions.regions == 0) {
-    throw std::logic_error("mesh estimation: PCL's region growing refused its input");
+    throw std::logic_error("mesh estimation: region growing found no region");
   }
+  // Only edge recovery needs the neighbour lists from here on.
+  std::vector<Eigen::Vector3f>().swap(hoods.normals);
+  std::vector<float>().swap(hoods.curvatures);
+  if (!options.recover_edges) std::vector<pcl::index_t>().swap(hoods.neighbours);
   const std::vector<pcl::PointIndices>& clusters = segmentation.clusters;
   estimate.regions = segmentation.regions;
   estimate.clusters_found = clusters.size();
@@ -246,7 +246,8 @@ MeshEstimate estimate_mesh(const PointCloud& cloud, const RegionGrowingOptions& 
   });
   mesh_estimation::EdgePoints edges;
   if (options.recover_edges) {
-    edges = mesh_estimation::recover_edge_points(points, *tree, label, planes, options);
+    edges = mesh_estimation::recover_edge_points(points, hoods, label, planes, options);
+    std::vector<pcl::index_t>().swap(hoods.neighbours);
   }
   estimate.timings.planes_seconds = seconds_since(start);
 

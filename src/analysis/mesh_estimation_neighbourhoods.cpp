@@ -1,0 +1,96 @@
+// One k-nearest-neighbour search per point serves both normals and region
+// growing (and later edge recovery): PCL's kd-tree (FLANN) is built once, each
+// point's max(normal_k, neighbours) nearest are found once, the normal is
+// computed from them exactly as NormalEstimationOMP does (same search, same
+// order, same pcl::computePointNormal, same flip), and the `neighbours` nearest
+// are kept in one flat array. FLANN returns them nearest first, so they are the
+// set PCL's region growing would get from its own k = neighbours search
+// (points at exactly the same distance as the last one kept aside). The tree is
+// freed on return.
+
+#include <pcl/features/normal_3d.h>
+#include <pcl/kdtree/kdtree_flann.h>
+
+#include <algorithm>
+#include <limits>
+
+#include "mesh_estimation_stages.hpp"
+#include "occlusion/core/parallel.hpp"
+
+namespace occlusion::mesh_estimation {
+
+namespace {
+
+// About 20 progress steps, but no block so small that the threads idle.
+std::size_t block_size(std::size_t count) {
+  return std::max<std::size_t>(count / 20, 4096);
+}
+
+// NormalEstimation's normal from the `normal_k` nearest (nearest first), as
+// its computeFeature writes it: NaN when PCL finds none, else flipped towards
+// the cloud's sensor origin (0, 0, 0 here).
+void store_normal(const Cloud& cloud, std::size_t i, const pcl::Indices& nearest,
+                  Neighbourhoods& hoods) {
+  Eigen::Vector4f plane;
+  float curvature = 0.0f;
+  if (nearest.empty() || !pcl::computePointNormal(cloud, nearest, plane, curvature)) {
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    hoods.normals[i] = Eigen::Vector3f::Constant(nan);
+    hoods.curvatures[i] = nan;
+    return;
+  }
+  pcl::flipNormalTowardsViewpoint(cloud[i], 0.0f, 0.0f, 0.0f, plane[0], plane[1], plane[2]);
+  hoods.normals[i] = plane.head<3>();
+  hoods.curvatures[i] = curvature;
+}
+
+}  // namespace
+
+Neighbourhoods find_neighbourhoods(const Cloud::ConstPtr& cloud,
+                                   const RegionGrowingOptions& options, const Progress& progress) {
+  const std::size_t count = cloud->size();
+  // PCL takes k as an int; beyond the cloud's size the search gives every point anyway.
+  const std::size_t normal_k = std::min<std::size_t>(options.normal_k, count);
+  const std::size_t width = std::min<std::size_t>(options.neighbours, count);
+  const std::size_t k = std::max(normal_k, width);
+
+  Neighbourhoods hoods;
+  hoods.width = width;
+  hoods.normals.resize(count);
+  hoods.curvatures.resize(count);
+  hoods.neighbours.resize(count * width);
+
+  pcl::KdTreeFLANN<pcl::PointXYZ> tree(/*sorted=*/false);
+  tree.setInputCloud(cloud);
+  const std::size_t block = block_size(count);
+  progress("normals", 0.0);
+  for (std::size_t begin = 0; begin < count; begin += block) {
+    const std::size_t end = std::min(count, begin + block);
+    parallel_for(end - begin, 1024, options.threads, [&](std::size_t first, std::size_t last) {
+      pcl::Indices nearest, normal_nearest;
+      std::vector<float> distances;
+      for (std::size_t i = begin + first; i < begin + last; ++i) {
+        tree.nearestKSearch((*cloud)[i], static_cast<unsigned>(k), nearest, distances);
+        if (nearest.size() == normal_k) {
+          store_normal(*cloud, i, nearest, hoods);
+        } else {
+          normal_nearest.assign(
+              nearest.begin(),
+              nearest.begin() + static_cast<std::ptrdiff_t>(std::min(normal_k, nearest.size())));
+          store_normal(*cloud, i, normal_nearest, hoods);
+        }
+        const std::size_t kept = std::min(width, nearest.size());
+        std::copy_n(nearest.begin(), kept,
+                    hoods.neighbours.begin() + static_cast<std::ptrdiff_t>(i * width));
+        // FLANN always fills k; kept < width would mean it did not.
+        std::fill_n(hoods.neighbours.begin() + static_cast<std::ptrdiff_t>(i * width + kept),
+                    width - kept, static_cast<pcl::index_t>(i));
+      }
+    });
+    progress.check_cancel();
+    progress("normals", static_cast<double>(end) / static_cast<double>(count));
+  }
+  return hoods;
+}
+
+}  // namespace occlusion::mesh_estimation
