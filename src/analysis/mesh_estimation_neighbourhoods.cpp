@@ -1,5 +1,6 @@
 // One k-nearest-neighbour search per point serves both normals and region
-// growing (and later edge recovery): PCL's kd-tree (FLANN) is built once, each
+// growing (and later edge recovery): the kd-tree PCL's KdTreeFLANN builds
+// (FLANN's single kd-tree, leaves of 15, same floats) is built once, each
 // point's max(normal_k, neighbours) nearest are found once, the normal is
 // computed from them exactly as NormalEstimationOMP does (same search, same
 // order, same pcl::computePointNormal, same flip), and the `neighbours` nearest
@@ -7,9 +8,15 @@
 // set PCL's region growing would get from its own k = neighbours search
 // (points at exactly the same distance as the last one kept aside). The tree is
 // freed on return.
+//
+// FLANN is called directly, as KdTreeFLANN::nearestKSearch would call it, with
+// the same result set; what that wrapper adds per query (an OpenMP region in
+// FLANN's knnSearch, a copy of the query, index conversions) cost more than
+// the search, and its float copy of the cloud 12 bytes per point.
 
+#include <flann/algorithms/dist.h>
+#include <flann/algorithms/kdtree_single_index.h>
 #include <pcl/features/normal_3d.h>
-#include <pcl/kdtree/kdtree_flann.h>
 
 #include <algorithm>
 #include <limits>
@@ -20,6 +27,10 @@
 namespace occlusion::mesh_estimation {
 
 namespace {
+
+using FlannTree = flann::KDTreeSingleIndex<flann::L2_Simple<float>>;
+// KdTreeFLANN's: leaves of 15 points; exact search (eps 0).
+constexpr int kLeafSize = 15;
 
 // About 20 progress steps, but no block so small that the threads idle.
 std::size_t block_size(std::size_t count) {
@@ -60,17 +71,29 @@ Neighbourhoods find_neighbourhoods(const Cloud::ConstPtr& cloud,
   hoods.curvatures.resize(count);
   hoods.neighbours.resize(count * width);
 
-  pcl::KdTreeFLANN<pcl::PointXYZ> tree(/*sorted=*/false);
-  tree.setInputCloud(cloud);
+  // The points in place: x, y, z at the start of every 16-byte PointXYZ.
+  const flann::Matrix<float> points(const_cast<float*>(&(*cloud)[0].x), count, 3,
+                                    sizeof(pcl::PointXYZ));
+  FlannTree tree(points, flann::KDTreeSingleIndexParams(kLeafSize));
+  tree.buildIndex();
+  const flann::SearchParams search(/*checks=*/-1, /*eps=*/0.0f, /*sorted=*/false);
   const std::size_t block = block_size(count);
   progress("normals", 0.0);
   for (std::size_t begin = 0; begin < count; begin += block) {
     const std::size_t end = std::min(count, begin + block);
     parallel_for(end - begin, 1024, options.threads, [&](std::size_t first, std::size_t last) {
+      flann::KNNSimpleResultSet<float> found(k);
+      std::vector<std::size_t> ids(k);
+      std::vector<float> distances(k);
       pcl::Indices nearest, normal_nearest;
-      std::vector<float> distances;
       for (std::size_t i = begin + first; i < begin + last; ++i) {
-        tree.nearestKSearch((*cloud)[i], static_cast<unsigned>(k), nearest, distances);
+        // As FLANN's knnSearch does per query; nearest first.
+        found.clear();
+        tree.findNeighbors(found, &(*cloud)[i].x, search);
+        const std::size_t n = std::min(found.size(), k);
+        found.copy(ids.data(), distances.data(), n, search.sorted);
+        nearest.resize(n);
+        for (std::size_t j = 0; j < n; ++j) nearest[j] = static_cast<pcl::index_t>(ids[j]);
         if (nearest.size() == normal_k) {
           store_normal(*cloud, i, nearest, hoods);
         } else {
