@@ -226,7 +226,7 @@ MeshEstimate estimate_mesh(const PointCloud& cloud, const RegionGrowingOptions& 
   // Only edge recovery needs the neighbour lists from here on.
   std::vector<Eigen::Vector3f>().swap(hoods.normals);
   std::vector<float>().swap(hoods.curvatures);
-  if (!options.recover_edges) std::vector<pcl::index_t>().swap(hoods.neighbours);
+  if (!options.recover_edges) hoods.lists.clear();
   const std::vector<pcl::PointIndices>& clusters = segmentation.clusters;
   estimate.regions = segmentation.regions;
   estimate.clusters_found = clusters.size();
@@ -247,7 +247,7 @@ MeshEstimate estimate_mesh(const PointCloud& cloud, const RegionGrowingOptions& 
   mesh_estimation::EdgePoints edges;
   if (options.recover_edges) {
     edges = mesh_estimation::recover_edge_points(points, hoods, label, planes, options);
-    std::vector<pcl::index_t>().swap(hoods.neighbours);
+    hoods.lists.clear();
   }
   estimate.timings.planes_seconds = seconds_since(start);
 

@@ -34,19 +34,18 @@ EdgePoints recover_edge_points(const Cloud::ConstPtr& cloud, const Neighbourhood
     for (std::size_t e = begin; e < end; ++e) {
       const auto i = static_cast<std::size_t>(edges.points[e]);
       const Eigen::Vector3d position = (*cloud)[i].getVector3fMap().cast<double>();
-      const pcl::index_t* neighbours = hoods.neighbours.data() + i * hoods.width;
       std::array<std::int32_t, 3>& joined = edges.planes[e];
       std::size_t count = 0;
-      for (std::size_t n = 0; n < hoods.width; ++n) {
-        const std::int32_t cluster = label[static_cast<std::size_t>(neighbours[n])];
-        if (cluster < 0 || count == kMaxPlanesPerPoint) continue;
+      hoods.lists.for_each(i, [&](std::int32_t neighbour) {
+        const std::int32_t cluster = label[static_cast<std::size_t>(neighbour)];
+        if (cluster < 0 || count == kMaxPlanesPerPoint) return;
         if (std::find(joined.begin(), joined.begin() + count, cluster) != joined.begin() + count) {
-          continue;
+          return;
         }
         const auto& plane = planes[static_cast<std::size_t>(cluster)].plane;
-        if (!plane || std::abs(distance_to(*plane, position)) > options.ransac_distance) continue;
+        if (!plane || std::abs(distance_to(*plane, position)) > options.ransac_distance) return;
         joined[count++] = cluster;
-      }
+      });
     }
   });
 

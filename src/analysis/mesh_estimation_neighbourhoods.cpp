@@ -4,7 +4,7 @@
 // point's max(normal_k, neighbours) nearest are found once, the normal is
 // computed from them exactly as NormalEstimationOMP does (same search, same
 // order, same pcl::computePointNormal, same flip), and the `neighbours` nearest
-// are kept in one flat array. FLANN returns them nearest first, so they are the
+// are kept in NeighbourLists. FLANN returns them nearest first, so they are the
 // set PCL's region growing would get from its own k = neighbours search
 // (points at exactly the same distance as the last one kept aside). The tree is
 // freed on return.
@@ -20,6 +20,8 @@
 
 #include <algorithm>
 #include <limits>
+#include <mutex>
+#include <utility>
 
 #include "mesh_estimation_stages.hpp"
 #include "occlusion/core/parallel.hpp"
@@ -66,10 +68,9 @@ Neighbourhoods find_neighbourhoods(const Cloud::ConstPtr& cloud,
   const std::size_t k = std::max(normal_k, width);
 
   Neighbourhoods hoods;
-  hoods.width = width;
+  hoods.lists = NeighbourLists(&(*cloud)[0].x, sizeof(pcl::PointXYZ), count, width);
   hoods.normals.resize(count);
   hoods.curvatures.resize(count);
-  hoods.neighbours.resize(count * width);
 
   // The points in place: x, y, z at the start of every 16-byte PointXYZ.
   const flann::Matrix<float> points(const_cast<float*>(&(*cloud)[0].x), count, 3,
@@ -81,6 +82,9 @@ Neighbourhoods find_neighbourhoods(const Cloud::ConstPtr& cloud,
   progress("normals", 0.0);
   for (std::size_t begin = 0; begin < count; begin += block) {
     const std::size_t end = std::min(count, begin + block);
+    // Lists NeighbourLists keeps whole, stored in point order after the block.
+    std::vector<std::pair<std::size_t, pcl::Indices>> whole;
+    std::mutex whole_mutex;
     parallel_for(end - begin, 1024, options.threads, [&](std::size_t first, std::size_t last) {
       flann::KNNSimpleResultSet<float> found(k);
       std::vector<std::size_t> ids(k);
@@ -102,14 +106,19 @@ Neighbourhoods find_neighbourhoods(const Cloud::ConstPtr& cloud,
               nearest.begin() + static_cast<std::ptrdiff_t>(std::min(normal_k, nearest.size())));
           store_normal(*cloud, i, normal_nearest, hoods);
         }
-        const std::size_t kept = std::min(width, nearest.size());
-        std::copy_n(nearest.begin(), kept,
-                    hoods.neighbours.begin() + static_cast<std::ptrdiff_t>(i * width));
-        // FLANN always fills k; kept < width would mean it did not.
-        std::fill_n(hoods.neighbours.begin() + static_cast<std::ptrdiff_t>(i * width + kept),
-                    width - kept, static_cast<pcl::index_t>(i));
+        // FLANN always fills k >= width; pad with the point itself (in its own
+        // region already, in no cluster as an edge point) were it ever short.
+        nearest.resize(std::max(nearest.size(), width), static_cast<pcl::index_t>(i));
+        if (!hoods.lists.try_set(i, nearest.data())) {
+          nearest.resize(width);
+          const std::lock_guard<std::mutex> lock(whole_mutex);
+          whole.emplace_back(i, nearest);
+        }
       }
     });
+    std::sort(whole.begin(), whole.end(),
+              [](const auto& a, const auto& b) { return a.first < b.first; });
+    for (const auto& [i, list] : whole) hoods.lists.set_whole(i, list.data());
     progress.check_cancel();
     progress("normals", static_cast<double>(end) / static_cast<double>(count));
   }

@@ -54,7 +54,6 @@ RegionSizes measure(const std::vector<std::size_t>& region_sizes,
 Segmentation grow_regions(const Neighbourhoods& hoods, const RegionGrowingOptions& options,
                           const Progress& progress) {
   const std::size_t count = hoods.normals.size();
-  const std::size_t width = hoods.width;
   // As PCL computes them: the angle as float, its cosine in float.
   const float cosine_threshold =
       std::cos(static_cast<float>(options.smoothness_degrees * kDegrees));
@@ -81,15 +80,14 @@ Segmentation grow_regions(const Neighbourhoods& hoods, const RegionGrowingOption
     for (std::size_t head = 0; head < queue.size(); ++head) {
       const auto current = static_cast<std::size_t>(queue[head]);
       const Eigen::Vector3f& normal = hoods.normals[current];
-      const pcl::index_t* neighbour = hoods.neighbours.data() + current * width;
-      for (std::size_t n = 0; n < width; ++n) {
-        const auto other = static_cast<std::size_t>(neighbour[n]);
-        if (region[other] != -1) continue;
-        if (std::abs(hoods.normals[other].dot(normal)) < cosine_threshold) continue;
+      hoods.lists.for_each(current, [&](std::int32_t neighbour) {
+        const auto other = static_cast<std::size_t>(neighbour);
+        if (region[other] != -1) return;
+        if (std::abs(hoods.normals[other].dot(normal)) < cosine_threshold) return;
         region[other] = id;
         ++size;
-        if (!(hoods.curvatures[other] > curvature_threshold)) queue.push_back(neighbour[n]);
-      }
+        if (!(hoods.curvatures[other] > curvature_threshold)) queue.push_back(neighbour);
+      });
     }
     region_sizes.push_back(size);
     grown += size;

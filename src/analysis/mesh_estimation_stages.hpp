@@ -13,6 +13,7 @@
 #include <optional>
 #include <vector>
 
+#include "neighbour_lists.hpp"
 #include "occlusion/analysis/mesh_estimation.hpp"
 
 namespace occlusion::mesh_estimation {
@@ -22,8 +23,7 @@ using Cloud = pcl::PointCloud<pcl::PointXYZ>;
 // PCL's normal and curvature from the normal_k nearest, and the `neighbours`
 // nearest, nearest first, that region growing and edge recovery compare.
 struct Neighbourhoods {
-  std::size_t width = 0;                 // neighbours per point: min(neighbours, points)
-  std::vector<pcl::index_t> neighbours;  // point i's are [i * width, (i + 1) * width)
+  NeighbourLists lists;                  // min(neighbours, points) per point
   std::vector<Eigen::Vector3f> normals;  // NaN where PCL finds no normal
   std::vector<float> curvatures;
 };

@@ -46,6 +46,50 @@ float squared_distance(const pcl::PointXYZ& a, const pcl::PointXYZ& b) {
   return (a.getVector3fMap() - b.getVector3fMap()).squaredNorm();
 }
 
+std::vector<pcl::index_t> list_of(const Neighbourhoods& hoods, std::size_t point) {
+  std::vector<pcl::index_t> list;
+  hoods.lists.for_each(point, [&list](std::int32_t n) { list.push_back(n); });
+  return list;
+}
+
+// Lists come back as stored, in order, those with far neighbours (kept whole) too.
+TEST(NeighbourLists, GiveBackWhatWasStored) {
+  constexpr std::size_t kCount = 100000, kWidth = 7;
+  std::vector<Eigen::Vector3f> positions(kCount);
+  std::mt19937 random(11);
+  std::uniform_real_distribution<float> coordinate(-5.0f, 5.0f);
+  for (auto& p : positions)
+    p = Eigen::Vector3f(coordinate(random), coordinate(random), coordinate(random));
+  mesh_estimation::NeighbourLists lists(positions[0].data(), sizeof(Eigen::Vector3f), kCount,
+                                        kWidth);
+  std::vector<std::int32_t> stored(kCount * kWidth);
+  std::uniform_int_distribution<std::int32_t> any(0, kCount - 1), near(-3, 3);
+  std::vector<std::size_t> refused;
+  for (std::size_t i = 0; i < kCount; ++i) {
+    std::int32_t* list = stored.data() + i * kWidth;
+    for (std::size_t n = 0; n < kWidth; ++n) {
+      // Mostly points next in index order (random in space), now and then any point.
+      list[n] = n == 3 && i % 2 == 0
+                    ? any(random)
+                    : std::clamp<std::int32_t>(static_cast<std::int32_t>(i) + near(random), 0,
+                                               kCount - 1);
+    }
+    if (!lists.try_set(i, list)) refused.push_back(i);
+  }
+  for (const std::size_t i : refused) lists.set_whole(i, stored.data() + i * kWidth);
+  EXPECT_EQ(lists.whole_lists(), refused.size());
+  EXPECT_GT(refused.size(), 0u);
+  EXPECT_LT(refused.size(), kCount);
+  for (std::size_t i = 0; i < kCount; ++i) {
+    std::vector<std::int32_t> back;
+    lists.for_each(i, [&back](std::int32_t n) { back.push_back(n); });
+    ASSERT_EQ(back, std::vector<std::int32_t>(
+                        stored.begin() + static_cast<std::ptrdiff_t>(i * kWidth),
+                        stored.begin() + static_cast<std::ptrdiff_t>((i + 1) * kWidth)))
+        << "point " << i;
+  }
+}
+
 RegionGrowingOptions small_options() {
   RegionGrowingOptions options;
   options.normal_k = 20;
@@ -59,22 +103,24 @@ TEST(MeshEstimationStages, NeighbourListsAreTheNearestNearestFirst) {
   const Cloud::Ptr cloud = noisy_room(600.0, 0.003);
   const RegionGrowingOptions options = small_options();
   const Neighbourhoods hoods = mesh_estimation::find_neighbourhoods(cloud, options, {});
-  ASSERT_EQ(hoods.width, options.neighbours);
-  ASSERT_EQ(hoods.neighbours.size(), cloud->size() * hoods.width);
+  const std::size_t width = hoods.lists.width();
+  ASSERT_EQ(width, options.neighbours);
+  ASSERT_EQ(hoods.lists.size(), cloud->size());
   std::vector<float> distance(cloud->size());
   for (std::size_t i = 0; i < cloud->size(); ++i) {
     for (std::size_t j = 0; j < cloud->size(); ++j) {
       distance[j] = squared_distance((*cloud)[i], (*cloud)[j]);
     }
     std::vector<float> sorted = distance;
-    std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(hoods.width),
+    std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(width),
                      sorted.end());
-    const float first_left_out = sorted[hoods.width];
-    const pcl::index_t* list = hoods.neighbours.data() + i * hoods.width;
-    std::vector<pcl::index_t> unique(list, list + hoods.width);
+    const float first_left_out = sorted[width];
+    const std::vector<pcl::index_t> list = list_of(hoods, i);
+    ASSERT_EQ(list.size(), width);
+    std::vector<pcl::index_t> unique = list;
     std::sort(unique.begin(), unique.end());
     ASSERT_EQ(std::unique(unique.begin(), unique.end()), unique.end()) << "point " << i;
-    for (std::size_t n = 0; n < hoods.width; ++n) {
+    for (std::size_t n = 0; n < width; ++n) {
       const float d = distance[static_cast<std::size_t>(list[n])];
       ASSERT_LE(d, first_left_out) << "point " << i;
       if (n > 0) {
@@ -115,9 +161,7 @@ TEST_P(SharedSearch, ListsAndNormalsArePcls) {
 
     tree->nearestKSearch(static_cast<int>(i), static_cast<int>(options.neighbours), found,
                          distances);
-    std::vector<pcl::index_t> ours(
-        hoods.neighbours.begin() + static_cast<std::ptrdiff_t>(i * hoods.width),
-        hoods.neighbours.begin() + static_cast<std::ptrdiff_t>((i + 1) * hoods.width));
+    std::vector<pcl::index_t> ours = list_of(hoods, i);
     std::sort(found.begin(), found.end());
     std::sort(ours.begin(), ours.end());
     ASSERT_EQ(ours, found) << "point " << i;
