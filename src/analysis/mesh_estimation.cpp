@@ -47,17 +47,20 @@ void check_options(const RegionGrowingOptions& options) {
   if (options.ransac_iterations < 1) fail("ransac_iterations must be at least 1");
 }
 
-// The finite points as PCL's cloud, relative to `centre`, and where each came from.
+// The finite points as PCL's cloud, relative to `centre`, and where each came
+// from: `source` stays empty when every point is finite (point i is point i).
 Cloud::Ptr finite_points(const PointCloud& cloud, const Eigen::Vector3d& centre,
-                         std::vector<std::size_t>& source) {
+                         std::vector<std::uint32_t>& source) {
   Cloud::Ptr points(new Cloud);
   points->reserve(cloud.size());
-  source.reserve(cloud.size());
+  const bool all_finite = std::all_of(cloud.positions.begin(), cloud.positions.end(),
+                                      [](const Eigen::Vector3f& p) { return p.allFinite(); });
+  if (!all_finite) source.reserve(cloud.size());
   for (std::size_t i = 0; i < cloud.size(); ++i) {
     if (!cloud.positions[i].allFinite()) continue;
     const Eigen::Vector3f p = pcl_frame::to_local(cloud.positions[i], centre, "mesh estimation");
     points->push_back(pcl::PointXYZ(p.x(), p.y(), p.z()));
-    source.push_back(i);
+    if (!all_finite) source.push_back(static_cast<std::uint32_t>(i));
   }
   points->is_dense = true;
   return points;
@@ -200,7 +203,7 @@ MeshEstimate estimate_mesh(const PointCloud& cloud, const RegionGrowingOptions& 
   check_options(options);
   const analysis_support::QuietPcl quiet;
   MeshEstimate estimate;
-  std::vector<std::size_t> source;
+  std::vector<std::uint32_t> source;
   const Eigen::Vector3d origin = pcl_frame::centre_of(cloud.positions);
   const Cloud::Ptr points = finite_points(cloud, origin, source);
   estimate.non_finite_points = cloud.size() - points->size();
@@ -237,7 +240,9 @@ MeshEstimate estimate_mesh(const PointCloud& cloud, const RegionGrowingOptions& 
     }
   }
   estimate.point_cluster.assign(cloud.size(), -1);
-  for (std::size_t i = 0; i < label.size(); ++i) estimate.point_cluster[source[i]] = label[i];
+  for (std::size_t i = 0; i < label.size(); ++i) {
+    estimate.point_cluster[source.empty() ? i : source[i]] = label[i];
+  }
 
   start = Clock::now();
   std::vector<PlaneOutcome> planes(clusters.size());

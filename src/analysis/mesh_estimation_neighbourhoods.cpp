@@ -31,8 +31,11 @@ namespace occlusion::mesh_estimation {
 namespace {
 
 using FlannTree = flann::KDTreeSingleIndex<flann::L2_Simple<float>>;
-// KdTreeFLANN's: leaves of 15 points; exact search (eps 0).
+// KdTreeFLANN's: leaves of 15 points; exact search (eps 0). Not reordered: the
+// search reads the same floats in the same order from the cloud itself
+// instead of a 12-byte-per-point copy in tree order, and finds the same.
 constexpr int kLeafSize = 15;
+constexpr bool kReorder = false;
 
 // About 20 progress steps, but no block so small that the threads idle.
 std::size_t block_size(std::size_t count) {
@@ -75,7 +78,7 @@ Neighbourhoods find_neighbourhoods(const Cloud::ConstPtr& cloud,
   // The points in place: x, y, z at the start of every 16-byte PointXYZ.
   const flann::Matrix<float> points(const_cast<float*>(&(*cloud)[0].x), count, 3,
                                     sizeof(pcl::PointXYZ));
-  FlannTree tree(points, flann::KDTreeSingleIndexParams(kLeafSize));
+  FlannTree tree(points, flann::KDTreeSingleIndexParams(kLeafSize, kReorder));
   tree.buildIndex();
   const flann::SearchParams search(/*checks=*/-1, /*eps=*/0.0f, /*sorted=*/false);
   const std::size_t block = block_size(count);
