@@ -133,9 +133,9 @@ int run(const Options& o) {
 
   const MeshEstimationTimings& t = estimate.timings;
   std::printf("\nstage                 seconds\n");
-  std::printf("normals               %7.3f   (NormalEstimationOMP, k = %u)\n", t.normals_seconds,
-              estimation.normal_k);
-  std::printf("region growing        %7.3f   (%u neighbours, incl. the neighbour search)\n",
+  std::printf("normals               %7.3f   (kd-tree, one k = %u search per point, normals)\n",
+              t.normals_seconds, std::max(estimation.normal_k, estimation.neighbours));
+  std::printf("region growing        %7.3f   (%u neighbours from that search)\n",
               t.region_growing_seconds, estimation.neighbours);
   std::printf("planes                %7.3f   (RANSAC, projection, edge points)\n",
               t.planes_seconds);
@@ -143,7 +143,7 @@ int run(const Options& o) {
   std::printf("occlusion             %7.3f   (sampling %.3f, octree %.3f, tracing %.3f)\n",
               occlusion_seconds, estimated.timings.sampling_seconds,
               estimated.timings.build_seconds, estimated.timings.trace_seconds);
-  std::printf("total                 %7.3f   (goal < 15 s on 2 cores)\n",
+  std::printf("total                 %7.3f   (goal < 5 s on 2 cores)\n",
               estimate_seconds + occlusion_seconds);
   std::printf("\nmemory: %.0f MiB resident with the cloud, peak %.0f MiB (ru_maxrss)\n",
               resident_before, peak);

@@ -22,11 +22,10 @@ using analysis_support::Clock;
 using analysis_support::seconds_since;
 using mesh_estimation::Cloud;
 using mesh_estimation::ClusterPolygon;
-using mesh_estimation::Normals;
+using mesh_estimation::Neighbourhoods;
 using mesh_estimation::PlaneOutcome;
 using mesh_estimation::PolygonOutcome;
 using mesh_estimation::Segmentation;
-using mesh_estimation::Tree;
 
 void check_options(const RegionGrowingOptions& options) {
   const auto fail = [](const std::string& message) {
@@ -48,17 +47,20 @@ void check_options(const RegionGrowingOptions& options) {
   if (options.ransac_iterations < 1) fail("ransac_iterations must be at least 1");
 }
 
-// The finite points as PCL's cloud, relative to `centre`, and where each came from.
+// The finite points as PCL's cloud, relative to `centre`, and where each came
+// from: `source` stays empty when every point is finite (point i is point i).
 Cloud::Ptr finite_points(const PointCloud& cloud, const Eigen::Vector3d& centre,
-                         std::vector<std::size_t>& source) {
+                         std::vector<std::uint32_t>& source) {
   Cloud::Ptr points(new Cloud);
   points->reserve(cloud.size());
-  source.reserve(cloud.size());
+  const bool all_finite = std::all_of(cloud.positions.begin(), cloud.positions.end(),
+                                      [](const Eigen::Vector3f& p) { return p.allFinite(); });
+  if (!all_finite) source.reserve(cloud.size());
   for (std::size_t i = 0; i < cloud.size(); ++i) {
     if (!cloud.positions[i].allFinite()) continue;
     const Eigen::Vector3f p = pcl_frame::to_local(cloud.positions[i], centre, "mesh estimation");
     points->push_back(pcl::PointXYZ(p.x(), p.y(), p.z()));
-    source.push_back(i);
+    if (!all_finite) source.push_back(static_cast<std::uint32_t>(i));
   }
   points->is_dense = true;
   return points;
@@ -201,7 +203,7 @@ MeshEstimate estimate_mesh(const PointCloud& cloud, const RegionGrowingOptions& 
   check_options(options);
   const analysis_support::QuietPcl quiet;
   MeshEstimate estimate;
-  std::vector<std::size_t> source;
+  std::vector<std::uint32_t> source;
   const Eigen::Vector3d origin = pcl_frame::centre_of(cloud.positions);
   const Cloud::Ptr points = finite_points(cloud, origin, source);
   estimate.non_finite_points = cloud.size() - points->size();
@@ -214,19 +216,20 @@ MeshEstimate estimate_mesh(const PointCloud& cloud, const RegionGrowingOptions& 
   }
 
   auto start = Clock::now();
-  // One kd-tree for normals, region growing and edge points. Neither needs
-  // its neighbours sorted by distance, and sorting costs ~40 % of the normals.
-  const Tree::Ptr tree(new Tree(/*sorted=*/false));
-  const Normals::Ptr normals = mesh_estimation::estimate_normals(points, tree, options, progress);
+  // One neighbour search for normals, region growing and edge points.
+  Neighbourhoods hoods = mesh_estimation::find_neighbourhoods(points, options, progress);
   estimate.timings.normals_seconds = seconds_since(start);
 
   start = Clock::now();
-  const Segmentation segmentation =
-      mesh_estimation::grow_regions(points, normals, tree, options, progress);
+  const Segmentation segmentation = mesh_estimation::grow_regions(hoods, options, progress);
   estimate.timings.region_growing_seconds = seconds_since(start);
   if (segmentation.regions.regions == 0) {
-    throw std::logic_error("mesh estimation: PCL's region growing refused its input");
+    throw std::logic_error("mesh estimation: region growing found no region");
   }
+  // Only edge recovery needs the neighbour lists from here on.
+  std::vector<Eigen::Vector3f>().swap(hoods.normals);
+  std::vector<float>().swap(hoods.curvatures);
+  if (!options.recover_edges) hoods.lists.clear();
   const std::vector<pcl::PointIndices>& clusters = segmentation.clusters;
   estimate.regions = segmentation.regions;
   estimate.clusters_found = clusters.size();
@@ -237,7 +240,9 @@ MeshEstimate estimate_mesh(const PointCloud& cloud, const RegionGrowingOptions& 
     }
   }
   estimate.point_cluster.assign(cloud.size(), -1);
-  for (std::size_t i = 0; i < label.size(); ++i) estimate.point_cluster[source[i]] = label[i];
+  for (std::size_t i = 0; i < label.size(); ++i) {
+    estimate.point_cluster[source.empty() ? i : source[i]] = label[i];
+  }
 
   start = Clock::now();
   std::vector<PlaneOutcome> planes(clusters.size());
@@ -246,7 +251,8 @@ MeshEstimate estimate_mesh(const PointCloud& cloud, const RegionGrowingOptions& 
   });
   mesh_estimation::EdgePoints edges;
   if (options.recover_edges) {
-    edges = mesh_estimation::recover_edge_points(points, *tree, label, planes, options);
+    edges = mesh_estimation::recover_edge_points(points, hoods, label, planes, options);
+    hoods.lists.clear();
   }
   estimate.timings.planes_seconds = seconds_since(start);
 

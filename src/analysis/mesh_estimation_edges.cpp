@@ -1,5 +1,6 @@
 // Edge recovery (RegionGrowingOptions::recover_edges): the strip along an edge
-// that region growing leaves out goes back to the planes it borders.
+// that region growing leaves out goes back to the planes it borders. Each
+// point's `neighbours` nearest are region growing's, nearest first.
 
 #include <algorithm>
 #include <cmath>
@@ -20,7 +21,7 @@ double distance_to(const ClusterPlane& plane, const Eigen::Vector3d& point) {
 
 }  // namespace
 
-EdgePoints recover_edge_points(const Cloud::ConstPtr& cloud, const Tree& tree,
+EdgePoints recover_edge_points(const Cloud::ConstPtr& cloud, const Neighbourhoods& hoods,
                                const std::vector<std::int32_t>& label,
                                std::vector<PlaneOutcome>& planes,
                                const RegionGrowingOptions& options) {
@@ -29,26 +30,22 @@ EdgePoints recover_edge_points(const Cloud::ConstPtr& cloud, const Tree& tree,
     if (label[i] < 0) edges.points.push_back(static_cast<pcl::index_t>(i));
   }
   edges.planes.assign(edges.points.size(), {-1, -1, -1});
-  const int k = static_cast<int>(options.neighbours);
   parallel_for(edges.points.size(), 1024, options.threads, [&](std::size_t begin, std::size_t end) {
-    pcl::Indices neighbours;
-    std::vector<float> distances;
     for (std::size_t e = begin; e < end; ++e) {
-      const pcl::PointXYZ& point = (*cloud)[static_cast<std::size_t>(edges.points[e])];
-      const Eigen::Vector3d position = point.getVector3fMap().cast<double>();
-      tree.nearestKSearch(point, k, neighbours, distances);
+      const auto i = static_cast<std::size_t>(edges.points[e]);
+      const Eigen::Vector3d position = (*cloud)[i].getVector3fMap().cast<double>();
       std::array<std::int32_t, 3>& joined = edges.planes[e];
       std::size_t count = 0;
-      for (const pcl::index_t n : neighbours) {
-        const std::int32_t cluster = label[static_cast<std::size_t>(n)];
-        if (cluster < 0 || count == kMaxPlanesPerPoint) continue;
+      hoods.lists.for_each(i, [&](std::int32_t neighbour) {
+        const std::int32_t cluster = label[static_cast<std::size_t>(neighbour)];
+        if (cluster < 0 || count == kMaxPlanesPerPoint) return;
         if (std::find(joined.begin(), joined.begin() + count, cluster) != joined.begin() + count) {
-          continue;
+          return;
         }
         const auto& plane = planes[static_cast<std::size_t>(cluster)].plane;
-        if (!plane || std::abs(distance_to(*plane, position)) > options.ransac_distance) continue;
+        if (!plane || std::abs(distance_to(*plane, position)) > options.ransac_distance) return;
         joined[count++] = cluster;
-      }
+      });
     }
   });
 

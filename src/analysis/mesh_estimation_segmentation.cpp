@@ -1,138 +1,118 @@
-// Normals and region growing with PCL, as the seed does (listings 4.6, 4.7),
-// with two changes PCL allows through its virtual hooks: the neighbour search
-// runs on every core in blocks (progress, cancel), and the sizes of the regions
-// PCL drops are kept, so that an empty result can say which limit removed what.
-
-#include <pcl/features/normal_3d_omp.h>
-#include <pcl/segmentation/region_growing.h>
+// Region growing as the seed does it with PCL's RegionGrowing (listing 4.7),
+// over the neighbour lists find_neighbourhoods kept, with PCL's semantics
+// step for step (pcl/segmentation/impl/region_growing.hpp, smooth mode, no
+// residual test):
+// - seeds are taken in the order std::sort leaves the (curvature, index)
+//   pairs in under PCL's comparePair (curvature only), the next seed being
+//   the first point not yet in a region;
+// - a region grows breadth-first: a point not yet in a region joins from a
+//   neighbour already in it when |n . n'| >= cos(smoothness), and grows the
+//   region further only if its curvature is not above curvature_threshold;
+// - every region is grown, since the points of a region dropped as too small
+//   are in no later region either; only the regions within the size limits
+//   become clusters, each with its points in index order.
+// What PCL stores per region (an index list for each of the ~100,000 dropped
+// regions of a large scan) and per point (a vector of neighbours) is not.
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "mesh_estimation_stages.hpp"
-#include "occlusion/core/parallel.hpp"
 
 namespace occlusion::mesh_estimation {
 
 namespace {
 
-// About 20 progress steps, but no block so small that the threads idle.
-std::size_t block_size(std::size_t count) {
-  return std::max<std::size_t>(count / 20, 4096);
+constexpr double kDegrees = 3.14159265358979323846 / 180.0;
+
+// PCL's comparePair: curvature only.
+bool lower_curvature(const std::pair<float, int>& a, const std::pair<float, int>& b) {
+  return a.first < b.first;
 }
 
-class SizedRegionGrowing : public pcl::RegionGrowing<pcl::PointXYZ, pcl::Normal> {
- public:
-  SizedRegionGrowing(unsigned threads, const Progress& progress)
-      : threads_(threads), progress_(progress) {}
-
-  // Valid after extract(): every region grown, measured against the limits.
-  RegionSizes sizes() const {
-    RegionSizes sizes;
-    for (const pcl::uindex_t points : num_pts_in_segment_) {
-      ++sizes.regions;
-      sizes.largest = std::max<std::size_t>(sizes.largest, points);
-      if (points < min_pts_per_cluster_) {
-        ++sizes.too_small;
-        sizes.too_small_points += points;
-      } else if (points > max_pts_per_cluster_) {
-        ++sizes.too_large;
-        sizes.too_large_points += points;
-      }
-    }
-    return sizes;
-  }
-
- protected:
-  // The base class's checks, minus rebuilding the kd-tree the normals already built.
-  bool prepareForSegmentation() override {
-    if (input_->points.empty() || !normals_ || input_->size() != normals_->size() ||
-        neighbour_number_ == 0) {
-      return false;
-    }
-    if (!search_) search_.reset(new Tree);
-    if (search_->getInputCloud() != input_) search_->setInputCloud(input_);
-    return true;
-  }
-
-  void findPointNeighbours() override {
-    const std::size_t count = input_->size();
-    point_neighbours_.assign(count, pcl::Indices());
-    const int k = static_cast<int>(neighbour_number_);
-    const std::size_t block = block_size(count);
-    for (std::size_t begin = 0; begin < count; begin += block) {
-      const std::size_t end = std::min(count, begin + block);
-      parallel_for(end - begin, 1024, threads_, [&](std::size_t first, std::size_t last) {
-        std::vector<float> distances;
-        for (std::size_t i = begin + first; i < begin + last; ++i) {
-          search_->nearestKSearch((*input_)[i], k, point_neighbours_[i], distances);
-        }
-      });
-      progress_.check_cancel();
-      progress_("region growing", 0.8 * static_cast<double>(end) / static_cast<double>(count));
+RegionSizes measure(const std::vector<std::size_t>& region_sizes,
+                    const RegionGrowingOptions& options) {
+  RegionSizes sizes;
+  for (const std::size_t points : region_sizes) {
+    ++sizes.regions;
+    sizes.largest = std::max(sizes.largest, points);
+    if (points < options.min_cluster_size) {
+      ++sizes.too_small;
+      sizes.too_small_points += points;
+    } else if (points > options.max_cluster_size) {
+      ++sizes.too_large;
+      sizes.too_large_points += points;
     }
   }
-
- private:
-  unsigned threads_;
-  const Progress& progress_;
-};
+  return sizes;
+}
 
 }  // namespace
 
-Normals::Ptr estimate_normals(const Cloud::ConstPtr& cloud, const Tree::Ptr& tree,
-                              const RegionGrowingOptions& options, const Progress& progress) {
-  // The OpenMP runtime ends the whole process when it cannot start a thread
-  // ("threads": 40000 did), and threads beyond the cores buy nothing here.
-  const unsigned threads = std::min(resolve_thread_count(options.threads), resolve_thread_count(0));
-  pcl::NormalEstimationOMP<pcl::PointXYZ, pcl::Normal> estimation(threads);
-  estimation.setInputCloud(cloud);
-  estimation.setSearchMethod(tree);
-  // PCL takes k as an int; beyond the cloud's size the search gives every point anyway.
-  estimation.setKSearch(static_cast<int>(std::min<std::size_t>(options.normal_k, cloud->size())));
-
-  const std::size_t count = cloud->size();
-  Normals::Ptr normals(new Normals);
-  normals->resize(count);
-  const std::size_t block = block_size(count);
-  Normals part;
-  progress("normals", 0.0);
-  for (std::size_t begin = 0; begin < count; begin += block) {
-    const std::size_t end = std::min(count, begin + block);
-    pcl::IndicesPtr indices(new pcl::Indices(end - begin));
-    for (std::size_t i = begin; i < end; ++i) (*indices)[i - begin] = static_cast<pcl::index_t>(i);
-    // The whole cloud stays the search surface; only the points to compute change.
-    estimation.setIndices(indices);
-    estimation.compute(part);
-    std::copy(part.begin(), part.end(), normals->begin() + static_cast<std::ptrdiff_t>(begin));
-    progress.check_cancel();
-    progress("normals", static_cast<double>(end) / static_cast<double>(count));
-  }
-  return normals;
-}
-
-Segmentation grow_regions(const Cloud::ConstPtr& cloud, const Normals::Ptr& normals,
-                          const Tree::Ptr& tree, const RegionGrowingOptions& options,
+Segmentation grow_regions(const Neighbourhoods& hoods, const RegionGrowingOptions& options,
                           const Progress& progress) {
-  constexpr double kDegrees = 3.14159265358979323846 / 180.0;
-  constexpr std::size_t kMaxSize = std::numeric_limits<pcl::uindex_t>::max();
-  SizedRegionGrowing growing(options.threads, progress);
-  growing.setMinClusterSize(
-      static_cast<pcl::uindex_t>(std::min(options.min_cluster_size, kMaxSize)));
-  growing.setMaxClusterSize(
-      static_cast<pcl::uindex_t>(std::min(options.max_cluster_size, kMaxSize)));
-  growing.setSearchMethod(tree);
-  growing.setNumberOfNeighbours(options.neighbours);
-  growing.setInputCloud(cloud);
-  growing.setInputNormals(normals);
-  growing.setSmoothnessThreshold(static_cast<float>(options.smoothness_degrees * kDegrees));
-  growing.setCurvatureThreshold(static_cast<float>(options.curvature_threshold));
+  const std::size_t count = hoods.normals.size();
+  // As PCL computes them: the angle as float, its cosine in float.
+  const float cosine_threshold =
+      std::cos(static_cast<float>(options.smoothness_degrees * kDegrees));
+  const auto curvature_threshold = static_cast<float>(options.curvature_threshold);
 
   progress("region growing", 0.0);
+  std::vector<std::pair<float, int>> seeds(count);
+  for (std::size_t i = 0; i < count; ++i) seeds[i] = {hoods.curvatures[i], static_cast<int>(i)};
+  std::sort(seeds.begin(), seeds.end(), lower_curvature);
+
+  std::vector<std::int32_t> region(count, -1);
+  std::vector<std::size_t> region_sizes;
+  std::vector<pcl::index_t> queue;
+  queue.reserve(count);
+  std::size_t grown = 0;
+  std::size_t next_seed = 0;
+  while (grown < count) {
+    while (region[static_cast<std::size_t>(seeds[next_seed].second)] != -1) ++next_seed;
+    const auto id = static_cast<std::int32_t>(region_sizes.size());
+    const auto seed = static_cast<std::size_t>(seeds[next_seed].second);
+    queue.assign(1, static_cast<pcl::index_t>(seed));
+    region[seed] = id;
+    std::size_t size = 1;
+    for (std::size_t head = 0; head < queue.size(); ++head) {
+      const auto current = static_cast<std::size_t>(queue[head]);
+      const Eigen::Vector3f& normal = hoods.normals[current];
+      hoods.lists.for_each(current, [&](std::int32_t neighbour) {
+        const auto other = static_cast<std::size_t>(neighbour);
+        if (region[other] != -1) return;
+        if (std::abs(hoods.normals[other].dot(normal)) < cosine_threshold) return;
+        region[other] = id;
+        ++size;
+        if (!(hoods.curvatures[other] > curvature_threshold)) queue.push_back(neighbour);
+      });
+    }
+    region_sizes.push_back(size);
+    grown += size;
+    if ((region_sizes.size() & 0xffff) == 0) progress.check_cancel();
+  }
+
   Segmentation segmentation;
-  growing.extract(segmentation.clusters);
-  segmentation.regions = growing.sizes();
+  segmentation.regions = measure(region_sizes, options);
+  // Region id to cluster id, -1 for a region outside the size limits.
+  std::vector<std::int32_t> cluster_of(region_sizes.size(), -1);
+  for (std::size_t r = 0; r < region_sizes.size(); ++r) {
+    if (region_sizes[r] < options.min_cluster_size || region_sizes[r] > options.max_cluster_size) {
+      continue;
+    }
+    cluster_of[r] = static_cast<std::int32_t>(segmentation.clusters.size());
+    segmentation.clusters.emplace_back();
+    segmentation.clusters.back().indices.reserve(region_sizes[r]);
+  }
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::int32_t c = cluster_of[static_cast<std::size_t>(region[i])];
+    if (c >= 0) {
+      segmentation.clusters[static_cast<std::size_t>(c)].indices.push_back(
+          static_cast<pcl::index_t>(i));
+    }
+  }
   progress("region growing", 1.0);
   return segmentation;
 }

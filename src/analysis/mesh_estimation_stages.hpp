@@ -1,11 +1,11 @@
 #pragma once
-// The stages of estimate_mesh (internal to analysis/): segmentation with PCL's
-// normals and region growing, then one polygon per cluster. PCL types stop here.
+// The stages of estimate_mesh (internal to analysis/): segmentation from one
+// neighbour search (PCL's normals, PCL's region growing), then one polygon per cluster. PCL types
+// stop here.
 
 #include <pcl/PointIndices.h>
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
-#include <pcl/search/kdtree.h>
 
 #include <Eigen/Core>
 #include <array>
@@ -13,26 +13,32 @@
 #include <optional>
 #include <vector>
 
+#include "neighbour_lists.hpp"
 #include "occlusion/analysis/mesh_estimation.hpp"
 
 namespace occlusion::mesh_estimation {
 
 using Cloud = pcl::PointCloud<pcl::PointXYZ>;
-using Normals = pcl::PointCloud<pcl::Normal>;
-using Tree = pcl::search::KdTree<pcl::PointXYZ>;
+// What one nearest-neighbour search per point found (the kd-tree is gone):
+// PCL's normal and curvature from the normal_k nearest, and the `neighbours`
+// nearest, nearest first, that region growing and edge recovery compare.
+struct Neighbourhoods {
+  NeighbourLists lists;                  // min(neighbours, points) per point
+  std::vector<Eigen::Vector3f> normals;  // NaN where PCL finds no normal
+  std::vector<float> curvatures;
+};
 
-// Normals of every point, in blocks so that progress and cancel are checked.
-Normals::Ptr estimate_normals(const Cloud::ConstPtr& cloud, const Tree::Ptr& tree,
-                              const RegionGrowingOptions& options, const Progress& progress);
+// In blocks, so that progress ("normals") and cancel are checked.
+Neighbourhoods find_neighbourhoods(const Cloud::ConstPtr& cloud,
+                                   const RegionGrowingOptions& options, const Progress& progress);
 
 struct Segmentation {
   std::vector<pcl::PointIndices> clusters;  // within the size limits, PCL's order
   RegionSizes regions;
 };
 
-// Region growing over the tree the normals used (not built again).
-Segmentation grow_regions(const Cloud::ConstPtr& cloud, const Normals::Ptr& normals,
-                          const Tree::Ptr& tree, const RegionGrowingOptions& options,
+// PCL's region growing (smooth mode) over the neighbourhoods' lists and normals.
+Segmentation grow_regions(const Neighbourhoods& hoods, const RegionGrowingOptions& options,
                           const Progress& progress);
 
 // A cluster's plane and its projected inliers, in the plane's own coordinates.
@@ -67,7 +73,7 @@ struct EdgePoints {
   std::vector<pcl::index_t> points;
   std::vector<std::array<std::int32_t, 3>> planes;
 };
-EdgePoints recover_edge_points(const Cloud::ConstPtr& cloud, const Tree& tree,
+EdgePoints recover_edge_points(const Cloud::ConstPtr& cloud, const Neighbourhoods& hoods,
                                const std::vector<std::int32_t>& label,
                                std::vector<PlaneOutcome>& planes,
                                const RegionGrowingOptions& options);

@@ -3,10 +3,13 @@
 // a scan's occlusion can be measured as a mesh's (-rgoc).
 //
 // Stages, each a progress stage:
-//   normals         PCL NormalEstimationOMP, k nearest neighbours (normal_k)
-//   region growing  PCL RegionGrowing: smoothness angle, curvature threshold,
-//                   `neighbours` nearest neighbours; clusters outside
-//                   [min_cluster_size, max_cluster_size] points are dropped
+//   normals         one kd-tree and one search for each point's
+//                   max(normal_k, neighbours) nearest, shared by the stages
+//                   below; PCL NormalEstimation's normal from the normal_k
+//                   nearest, bit for bit
+//   region growing  PCL RegionGrowing's algorithm over the `neighbours`
+//                   nearest: smoothness angle, curvature threshold; clusters
+//                   outside [min_cluster_size, max_cluster_size] points are dropped
 //   planes          per cluster a RANSAC plane (SACSegmentation), its inliers
 //                   projected onto it (ProjectInliers); with recover_edges, also
 //                   the edge points described below
