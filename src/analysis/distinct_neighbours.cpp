@@ -124,6 +124,29 @@ std::vector<DistinctNeighbour> one_pass(const std::vector<Eigen::Vector3f>& posi
   return merged;
 }
 
+// The box of the middle 98% of the queries along each axis: the queries are
+// a sample of the cloud, so stray points far outside a room do not stretch it.
+// A first cell sized from the whole box would put most of the room in one cell,
+// and every point of it would be compared with every query there (one stray
+// point 10 km off made a 1M-point cloud 25 times slower).
+Eigen::Vector3d robust_extent(const std::vector<Eigen::Vector3f>& positions,
+                              const std::vector<std::size_t>& queries) {
+  Eigen::Vector3d extent;
+  std::vector<float> values(queries.size());
+  const std::size_t low = queries.size() / 100;
+  const std::size_t high = queries.size() - 1 - low;
+  for (int axis = 0; axis < 3; ++axis) {
+    for (std::size_t k = 0; k < queries.size(); ++k) values[k] = positions[queries[k]][axis];
+    std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(low),
+                     values.end());
+    const double lo = values[low];
+    std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(high),
+                     values.end());
+    extent[axis] = static_cast<double>(values[high]) - lo;
+  }
+  return extent;
+}
+
 // A first cell size near the mean spacing of a cloud sampling the surfaces
 // of its box (a room); later passes grow it where that was too small.
 double first_cell_size(const Eigen::Vector3d& extent, std::size_t n, double largest_same) {
@@ -167,7 +190,7 @@ std::vector<DistinctNeighbour> distinct_neighbours(const std::vector<Eigen::Vect
 
   Grid grid;
   grid.origin = lo;
-  grid.h = first_cell_size(hi - lo, positions.size(), largest_same);
+  grid.h = first_cell_size(robust_extent(positions, queries), positions.size(), largest_same);
   std::vector<std::size_t> open(queries.size());  // unanswered: indices into `queries`
   for (std::size_t k = 0; k < open.size(); ++k) open[k] = k;
   while (!open.empty()) {
