@@ -5,22 +5,9 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "occlusion/core/morton.hpp"
+
 namespace occlusion::mesh_estimation {
-
-namespace {
-
-// Spreads the low 21 bits of v to every third bit.
-std::uint64_t spread_bits(std::uint64_t v) {
-  v &= 0x1fffff;
-  v = (v | v << 32) & 0x1f00000000ffffULL;
-  v = (v | v << 16) & 0x1f0000ff0000ffULL;
-  v = (v | v << 8) & 0x100f00f00f00f00fULL;
-  v = (v | v << 4) & 0x10c30c30c30c30c3ULL;
-  v = (v | v << 2) & 0x1249249249249249ULL;
-  return v;
-}
-
-}  // namespace
 
 NeighbourLists::NeighbourLists(const float* xyz, std::size_t stride_bytes, std::size_t count,
                                std::size_t width)
@@ -39,7 +26,8 @@ NeighbourLists::NeighbourLists(const float* xyz, std::size_t stride_bytes, std::
   double scale[3];
   for (int a = 0; a < 3; ++a) {
     const double extent = static_cast<double>(hi[a]) - static_cast<double>(lo[a]);
-    scale[a] = extent > 0.0 && std::isfinite(extent) ? 2097151.0 / extent : 0.0;
+    scale[a] =
+        extent > 0.0 && std::isfinite(extent) ? static_cast<double>(kMortonLastCell) / extent : 0.0;
   }
   {
     std::vector<std::pair<std::uint64_t, std::uint32_t>> order(count);
@@ -47,8 +35,9 @@ NeighbourLists::NeighbourLists(const float* xyz, std::size_t stride_bytes, std::
       std::uint64_t code = 0;
       for (int a = 0; a < 3; ++a) {
         const double cell = (static_cast<double>(at(i)[a]) - lo[a]) * scale[a];
-        const auto q = static_cast<std::uint64_t>(std::clamp(cell, 0.0, 2097151.0));
-        code |= spread_bits(q) << a;
+        const auto q =
+            static_cast<std::uint32_t>(std::clamp(cell, 0.0, static_cast<double>(kMortonLastCell)));
+        code |= spread_by_three(q) << a;
       }
       order[i] = {code, static_cast<std::uint32_t>(i)};
     }

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "occlusion/core/large_buffer.hpp"
+#include "occlusion/core/morton.hpp"
 #include "occlusion/core/octree.hpp"
 #include "occlusion/core/parallel.hpp"
 #include "occlusion/core/progress.hpp"
@@ -56,20 +57,6 @@ inline void fill_node(OctreeNode& node, const BuiltChild* children, std::uint32_
     node.hi_z[k] = box.hi.z();
     node.child[k] = OctreeChild{children[c].index, children[c].count};
   }
-}
-
-// Levels of octants a code holds: 3 bits each in a 64-bit key.
-inline constexpr int kMortonLevels = 21;
-
-// The 21 low bits of x moved to every third bit.
-inline std::uint64_t spread_by_three(std::uint32_t x) {
-  std::uint64_t v = x & 0x1fffffu;
-  v = (v | (v << 32)) & 0x1f00000000ffffull;
-  v = (v | (v << 16)) & 0x1f0000ff0000ffull;
-  v = (v | (v << 8)) & 0x100f00f00f00f00full;
-  v = (v | (v << 4)) & 0x10c30c30c30c30c3ull;
-  v = (v | (v << 2)) & 0x1249249249249249ull;
-  return v;
 }
 
 // Stable LSD radix sort of (codes[i], ids[i]) by code, on all cores: each
@@ -150,7 +137,7 @@ class MortonBuilder {
     const Eigen::Vector3d centre = centroid_box.center().cast<double>();
     const double half = root_half_;
     const double scale = half > 0.0 ? std::ldexp(1.0, kMortonLevels) / (2.0 * half) : 0.0;
-    constexpr double kLastCell = (1u << kMortonLevels) - 1;
+    constexpr double kLastCell = kMortonLastCell;
     parallel_for(n, std::size_t{1} << 16, 0, [&](std::size_t first, std::size_t last) {
       progress_.check_cancel();
       for (std::size_t i = first; i < last; ++i) {
