@@ -71,10 +71,10 @@ inline std::optional<Hit> trace_single_ray(const TreeView<Shape>& tree, RayCompo
 
     const OctreeNode& node = tree.nodes[entry.child.index];
     // All eight slots in one fixed-length loop the compiler can vectorise;
-    // empty slots are masked out with `occupied` below.
+    // empty slots are masked out below.
     float t_near[8];
     std::uint32_t hit_mask = slab_test_8(node, slab, t_near);
-    hit_mask &= node.occupied;
+    hit_mask &= occupied_slots(node);
     // Push farthest first so that the nearest is popped next: relabel slot k as
     // k ^ near_octant (front-to-back rank) and push from the highest rank down.
     std::uint32_t ranked = kRankedMask[near_octant][hit_mask];

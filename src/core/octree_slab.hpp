@@ -49,6 +49,23 @@ inline constexpr RankedMaskTable kRankedMask{};
 
 #if defined(__SSE2__)
 
+// Bit k set: slot k of `node` holds a child.
+inline std::uint32_t occupied_slots(const OctreeNode& node) {
+  // The counts are the odd words of `child`: gather four at a time.
+  const auto* words = reinterpret_cast<const __m128*>(node.child);
+  const __m128i counts_low = _mm_castps_si128(_mm_shuffle_ps(
+      _mm_load_ps(reinterpret_cast<const float*>(words)),
+      _mm_load_ps(reinterpret_cast<const float*>(words + 1)), _MM_SHUFFLE(3, 1, 3, 1)));
+  const __m128i counts_high = _mm_castps_si128(_mm_shuffle_ps(
+      _mm_load_ps(reinterpret_cast<const float*>(words + 2)),
+      _mm_load_ps(reinterpret_cast<const float*>(words + 3)), _MM_SHUFFLE(3, 1, 3, 1)));
+  const __m128i empty = _mm_set1_epi32(static_cast<int>(OctreeChild::kEmptySlot));
+  const int empty_slots =
+      _mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(counts_low, empty))) |
+      (_mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(counts_high, empty))) << 4);
+  return ~static_cast<std::uint32_t>(empty_slots) & 0xffu;
+}
+
 struct SlabRay {
   __m128 inv_x, inv_y, inv_z;
   __m128 org_inv_x, org_inv_y, org_inv_z;  // origin * inv
@@ -94,6 +111,14 @@ inline std::uint32_t slab_test_8(const OctreeNode& node, const SlabRay& ray, flo
 }
 
 #else
+
+inline std::uint32_t occupied_slots(const OctreeNode& node) {
+  std::uint32_t mask = 0;
+  for (int k = 0; k < 8; ++k) {
+    mask |= static_cast<std::uint32_t>(node.child[k].count != OctreeChild::kEmptySlot) << k;
+  }
+  return mask;
+}
 
 struct SlabRay {
   Eigen::Vector3f inv, org_inv;

@@ -75,16 +75,21 @@ struct OctreeStats {
 };
 
 // count == 0: the inner node at nodes[index].
-// count > 0: a leaf, shapes[index .. index + count).
+// count == kEmptySlot: no child in this slot.
+// otherwise: a leaf, shapes[index .. index + count) (the octree holds fewer
+// than kNoPrimitive shapes, so a leaf never has kEmptySlot of them).
 struct OctreeChild {
+  static constexpr std::uint32_t kEmptySlot = 0xffffffffu;
   std::uint32_t index;
   std::uint32_t count;
 };
 
 // One flattened 8-wide node: the boxes of up to eight children and where each
-// lives. Child k sits in slot k = its octant (bit 0: upper x, bit 1: upper y,
-// bit 2: upper z), so a ray visits slots front to back in the order k ^ s,
-// where s holds the signs of its direction: no sorting during traversal.
+// lives, in exactly four cache lines (which slots are used is read off
+// `child`, not kept beside it: a fifth line per node visit cost more than
+// deriving it). Child k sits in slot k = its octant (bit 0: upper x, bit 1:
+// upper y, bit 2: upper z), so a ray visits slots front to back in the order
+// k ^ s, where s holds the signs of its direction: no sorting during traversal.
 struct alignas(64) OctreeNode {
   float lo_x[8], lo_y[8], lo_z[8];
   float hi_x[8], hi_y[8], hi_z[8];
@@ -92,8 +97,8 @@ struct alignas(64) OctreeNode {
   // store that the pop's 8-byte load forwards from, where two 4-byte stores
   // would make it wait.
   OctreeChild child[8];
-  std::uint32_t occupied = 0;  // bit k set: slot k holds a child
 };
+static_assert(sizeof(OctreeNode) == 256, "an octree node is four cache lines");
 
 // Shape must provide bounds() -> Aabb and centroid() -> Eigen::Vector3f, and a
 // free function template shape_hit(const RayComponents<Num>&, const Shape&,
