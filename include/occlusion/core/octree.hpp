@@ -7,7 +7,9 @@
 // octant holding its centroid, so every primitive lives in exactly one leaf and
 // nothing is duplicated. Each child then gets TIGHT bounds: the union of its
 // primitives' boxes, which may overlap the siblings' (primitives straddling an
-// octant boundary). Chains of cells with a single non-empty octant are collapsed.
+// octant boundary). Chains of cells with a single non-empty octant are collapsed,
+// and a node takes the octants of its largest inner children in their place
+// while they fit in its eight slots (as wide BVHs are collapsed).
 // The tree is flattened into one contiguous array of 8-wide nodes whose child
 // boxes are stored as structure-of-arrays, so one loop tests all children.
 //
