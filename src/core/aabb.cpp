@@ -5,12 +5,6 @@
 
 namespace occlusion {
 
-namespace {
-// Large but finite: (lo - o) * kHugeInverse stays finite for any scene
-// coordinate, and 0 * kHugeInverse is 0 rather than NaN.
-constexpr float kHugeInverse = 1e30f;
-}  // namespace
-
 Eigen::Vector3f safe_inverse(const Eigen::Vector3f& direction) {
   Eigen::Vector3f inv;
   for (int axis = 0; axis < 3; ++axis) {

@@ -48,9 +48,11 @@ namespace packet_avx2 {
 #pragma GCC push_options
 #pragma GCC target("avx512f")
 // GCC 12 flags the deliberately undefined pass-through operand of its own
-// AVX-512 intrinsics (_mm512_undefined_ps) as maybe uninitialised.
+// AVX-512 intrinsics (_mm512_undefined_ps: gathers, square roots) as
+// uninitialised.
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#pragma GCC diagnostic ignored "-Wuninitialized"
 namespace packet_avx512 {
 #include "octree_packet_body.inc"
 }  // namespace packet_avx512

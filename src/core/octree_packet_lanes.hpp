@@ -91,6 +91,13 @@ inline unsigned equal_ids(const std::uint32_t* ids, std::uint32_t id) {
                                (_mm_movemask_ps(_mm_castsi128_ps(high)) << 4));
 }
 
+// Lane j = *(base + offset[j]) (offsets in floats): rays gathered by component.
+inline Lanes gather(const float* base, const std::int32_t* offset) {
+  alignas(16) float lanes[kLanes];
+  for (unsigned j = 0; j < kLanes; ++j) lanes[j] = base[offset[j]];
+  return load(lanes);
+}
+
 #include "octree_lane_operators.inc"
 
 }  // namespace packet_sse2
@@ -168,6 +175,11 @@ inline unsigned equal_ids(const std::uint32_t* ids, std::uint32_t id) {
   return static_cast<unsigned>(_mm256_movemask_ps(_mm256_castsi256_ps(equal)));
 }
 
+inline Lanes gather(const float* base, const std::int32_t* offset) {
+  return {
+      _mm256_i32gather_ps(base, _mm256_load_si256(reinterpret_cast<const __m256i*>(offset)), 4)};
+}
+
 #include "octree_lane_operators.inc"
 
 }  // namespace packet_avx2
@@ -239,6 +251,10 @@ inline Lanes select(unsigned mask, Lanes if_set, Lanes if_clear) {
 inline unsigned equal_ids(const std::uint32_t* ids, std::uint32_t id) {
   return static_cast<unsigned>(
       _mm512_cmpeq_epi32_mask(_mm512_loadu_si512(ids), _mm512_set1_epi32(static_cast<int>(id))));
+}
+
+inline Lanes gather(const float* base, const std::int32_t* offset) {
+  return {_mm512_i32gather_ps(_mm512_load_si512(offset), base, 4)};
 }
 
 #include "octree_lane_operators.inc"

@@ -32,6 +32,11 @@ struct Aabb {
   }
 };
 
+// What safe_inverse puts for a zero component. Large but finite: (lo - o) *
+// kHugeInverse stays finite for any scene coordinate, and 0 * kHugeInverse is
+// 0 rather than NaN.
+inline constexpr float kHugeInverse = 1e30f;
+
 // Reciprocal direction for slab tests. A zero component is replaced by a huge
 // finite value of the same sign (+ for +0, - for -0) so that a branch-free slab
 // test never computes 0 * inf = NaN. Such a test is only right for a ray lying
