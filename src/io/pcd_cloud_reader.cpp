@@ -76,6 +76,22 @@ class PcdCloudReader {
   // sizes and counts are checked here first, against the file's size and the
   // limits in pcd_limits.hpp. Whatever PCL would read as a number must be one
   // here, or PCL's own parse (stoi, unsigned wrap-around) decides the size.
+  // PCL's readHeader knows a line by how its first word starts ("COUNTxyz" is
+  // a COUNT line: a fuzz_pcd_ascii finding where PCL read an unchecked COUNT
+  // and allocated 16 GB), and DATA's kind the same way; so does this check.
+  static std::string_view pcl_header_keyword(std::string_view word) {
+    for (const std::string_view keyword : {"DATA", "SIZE", "COUNT", "WIDTH", "HEIGHT", "POINTS"}) {
+      if (word.substr(0, keyword.size()) == keyword) return keyword;
+    }
+    return word;
+  }
+  static std::string_view pcl_data_kind(std::string_view word) {
+    for (const std::string_view kind : {"binary_compressed", "binary"}) {
+      if (word.substr(0, kind.size()) == kind) return kind;
+    }
+    return "ascii";
+  }
+
   void check_declared_size() {
     std::vector<std::uint64_t> sizes;
     std::vector<std::uint64_t> counts;
@@ -89,9 +105,9 @@ class PcdCloudReader {
     while (lines.next(line)) {
       data_end += line.size() + 1;
       Tokens tokens(line);
-      const std::string_view keyword = tokens.next();
+      const std::string_view keyword = pcl_header_keyword(tokens.next());
       if (keyword == "DATA") {
-        data = tokens.next();
+        data = pcl_data_kind(tokens.next());
         break;
       }
       std::vector<std::uint64_t>* list = keyword == "SIZE"     ? &sizes

@@ -63,6 +63,20 @@ TEST(PcdHeaderLimits, FieldListsThatDisagreeAreAnInputError) {
   EXPECT_THROW(read_cloud(path), InputError);
 }
 
+// fuzz_pcd_ascii finding: PCL reads "COUNTxyz" as a COUNT line, so a check
+// that knew only "COUNT" let PCL allocate 16 GB for a 330-byte file.
+TEST(PcdHeaderLimits, KeywordsAreKnownByTheirStartAsPclKnowsThem) {
+  testing::ScratchDirectory dir;
+  const std::string path = dir.file("prefix.pcd");
+  testing::write_text(path, header("COUNTxyz 1 1 60000", "1000", "1000", "ascii") + "1 2 3\n");
+  testing::expect_input_error([&] { read_cloud(path); }, "prefix.pcd", 0,
+                              "declares 1000 points of 240008 bytes");
+  testing::write_text(
+      path, header("COUNT\xf2\xf2 1 1 133333333333333333333388", "1", "1", "ascii# 1") + "1 2 3\n");
+  testing::expect_input_error([&] { read_cloud(path); }, "prefix.pcd", 6,
+                              "COUNT value '133333333333333333333388'");
+}
+
 TEST(PcdHeaderLimits, CountWithinTheLimitIsStillCheckedAgainstTheFile) {
   testing::ScratchDirectory dir;
   const std::string path = dir.file("count.pcd");
