@@ -3,13 +3,15 @@
 #include <algorithm>
 #include <cmath>
 
+#include "occlusion/core/ray_lanes.hpp"
+
 namespace occlusion {
 
 Eigen::Vector3f safe_inverse(const Eigen::Vector3f& direction) {
   Eigen::Vector3f inv;
   for (int axis = 0; axis < 3; ++axis) {
     const float d = direction[axis];
-    inv[axis] = d == 0.0f ? std::copysign(kHugeInverse, d) : 1.0f / d;
+    inv[axis] = lane_math::safe_inverse_component(d);
   }
   return inv;
 }

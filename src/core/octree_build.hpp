@@ -222,7 +222,7 @@ class MortonBuilder {
   struct NodeRuns {
     std::array<Run, 8> run;
     std::array<std::array<Run, 8>, 8> parts;
-    std::array<std::uint32_t, 8> part_count;  // 0: not looked at yet
+    std::array<std::uint32_t, 8> part_count{};  // 0: not looked at yet
     std::uint32_t count = 0;
   };
 
@@ -292,7 +292,6 @@ class MortonBuilder {
     progress_.check_cancel();
     NodeRuns node;
     node.count = split_cell(begin, end, -1, node.run.data());
-    node.part_count.fill(0);
     open_largest(node);
 
     // Slots: a whole octant takes its own slot; the parts of opened octants

@@ -11,6 +11,7 @@
 
 #include <cmath>
 
+#include "occlusion/core/aabb.hpp"
 #include "occlusion/core/ray.hpp"
 
 namespace occlusion {
@@ -45,6 +46,14 @@ template <class Num>
 inline Num dot3(const Num& ax, const Num& ay, const Num& az, const Num& bx, const Num& by,
                 const Num& bz) {
   return ax * bx + ay * by + az * bz;
+}
+
+// safe_inverse (aabb.hpp) of one component: 1 / d, or kHugeInverse with the
+// sign of d where d is +0 or -0. Written once for single rays and packets.
+template <class Num>
+inline Num safe_inverse_component(const Num& d) {
+  const auto zero = (d <= Num(0.0f)) & (Num(0.0f) <= d);
+  return select(zero, sign_of(d) * Num(kHugeInverse), Num(1.0f) / d);
 }
 
 }  // namespace lane_math
