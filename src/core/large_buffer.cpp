@@ -1,5 +1,7 @@
 #include "occlusion/core/large_buffer.hpp"
 
+#include <algorithm>
+#include <cstddef>
 #include <cstdlib>
 
 #if defined(__linux__)
@@ -14,7 +16,7 @@ constexpr std::size_t kHugePage = std::size_t{2} << 20;
 constexpr std::size_t kLargeBuffer = 4 * kHugePage;
 }  // namespace
 
-void* allocate(std::size_t bytes) {
+void* allocate(std::size_t bytes, std::size_t alignment) {
   void* p = nullptr;
   if (bytes >= kLargeBuffer) {
     const std::size_t rounded = (bytes + kHugePage - 1) / kHugePage * kHugePage;
@@ -24,7 +26,10 @@ void* allocate(std::size_t bytes) {
     if (p != nullptr) madvise(p, rounded, MADV_HUGEPAGE);
 #endif
   } else {
-    p = std::malloc(bytes == 0 ? 1 : bytes);
+    // aligned_alloc wants a size that is a multiple of the alignment.
+    const std::size_t align = std::max(alignment, alignof(std::max_align_t));
+    const std::size_t rounded = (std::max<std::size_t>(bytes, 1) + align - 1) / align * align;
+    p = std::aligned_alloc(align, rounded);
   }
   if (p == nullptr) throw std::bad_alloc();
   return p;
