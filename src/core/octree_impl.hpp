@@ -98,15 +98,8 @@ bool Octree<Shape>::occluded(const Ray& ray, PrimitiveId ignore_id) const {
 }
 
 namespace octree_detail {
-// Rays sorted by direction together. Callers pass rays in a spatially coherent
-// order (a viewpoint's rays together, neighbouring samples together); sorting
-// a window refines that order into packets without mixing far-apart rays that
-// happen to point the same way. bench_moc-like shadow rays, AVX-512, one
-// thread: windows of 64 / 1,024 / 4,096 / 16,384 / 65,536 rays gave 5.6 / 5.6 /
-// 6.0 / 5.4 / 4.6 M rays/s (single rays: 3.5).
-inline constexpr std::size_t kSortWindow = 4096;
-// Rays per parallel chunk: one window.
-inline constexpr std::size_t kBatchGrain = kSortWindow;
+// Rays per parallel chunk: one sort window.
+inline constexpr std::size_t kBatchGrain = kOrderWindow;
 }  // namespace octree_detail
 
 template <class Shape>
@@ -134,8 +127,8 @@ void Octree<Shape>::trace_batch(const Ray* rays, std::size_t count, const Primit
   const octree_detail::PacketQuery query{rays, ignore_ids, hits, occluded_out};
   parallel_for(count, octree_detail::kBatchGrain, threads, [&](std::size_t b, std::size_t e) {
     thread_local std::vector<std::uint32_t> order, scratch;
-    for (std::size_t window = b; window < e; window += octree_detail::kSortWindow) {
-      const std::size_t window_end = std::min(e, window + octree_detail::kSortWindow);
+    for (std::size_t window = b; window < e; window += kOrderWindow) {
+      const std::size_t window_end = std::min(e, window + kOrderWindow);
       const std::size_t n = window_end - window;
       order.resize(n);
       order_by_direction(rays, window, window_end, order.data(), scratch);

@@ -98,6 +98,24 @@ inline Lanes gather(const float* base, const std::int32_t* offset) {
   return load(lanes);
 }
 
+// The smallest and largest lane (a NaN lane may or may not be passed over).
+inline float reduce_min(Lanes x) {
+  __m128 m = _mm_min_ps(x.a, x.b);
+  m = _mm_min_ps(m, _mm_movehl_ps(m, m));
+  return _mm_cvtss_f32(_mm_min_ss(m, _mm_shuffle_ps(m, m, 1)));
+}
+inline float reduce_max(Lanes x) {
+  __m128 m = _mm_max_ps(x.a, x.b);
+  m = _mm_max_ps(m, _mm_movehl_ps(m, m));
+  return _mm_cvtss_f32(_mm_max_ss(m, _mm_shuffle_ps(m, m, 1)));
+}
+
+// Eight lanes, one per child slot of a node: these lanes themselves.
+using SlotLanes = Lanes;
+inline SlotLanes load_slots(const float* p) {
+  return load(p);
+}
+
 #include "octree_lane_operators.inc"
 
 }  // namespace packet_sse2
@@ -180,6 +198,22 @@ inline Lanes gather(const float* base, const std::int32_t* offset) {
       _mm256_i32gather_ps(base, _mm256_load_si256(reinterpret_cast<const __m256i*>(offset)), 4)};
 }
 
+inline float reduce_min(Lanes x) {
+  __m128 m = _mm_min_ps(_mm256_castps256_ps128(x.v), _mm256_extractf128_ps(x.v, 1));
+  m = _mm_min_ps(m, _mm_movehl_ps(m, m));
+  return _mm_cvtss_f32(_mm_min_ss(m, _mm_shuffle_ps(m, m, 1)));
+}
+inline float reduce_max(Lanes x) {
+  __m128 m = _mm_max_ps(_mm256_castps256_ps128(x.v), _mm256_extractf128_ps(x.v, 1));
+  m = _mm_max_ps(m, _mm_movehl_ps(m, m));
+  return _mm_cvtss_f32(_mm_max_ss(m, _mm_shuffle_ps(m, m, 1)));
+}
+
+using SlotLanes = Lanes;
+inline SlotLanes load_slots(const float* p) {
+  return load(p);
+}
+
 #include "octree_lane_operators.inc"
 
 }  // namespace packet_avx2
@@ -255,6 +289,19 @@ inline unsigned equal_ids(const std::uint32_t* ids, std::uint32_t id) {
 
 inline Lanes gather(const float* base, const std::int32_t* offset) {
   return {_mm512_i32gather_ps(_mm512_load_si512(offset), base, 4)};
+}
+
+inline float reduce_min(Lanes x) {
+  return _mm512_reduce_min_ps(x.v);
+}
+inline float reduce_max(Lanes x) {
+  return _mm512_reduce_max_ps(x.v);
+}
+
+// A node's eight slots fill half these lanes: AVX2's eight serve.
+using SlotLanes = packet_avx2::Lanes;
+inline SlotLanes load_slots(const float* p) {
+  return packet_avx2::load(p);
 }
 
 #include "octree_lane_operators.inc"
