@@ -10,6 +10,7 @@
 // below. Masks combine with & and test with `!mask` (no lane left).
 
 #include <cmath>
+#include <type_traits>
 
 #include "occlusion/core/aabb.hpp"
 #include "occlusion/core/ray.hpp"
@@ -54,6 +55,17 @@ template <class Num>
 inline Num safe_inverse_component(const Num& d) {
   const auto zero = (d <= Num(0.0f)) & (Num(0.0f) <= d);
   return select(zero, sign_of(d) * Num(kHugeInverse), Num(1.0f) / d);
+}
+
+// Whether the triangle test stops once no ray is left. A single ray stops. A
+// packet carries on with its mask: whether every lane has failed is data, and
+// on bench_moc the mispredicted branches cost more than finishing the test
+// (shadow rays 1.04 -> 1.17x Embree). Masked lanes change no answer. The
+// sphere test keeps its branch: a square root and a division more per miss
+// cost bench_poc's closest hits about 10%.
+template <class Num, class Mask>
+inline bool stop_early(Mask active) {
+  return std::is_same_v<Num, float> && !active;
 }
 
 }  // namespace lane_math

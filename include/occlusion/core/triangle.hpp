@@ -78,7 +78,7 @@ inline Mask triangle_hit(const RayComponents<Num>& ray, const PackedTriangle& tr
   const Num p_z = ray.direction_x * tri.e2.y() - ray.direction_y * tri.e2.x();
   const Num u_scaled = dot3(s_x, s_y, s_z, p_x, p_y, p_z) * sign;
   active = active & (u_scaled >= 0.0f) & (u_scaled <= abs_det);
-  if (!active) return active;
+  if (lane_math::stop_early<Num>(active)) return active;
   // q = s x e1
   const Num q_x = s_y * tri.e1.z() - s_z * tri.e1.y();
   const Num q_y = s_z * tri.e1.x() - s_x * tri.e1.z();
@@ -86,7 +86,7 @@ inline Mask triangle_hit(const RayComponents<Num>& ray, const PackedTriangle& tr
   const Num v_scaled =
       dot3(ray.direction_x, ray.direction_y, ray.direction_z, q_x, q_y, q_z) * sign;
   active = active & (v_scaled >= 0.0f) & (u_scaled + v_scaled <= abs_det);
-  if (!active) return active;
+  if (lane_math::stop_early<Num>(active)) return active;
   t_hit = dot3(Num(tri.e2.x()), Num(tri.e2.y()), Num(tri.e2.z()), q_x, q_y, q_z) / det;
   return active & (t_hit >= ray.t_min) & (t_hit <= ray.t_max);
 }
