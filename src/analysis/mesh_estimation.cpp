@@ -6,6 +6,7 @@
 #include <limits>
 #include <map>
 #include <sstream>
+#include <utility>
 
 #include "analysis_support.hpp"
 #include "mesh_estimation_stages.hpp"
@@ -226,10 +227,9 @@ MeshEstimate estimate_mesh(const PointCloud& cloud, const RegionGrowingOptions& 
   if (segmentation.regions.regions == 0) {
     throw std::logic_error("mesh estimation: region growing found no region");
   }
-  // Only edge recovery needs the neighbour lists from here on.
+  // Only edge recovery needs the neighbourhoods from here on, and only their lists.
   std::vector<Eigen::Vector3f>().swap(hoods.normals);
   std::vector<float>().swap(hoods.curvatures);
-  if (!options.recover_edges) hoods.lists.clear();
   const std::vector<pcl::PointIndices>& clusters = segmentation.clusters;
   estimate.regions = segmentation.regions;
   estimate.clusters_found = clusters.size();
@@ -244,6 +244,12 @@ MeshEstimate estimate_mesh(const PointCloud& cloud, const RegionGrowingOptions& 
     estimate.point_cluster[source.empty() ? i : source[i]] = label[i];
   }
 
+  // Edge recovery needs only the lists of points in no cluster: the rest go
+  // before the planes are fitted.
+  mesh_estimation::EdgeCandidates candidates;
+  if (options.recover_edges) candidates = mesh_estimation::edge_candidates(hoods, label);
+  hoods.lists.clear();
+
   start = Clock::now();
   std::vector<PlaneOutcome> planes(clusters.size());
   for_each_cluster(clusters.size(), options.threads, "planes", progress, [&](std::size_t c) {
@@ -251,8 +257,7 @@ MeshEstimate estimate_mesh(const PointCloud& cloud, const RegionGrowingOptions& 
   });
   mesh_estimation::EdgePoints edges;
   if (options.recover_edges) {
-    edges = mesh_estimation::recover_edge_points(points, hoods, label, planes, options);
-    hoods.lists.clear();
+    edges = mesh_estimation::recover_edge_points(points, std::move(candidates), planes, options);
   }
   estimate.timings.planes_seconds = seconds_since(start);
 

@@ -67,14 +67,25 @@ struct PlaneOutcome {
 PlaneOutcome fit_plane(const Cloud::ConstPtr& cloud, const pcl::PointIndices& cluster,
                        const RegionGrowingOptions& options);
 
-// Points in no cluster (label < 0) that planes took, and which planes (up to
-// three: a corner's), -1 for none. Adds them to the planes' inliers_2d.
+// The points in no cluster (label < 0), each with the clusters of its
+// neighbours, nearest first, each cluster once: all that edge recovery needs
+// of the neighbourhoods (a cluster whose plane is too far from the point is
+// too far however often it appears). Taken before the planes are fitted so
+// that every point's neighbour lists, most of -rgoc's memory, go first.
+struct EdgeCandidates {
+  std::vector<pcl::index_t> points;
+  std::vector<std::uint32_t> first;  // points[e]'s clusters: [first[e], first[e + 1])
+  std::vector<std::int32_t> clusters;
+};
+EdgeCandidates edge_candidates(const Neighbourhoods& hoods, const std::vector<std::int32_t>& label);
+
+// Candidates that planes took, and which planes (up to three: a corner's), -1
+// for none. Adds them to the planes' inliers_2d.
 struct EdgePoints {
   std::vector<pcl::index_t> points;
   std::vector<std::array<std::int32_t, 3>> planes;
 };
-EdgePoints recover_edge_points(const Cloud::ConstPtr& cloud, const Neighbourhoods& hoods,
-                               const std::vector<std::int32_t>& label,
+EdgePoints recover_edge_points(const Cloud::ConstPtr& cloud, EdgeCandidates candidates,
                                std::vector<PlaneOutcome>& planes,
                                const RegionGrowingOptions& options);
 

@@ -9,9 +9,11 @@
 #include <pcl/segmentation/region_growing.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <random>
+#include <utility>
 
 #include "mesh_estimation_stages.hpp"
 #include "occlusion/analysis/mesh_sampling.hpp"
@@ -234,6 +236,67 @@ INSTANTIATE_TEST_SUITE_P(MeshEstimationStages, SameRegions,
                          ::testing::Values(GrowingCase{4.0, 1.0, 30, 100000},
                                            GrowingCase{8.0, 0.02, 30, 100000},
                                            GrowingCase{3.0, 0.05, 5, 2000}));
+
+// Edge recovery from the candidates (each unclustered point's distinct
+// neighbour clusters, taken before the lists are freed) against its
+// definition over the whole lists: walk the point's neighbours nearest first
+// and join up to three clusters whose plane is within ransac_distance.
+TEST(MeshEstimationStages, EdgeRecoveryFromCandidatesIsFromTheWholeLists) {
+  const Cloud::Ptr cloud = noisy_room(600.0, 0.01);
+  RegionGrowingOptions options = small_options();
+  options.curvature_threshold = 0.05;
+  const Neighbourhoods hoods = mesh_estimation::find_neighbourhoods(cloud, options, {});
+  const mesh_estimation::Segmentation segmentation =
+      mesh_estimation::grow_regions(hoods, options, {});
+  std::vector<std::int32_t> label(cloud->size(), -1);
+  for (std::size_t c = 0; c < segmentation.clusters.size(); ++c) {
+    for (const pcl::index_t i : segmentation.clusters[c].indices) {
+      label[static_cast<std::size_t>(i)] = static_cast<std::int32_t>(c);
+    }
+  }
+  std::vector<mesh_estimation::PlaneOutcome> planes;
+  for (const auto& cluster : segmentation.clusters) {
+    planes.push_back(mesh_estimation::fit_plane(cloud, cluster, options));
+  }
+
+  // The definition, over the whole lists.
+  std::vector<std::array<std::int32_t, 3>> expected(cloud->size(), {-1, -1, -1});
+  std::size_t expected_edges = 0;
+  for (std::size_t i = 0; i < cloud->size(); ++i) {
+    if (label[i] >= 0) continue;
+    const Eigen::Vector3d p = (*cloud)[i].getVector3fMap().cast<double>();
+    std::size_t count = 0;
+    for (const pcl::index_t n : list_of(hoods, i)) {
+      const std::int32_t c = label[static_cast<std::size_t>(n)];
+      if (c < 0 || count == 3) continue;
+      if (std::find(expected[i].begin(), expected[i].begin() + count, c) !=
+          expected[i].begin() + count) {
+        continue;
+      }
+      const auto& plane = planes[static_cast<std::size_t>(c)].plane;
+      if (!plane || std::abs(plane->normal.dot(p) + plane->offset) > options.ransac_distance) {
+        continue;
+      }
+      expected[i][count++] = c;
+    }
+    expected_edges += count > 0 ? 1 : 0;
+  }
+  ASSERT_GT(expected_edges, 0u);  // the case does recover edge points
+
+  mesh_estimation::EdgeCandidates candidates = mesh_estimation::edge_candidates(hoods, label);
+  const mesh_estimation::EdgePoints edges =
+      mesh_estimation::recover_edge_points(cloud, std::move(candidates), planes, options);
+  std::vector<std::array<std::int32_t, 3>> got(cloud->size(), {-1, -1, -1});
+  ASSERT_EQ(edges.points.size(), edges.planes.size());
+  for (std::size_t e = 0; e < edges.points.size(); ++e) {
+    const auto i = static_cast<std::size_t>(edges.points[e]);
+    ASSERT_LT(label[i], 0) << "point " << i << " is in a cluster";
+    got[i] = edges.planes[e];
+  }
+  for (std::size_t i = 0; i < cloud->size(); ++i) {
+    ASSERT_EQ(got[i], expected[i]) << "point " << i;
+  }
+}
 
 }  // namespace
 }  // namespace occlusion
