@@ -198,15 +198,12 @@ inline Lanes gather(const float* base, const std::int32_t* offset) {
       _mm256_i32gather_ps(base, _mm256_load_si256(reinterpret_cast<const __m256i*>(offset)), 4)};
 }
 
+// SSE2's reductions over the two halves.
 inline float reduce_min(Lanes x) {
-  __m128 m = _mm_min_ps(_mm256_castps256_ps128(x.v), _mm256_extractf128_ps(x.v, 1));
-  m = _mm_min_ps(m, _mm_movehl_ps(m, m));
-  return _mm_cvtss_f32(_mm_min_ss(m, _mm_shuffle_ps(m, m, 1)));
+  return packet_sse2::reduce_min({_mm256_castps256_ps128(x.v), _mm256_extractf128_ps(x.v, 1)});
 }
 inline float reduce_max(Lanes x) {
-  __m128 m = _mm_max_ps(_mm256_castps256_ps128(x.v), _mm256_extractf128_ps(x.v, 1));
-  m = _mm_max_ps(m, _mm_movehl_ps(m, m));
-  return _mm_cvtss_f32(_mm_max_ss(m, _mm_shuffle_ps(m, m, 1)));
+  return packet_sse2::reduce_max({_mm256_castps256_ps128(x.v), _mm256_extractf128_ps(x.v, 1)});
 }
 
 using SlotLanes = Lanes;
