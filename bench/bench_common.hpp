@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
+#include <filesystem>
 #include <cstddef>
 #include <limits>
 #include <sstream>
@@ -69,26 +71,103 @@ struct CliRun {
   Json::Value json;  // the best run's stdout parsed as JSON; null if it is not JSON
 };
 
-// The best wall time of kRepetitions runs of argv (see child_process.hpp for
-// the peak RSS, and call this while the caller is small); a failed run ends
-// the series and is returned as it is.
-inline CliRun run_cli(const std::vector<std::string>& argv, const std::string& capture_prefix) {
-  CliRun run;
-  run.best.wall_seconds = std::numeric_limits<double>::infinity();
+// The best wall times of kRepetitions runs each of two programs, run in turn
+// (first, second, first, ...) so that a busy machine slows both alike; see
+// child_process.hpp for the peak RSS, and call this while the caller is small.
+// A failed run ends that program's series and is returned as it is. Each
+// JSON is that program's best run's stdout, parsed; null if it is not JSON.
+inline std::pair<CliRun, CliRun> run_clis_alternating(const std::vector<std::string>& first,
+                                                      const std::string& first_capture,
+                                                      const std::vector<std::string>& second,
+                                                      const std::string& second_capture) {
+  std::pair<CliRun, CliRun> runs;
+  std::pair<bool, bool> failed(false, false);
+  runs.first.best.wall_seconds = std::numeric_limits<double>::infinity();
+  runs.second.best.wall_seconds = std::numeric_limits<double>::infinity();
+  const auto one = [](const std::vector<std::string>& argv, const std::string& capture,
+                      CliRun& run, bool& failed_before) {
+    if (failed_before) return;
+    ChildResult r = run_measured(argv, capture);
+    failed_before = r.exit_code != 0;
+    if (failed_before || r.wall_seconds < run.best.wall_seconds) run.best = std::move(r);
+  };
   for (int k = 0; k < kRepetitions; ++k) {
-    ChildResult r = run_measured(argv, capture_prefix);
-    if (r.exit_code != 0) {
-      run.best = std::move(r);
-      return run;
+    one(first, first_capture, runs.first, failed.first);
+    if (!second.empty()) one(second, second_capture, runs.second, failed.second);
+  }
+  for (CliRun* run : {&runs.first, &runs.second}) {
+    std::istringstream in(run->best.out);
+    std::string errors;
+    if (!Json::parseFromStream(Json::CharReaderBuilder(), in, &run->json, &errors)) {
+      run->json = Json::Value();
     }
-    if (r.wall_seconds < run.best.wall_seconds) run.best = std::move(r);
   }
-  std::istringstream in(run.best.out);
-  std::string errors;
-  if (!Json::parseFromStream(Json::CharReaderBuilder(), in, &run.json, &errors)) {
-    run.json = Json::Value();
+  return runs;
+}
+
+// The best wall time of kRepetitions runs of argv, as above.
+inline CliRun run_cli(const std::vector<std::string>& argv, const std::string& capture_prefix) {
+  return run_clis_alternating(argv, capture_prefix, {}, {}).first;
+}
+
+// `cli -JOB INPUT --json --out DIR/ours SETTINGS` and `embree_job -JOB INPUT
+// --out DIR/embree SETTINGS` (embree_job.cpp: the same job on Embree), in turn
+// as above; DIR is bench_JOB_out and the captures bench_JOB_cli and
+// bench_JOB_embree_job, all in bench_dir, where embree_job is too.
+inline std::pair<CliRun, CliRun> run_job_and_embree_job(const std::filesystem::path& bench_dir,
+                                                       const std::string& cli,
+                                                       const std::string& job,
+                                                       const std::string& input,
+                                                       const std::vector<std::string>& settings) {
+  const std::string name = "bench_" + job;
+  const std::string out = (bench_dir / (name + "_out")).string();
+  std::vector<std::string> ours = {cli, "-" + job, input, "--json", "--out", out + "/ours"};
+  std::vector<std::string> theirs = {(bench_dir / "embree_job").string(), "-" + job, input,
+                                     "--out", out + "/embree"};
+  ours.insert(ours.end(), settings.begin(), settings.end());
+  theirs.insert(theirs.end(), settings.begin(), settings.end());
+  return run_clis_alternating(ours, (bench_dir / (name + "_cli")).string(), theirs,
+                              (bench_dir / (name + "_embree_job")).string());
+}
+
+// "load 0.050, build 0.400, trace 0.900, total 1.400 s": the stages a job's
+// JSON timings hold, in the order they run.
+inline std::string stage_timings(const Json::Value& json) {
+  std::string text;
+  const Json::Value& timings = json["timings"];
+  for (const char* stage : {"load", "sampling", "build", "trace", "write", "total"}) {
+    const std::string key = std::string(stage) + "_seconds";
+    if (!timings.isMember(key)) continue;
+    char figure[48];
+    std::snprintf(figure, sizeof figure, "%s%s %.3f", text.empty() ? "" : ", ", stage,
+                  timings[key].asDouble());
+    text += figure;
   }
-  return run;
+  return text.empty() ? "no timings" : text + " s";
+}
+
+// Two lines, ours and the Embree program's whole process (wall from fork to
+// exit, peak RSS, their own stage timings), then the ratio of the wall times
+// (goal >= 1.0, issue 17). False if either failed.
+inline bool print_whole_process(const char* job, const CliRun& ours, const CliRun& embree) {
+  bool ok = true;
+  for (const auto& [who, run] : {std::pair<const char*, const CliRun*>("ours  ", &ours),
+                                 std::pair<const char*, const CliRun*>("embree", &embree)}) {
+    const ChildResult& c = run->best;
+    if (c.exit_code != 0) {
+      std::printf("%s whole process, %s: FAILED (exit %d)\n%s", job, who, c.exit_code,
+                  c.err.c_str());
+      ok = false;
+      continue;
+    }
+    std::printf("%s whole process, %s %.3f s, peak RSS %.0f MB (%s)\n", job, who, c.wall_seconds,
+                static_cast<double>(c.peak_rss_bytes) / 1e6, stage_timings(run->json).c_str());
+  }
+  if (ok) {
+    std::printf("%s whole-process ours/embree speed: %.2f\n", job,
+                embree.best.wall_seconds / ours.best.wall_seconds);
+  }
+  return ok;
 }
 
 }  // namespace occlusion::bench

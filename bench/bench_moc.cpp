@@ -90,12 +90,12 @@ int run(const Options& o) {
 
   // The CLI runs first, while this process is small: see child_process.hpp on ru_maxrss.
   malloc_trim(0);
-  std::fprintf(stderr, "bench_moc: running %s -moc on %s ...\n", cli.c_str(), room_path.c_str());
-  const CliRun cli_run =
-      run_cli({cli, "-moc", room_path, "--pattern", std::to_string(kPattern),
-               "--samples-per-unit-area", exact(density), "--threads", std::to_string(o.threads),
-               "--seed", std::to_string(o.seed), "--json"},
-              (bench_dir / "bench_moc_cli").string());
+  std::fprintf(stderr, "bench_moc: running %s -moc on %s and embree_job -moc, in turn ...\n",
+               cli.c_str(), room_path.c_str());
+  const auto [cli_run, embree_run] = run_job_and_embree_job(
+      bench_dir, cli, "moc", room_path,
+      {"--pattern", std::to_string(kPattern), "--samples-per-unit-area", exact(density),
+       "--threads", std::to_string(o.threads), "--seed", std::to_string(o.seed)});
 
   const MeshSamples samples = sample_mesh(mesh, density, o.seed);
   Eigen::Vector3d lo, hi;
@@ -184,6 +184,9 @@ int run(const Options& o) {
   if (cli_run.json.isMember("occlusion_level")) {
     std::printf(", CLI %.6f", cli_run.json["occlusion_level"].asDouble());
   }
+  if (embree_run.json.isMember("occlusion_level")) {
+    std::printf(", Embree program %.6f", embree_run.json["occlusion_level"].asDouble());
+  }
   std::printf(
       "\nlibrary  compute_mesh_occlusion %.3f s (sampling %.3f, build %.3f, trace %.3f)\n\n",
       library_seconds, library.timings.sampling_seconds, library.timings.build_seconds,
@@ -197,6 +200,7 @@ int run(const Options& o) {
   }
   std::printf("moc end-to-end: %.2f s (goal < 1 s), peak RSS: %.0f MB\n", c.wall_seconds,
               static_cast<double>(c.peak_rss_bytes) / 1e6);
+  if (!print_whole_process("moc", cli_run, embree_run)) return 1;
   return 0;
 }
 

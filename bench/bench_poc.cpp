@@ -79,16 +79,6 @@ Options parse(int argc, char** argv) {
   return o;
 }
 
-// "load 0.05 s, build 0.40, trace 0.90, total 1.40" from a job's JSON timings.
-std::string cli_timings(const Json::Value& json) {
-  const Json::Value& t = json["timings"];
-  char text[160];
-  std::snprintf(text, sizeof text, "load %.3f s, build %.3f, trace %.3f, total %.3f",
-                t["load_seconds"].asDouble(), t["build_seconds"].asDouble(),
-                t["trace_seconds"].asDouble(), t["total_seconds"].asDouble());
-  return text;
-}
-
 // One line per command: wall time from fork to exit, the job's time after
 // loading (total - load in its JSON, what the 2 s goal is about), and peak RSS.
 bool print_end_to_end(const char* name, const CliRun& run, bool after_loading_goal) {
@@ -129,16 +119,18 @@ int run(const Options& o) {
   malloc_trim(0);
   const std::string threads = std::to_string(o.threads);
   const std::string radius = exact(kPointRadius);
-  std::fprintf(stderr, "bench_poc: running %s -poc on %s ...\n", cli.c_str(), cloud_path.c_str());
-  const CliRun poc_cli =
-      run_cli({cli, "-poc", cloud_path, "--num-vp", std::to_string(kGridViewpoints),
-               "--num-rays-per-vp", std::to_string(o.rays_per_vp), "--point-radius", radius,
-               "--threads", threads, "--seed", std::to_string(o.seed), "--json"},
-              (bench_dir / "bench_poc_cli").string());
-  std::fprintf(stderr, "bench_poc: running %s -fscan ...\n", cli.c_str());
-  const CliRun scan_cli = run_cli({cli, "-fscan", cloud_path, "--pattern", std::to_string(kPattern),
-                                   "--point-radius", radius, "--threads", threads, "--json"},
-                                  (bench_dir / "bench_fscan_cli").string());
+  std::fprintf(stderr, "bench_poc: running %s -poc on %s and embree_job -poc, in turn ...\n",
+               cli.c_str(), cloud_path.c_str());
+  const auto [poc_cli, poc_embree] = run_job_and_embree_job(
+      bench_dir, cli, "poc", cloud_path,
+      {"--num-vp", std::to_string(kGridViewpoints), "--num-rays-per-vp",
+       std::to_string(o.rays_per_vp), "--point-radius", radius, "--threads", threads, "--seed",
+       std::to_string(o.seed)});
+  std::fprintf(stderr, "bench_poc: running %s -fscan and embree_job -fscan, in turn ...\n",
+               cli.c_str());
+  const auto [scan_cli, scan_embree] = run_job_and_embree_job(
+      bench_dir, cli, "fscan", cloud_path,
+      {"--pattern", std::to_string(kPattern), "--point-radius", radius, "--threads", threads});
 
   auto start = std::chrono::steady_clock::now();
   const PointCloud cloud = read_cloud(cloud_path);
@@ -287,6 +279,9 @@ int run(const Options& o) {
   if (poc_cli.json.isMember("occlusion_level")) {
     std::printf(", CLI %.6f", poc_cli.json["occlusion_level"].asDouble());
   }
+  if (poc_embree.json.isMember("occlusion_level")) {
+    std::printf(", Embree program %.6f", poc_embree.json["occlusion_level"].asDouble());
+  }
   std::printf("\n         fscan visible fraction: ours %.6f, embree %.6f, scan_cloud %.6f",
               visible_fraction_from_flags(scan_rays, our_blocked.data()),
               visible_fraction_from_flags(scan_rays, their_blocked.data()),
@@ -294,23 +289,28 @@ int run(const Options& o) {
   if (scan_cli.json.isMember("visible_fraction")) {
     std::printf(", CLI %.6f", scan_cli.json["visible_fraction"].asDouble());
   }
+  if (scan_embree.json.isMember("visible_fraction")) {
+    std::printf(", Embree program %.6f", scan_embree.json["visible_fraction"].asDouble());
+  }
   std::printf(
       "\nlibrary  compute_cloud_occlusion %.3f s (build %.3f, trace %.3f); scan_cloud %.3f s "
       "(build %.3f, trace %.3f)\n",
       poc_library_seconds, poc_library.build_seconds, poc_library.trace_seconds,
       scan_library_seconds, scan_library.build_seconds, scan_library.trace_seconds);
   if (poc_cli.json.isMember("timings")) {
-    std::printf("CLI      -poc   %s\n", cli_timings(poc_cli.json).c_str());
+    std::printf("CLI      -poc   %s\n", stage_timings(poc_cli.json).c_str());
   }
   if (scan_cli.json.isMember("timings")) {
-    std::printf("CLI      -fscan %s\n", cli_timings(scan_cli.json).c_str());
+    std::printf("CLI      -fscan %s\n", stage_timings(scan_cli.json).c_str());
   }
 
   std::printf("\npoc ours/embree throughput: %.2f\n", embree_poc / our_poc);
   std::printf("fscan ours/embree throughput: %.2f\n", embree_scan / our_scan);
   const bool poc_ok = print_end_to_end("poc", poc_cli, true);
   const bool scan_ok = print_end_to_end("fscan", scan_cli, false);
-  return poc_ok && scan_ok ? 0 : 1;
+  const bool poc_whole = print_whole_process("poc", poc_cli, poc_embree);
+  const bool scan_whole = print_whole_process("fscan", scan_cli, scan_embree);
+  return poc_ok && scan_ok && poc_whole && scan_whole ? 0 : 1;
 }
 
 }  // namespace

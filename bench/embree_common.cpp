@@ -40,13 +40,13 @@ void EmbreeTracer::commit(RTCGeometry geometry) {
 
 void EmbreeTracer::occluded(const Ray* rays, std::size_t count, std::uint8_t* occluded,
                             unsigned threads) const {
-  if (!scene_) throw std::logic_error("embree: occluded before build");
-  for_each_ray(count, threads, [&](RTCIntersectContext& context, std::size_t i) {
-    RTCRay ray = to_embree(rays[i]);
-    rtcOccluded1(scene_, &context, &ray);
-    // Embree marks an occluded ray by setting tfar to -infinity.
-    occluded[i] = ray.tfar < 0.0f ? 1 : 0;
-  });
+  occluded_made(
+      count,
+      [rays](std::size_t i, Ray& ray) {
+        ray = rays[i];
+        return true;
+      },
+      occluded, threads);
 }
 
 }  // namespace occlusion::bench

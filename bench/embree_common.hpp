@@ -12,6 +12,7 @@
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 #include <thread>
 #include <vector>
@@ -75,6 +76,26 @@ class EmbreeTracer {
   // [t_min, t_max]; rays are handed out in chunks to `threads` std::threads.
   // Throws std::logic_error before the first build.
   void occluded(const Ray* rays, std::size_t count, std::uint8_t* occluded, unsigned threads) const;
+
+  // The same over rays made as they are traced, the way a program that does
+  // not keep millions of rays would: make_ray(i, ray) fills ray i and returns
+  // true, or returns false when there is no ray to trace (occluded[i] = 0).
+  template <class MakeRay>
+  void occluded_made(std::size_t count, const MakeRay& make_ray, std::uint8_t* occluded,
+                     unsigned threads) const {
+    if (!scene_) throw std::logic_error("embree: occluded before build");
+    for_each_ray(count, threads, [&](RTCIntersectContext& context, std::size_t i) {
+      Ray made;
+      if (!make_ray(i, made)) {
+        occluded[i] = 0;
+        return;
+      }
+      RTCRay ray = to_embree(made);
+      rtcOccluded1(scene_, &context, &ray);
+      // Embree marks an occluded ray by setting tfar to -infinity.
+      occluded[i] = ray.tfar < 0.0f ? 1 : 0;
+    });
+  }
 
   static std::string version() { return RTC_VERSION_STRING; }
 

@@ -33,23 +33,35 @@ double occlusion_level_from_flags(const TriangleMesh& mesh, const MeshSamples& s
                                   const ShadowRays& shadow, const std::uint8_t* occluded) {
   std::vector<std::uint8_t> seen(shadow.samples * shadow.viewpoints, 1);
   for (std::size_t i = 0; i < shadow.rays.size(); ++i) seen[shadow.slot[i]] = occluded[i] ? 0 : 1;
+  return occlusion_level_of_faces(mesh,
+                                  face_visible_fractions(mesh, samples, shadow.viewpoints, seen));
+}
+
+std::vector<double> face_visible_fractions(const TriangleMesh& mesh, const MeshSamples& samples,
+                                           std::size_t viewpoints,
+                                           const std::vector<std::uint8_t>& seen) {
+  std::vector<double> fractions(mesh.face_count(), 0.0);
+  const auto stride = static_cast<std::ptrdiff_t>(viewpoints);
+  for (std::size_t f = 0; f < mesh.face_count(); ++f) {
+    if (samples.count_on(f) == 0) continue;
+    std::size_t visible_samples = 0;
+    for (std::size_t s = samples.first[f]; s < samples.first[f + 1]; ++s) {
+      const auto from = seen.begin() + static_cast<std::ptrdiff_t>(s) * stride;
+      visible_samples += std::find(from, from + stride, 1) != from + stride ? 1 : 0;
+    }
+    fractions[f] =
+        static_cast<double>(visible_samples) / static_cast<double>(samples.count_on(f));
+  }
+  return fractions;
+}
+
+double occlusion_level_of_faces(const TriangleMesh& mesh, const std::vector<double>& fractions) {
   double total = 0.0;
   double visible = 0.0;
   for (std::size_t f = 0; f < mesh.face_count(); ++f) {
-    std::size_t visible_samples = 0;
-    for (std::size_t s = samples.first[f]; s < samples.first[f + 1]; ++s) {
-      const auto from = seen.begin() + static_cast<std::ptrdiff_t>(s * shadow.viewpoints);
-      if (std::find(from, from + static_cast<std::ptrdiff_t>(shadow.viewpoints), 1) !=
-          from + static_cast<std::ptrdiff_t>(shadow.viewpoints)) {
-        ++visible_samples;
-      }
-    }
     const double area = mesh.face_area(f);
     total += area;
-    if (samples.count_on(f) > 0) {
-      visible +=
-          area * static_cast<double>(visible_samples) / static_cast<double>(samples.count_on(f));
-    }
+    visible += area * fractions[f];
   }
   return total > 0.0 ? 1.0 - visible / total : 0.0;
 }

@@ -36,6 +36,16 @@ ShadowRays make_shadow_rays(const MeshSamples& samples,
 double occlusion_level_from_flags(const TriangleMesh& mesh, const MeshSamples& samples,
                                   const ShadowRays& shadow, const std::uint8_t* occluded);
 
+// Per face, the share of its samples that some viewpoint sees, from
+// seen[s * viewpoints + v] (sample s seen from viewpoint v); 0 for a face
+// without samples.
+std::vector<double> face_visible_fractions(const TriangleMesh& mesh, const MeshSamples& samples,
+                                           std::size_t viewpoints,
+                                           const std::vector<std::uint8_t>& seen);
+
+// 1 - sum(area x visible fraction) / total area, as compute_mesh_occlusion reduces faces.
+double occlusion_level_of_faces(const TriangleMesh& mesh, const std::vector<double>& fractions);
+
 // A samples_per_unit_area for which sample_mesh yields at least `samples`
 // samples: samples / total area if that suffices, else the smallest density
 // above it that does (within 1e-9 relative).

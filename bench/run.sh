@@ -32,7 +32,7 @@ fi
 cmake -S "$repo" -B "$build" -DCMAKE_BUILD_TYPE=Release -DOCCLUSION_BUILD_BENCH=ON \
   -DOCCLUSION_NATIVE="${OCCLUSION_NATIVE:-OFF}"
 cmake --build "$build" -j"$(nproc)" --target bench_moc bench_poc bench_rgoc bench_server \
-  generate_room occlusion
+  embree_job generate_room occlusion
 if [ "$selected" != all ]; then
   "$build/bench/bench_$selected" "$@"
   exit

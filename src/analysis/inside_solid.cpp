@@ -13,8 +13,12 @@ std::vector<double> back_face_shares(const TriangleMesh& mesh,
                                      const std::vector<Eigen::Vector3d>& viewpoints) {
   analysis_support::check_viewpoints(viewpoints, "inside solid");
   if (mesh.face_count() == 0) throw std::invalid_argument("inside solid: the mesh has no faces");
-  const std::vector<PackedTriangle> triangles = pack_triangles(mesh.triangles());
-  const TriangleOctree tree(triangles);
+  return back_face_shares(TriangleOctree(pack_triangles(mesh.triangles())), viewpoints);
+}
+
+std::vector<double> back_face_shares(const TriangleOctree& tree,
+                                     const std::vector<Eigen::Vector3d>& viewpoints) {
+  analysis_support::check_viewpoints(viewpoints, "inside solid");
   // An unrotated Fibonacci lattice: fixed, evenly spread directions.
   const double golden = M_PI * (3.0 - std::sqrt(5.0));
   std::vector<double> shares;
@@ -32,7 +36,7 @@ std::vector<double> back_face_shares(const TriangleMesh& mesh,
       ray.t_min = 0.0f;
       ray.t_max = std::numeric_limits<float>::infinity();
       const auto hit = tree.intersect(ray);
-      if (hit && direction.dot(triangles[hit->primitive_id].normal) > 0.0f) ++back;
+      if (hit && direction.dot(tree.shape(hit->primitive_id).normal) > 0.0f) ++back;
     }
     shares.push_back(static_cast<double>(back) / static_cast<double>(kInsideProbeRays));
   }

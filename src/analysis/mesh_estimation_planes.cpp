@@ -13,11 +13,8 @@
 // - On failure PCL prints to stderr and returns an empty result; every result
 //   is checked here and becomes a reason.
 
-#include <pcl/ModelCoefficients.h>
-#include <pcl/filters/project_inliers.h>
-#include <pcl/sample_consensus/method_types.h>
-#include <pcl/sample_consensus/model_types.h>
-#include <pcl/segmentation/sac_segmentation.h>
+#include <pcl/sample_consensus/ransac.h>
+#include <pcl/sample_consensus/sac_model_plane.h>
 #include <pcl/surface/convex_hull.h>
 
 #include <Eigen/Eigenvalues>
@@ -138,23 +135,26 @@ PlaneOutcome fit_plane(const Cloud::ConstPtr& cloud, const pcl::PointIndices& cl
     return outcome;
   }
 
-  pcl::SACSegmentation<pcl::PointXYZ> ransac;
-  ransac.setOptimizeCoefficients(true);
-  ransac.setModelType(pcl::SACMODEL_PLANE);
-  ransac.setMethodType(pcl::SAC_RANSAC);
-  ransac.setDistanceThreshold(options.ransac_distance);
-  ransac.setMaxIterations(static_cast<int>(options.ransac_iterations));
+  // What PCL's SACSegmentation (plane, RANSAC, optimised coefficients) and
+  // ProjectInliers do for a plane, call for call, with the same model and
+  // method: their switches over every model type took minutes to compile.
+  const auto model = pcl::make_shared<pcl::SampleConsensusModelPlane<pcl::PointXYZ>>(
+      cloud, cluster.indices, /*random=*/false);
+  pcl::RandomSampleConsensus<pcl::PointXYZ> ransac(model, options.ransac_distance);
   ransac.setProbability(kRansacConfidence);
-  ransac.setInputCloud(cloud);
-  ransac.setIndices(pcl::IndicesPtr(new pcl::Indices(cluster.indices)));
-  pcl::PointIndices::Ptr inliers(new pcl::PointIndices);
-  pcl::ModelCoefficients::Ptr coefficients(new pcl::ModelCoefficients);
-  ransac.segment(*inliers, *coefficients);
-  outcome.inliers = inliers->indices.size();
-  const bool has_plane =
-      coefficients->values.size() == 4 &&
-      Eigen::Map<const Eigen::Vector4f>(coefficients->values.data()).allFinite() &&
-      Eigen::Map<const Eigen::Vector3f>(coefficients->values.data()).norm() > 0.0f;
+  ransac.setMaxIterations(static_cast<int>(options.ransac_iterations));
+  pcl::Indices inliers;
+  Eigen::VectorXf coefficients;
+  if (ransac.computeModel(0)) {
+    ransac.getInliers(inliers);
+    Eigen::VectorXf found;
+    ransac.getModelCoefficients(found);
+    model->optimizeModelCoefficients(inliers, found, coefficients);
+    model->selectWithinDistance(coefficients, options.ransac_distance, inliers);
+  }
+  outcome.inliers = inliers.size();
+  const bool has_plane = coefficients.size() == 4 && coefficients.allFinite() &&
+                         coefficients.head<3>().norm() > 0.0f;
   if (outcome.inliers < 3 || !has_plane) {
     outcome.reason = SkipReason::kNoPlane;
     outcome.detail = "RANSAC found no plane with 3 or more of " + count_text(points, "points") +
@@ -162,19 +162,13 @@ PlaneOutcome fit_plane(const Cloud::ConstPtr& cloud, const pcl::PointIndices& cl
     return outcome;
   }
 
-  pcl::ProjectInliers<pcl::PointXYZ> projection;
-  projection.setModelType(pcl::SACMODEL_PLANE);
-  projection.setInputCloud(cloud);
-  projection.setIndices(inliers);
-  projection.setModelCoefficients(coefficients);
   Cloud projected;
-  projection.filter(projected);
+  model->projectPoints(inliers, coefficients, projected, /*copy_data_fields=*/false);
 
   ClusterPlane plane;
-  const Eigen::Vector3d raw_normal(coefficients->values[0], coefficients->values[1],
-                                   coefficients->values[2]);
+  const Eigen::Vector3d raw_normal(coefficients[0], coefficients[1], coefficients[2]);
   plane.normal = raw_normal.normalized();
-  plane.offset = coefficients->values[3] / raw_normal.norm();
+  plane.offset = coefficients[3] / raw_normal.norm();
   plane.axis_u = any_perpendicular(plane.normal);
   plane.axis_v = plane.normal.cross(plane.axis_u);
   plane.origin.setZero();

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "analysis_support.hpp"
+#include "occlusion/analysis/inside_solid.hpp"
 #include "occlusion/analysis/mesh_sampling.hpp"
 #include "occlusion/core/triangle_octree.hpp"
 
@@ -107,6 +108,7 @@ MeshOcclusionResult compute_mesh_occlusion(const TriangleMesh& mesh,
   result.timings.build_seconds = seconds_since(start);
   result.octree = tree.stats();
   progress.check_cancel();
+  const std::vector<double> back_face_share = back_face_shares(tree, local_viewpoints);
 
   const double epsilon = mesh_shadow_epsilon(mesh, options);
 
@@ -197,8 +199,8 @@ MeshOcclusionResult compute_mesh_occlusion(const TriangleMesh& mesh,
         group.total_area > 0.0 ? 1.0 - group.visible_area / group.total_area : 0.0;
   }
   for (std::size_t v = 0; v < view_count; ++v) {
-    result.viewpoints.push_back(
-        {viewpoints[v], viewpoint_area[v], viewpoint_area[v] / result.total_area});
+    result.viewpoints.push_back({viewpoints[v], viewpoint_area[v],
+                                 viewpoint_area[v] / result.total_area, back_face_share[v]});
   }
   progress("done", 1.0);
   return result;

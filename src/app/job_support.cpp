@@ -94,16 +94,16 @@ ViewpointChoice::Resolved resolve_for_cloud(const ViewpointChoice& choice, const
   return resolved;
 }
 
-void warn_viewpoints_inside_solids(const TriangleMesh& mesh,
+void warn_viewpoints_inside_solids(const std::vector<ViewpointVisibility>& visibility,
                                    const ViewpointChoice::Resolved& viewpoints,
                                    std::vector<std::string>& warnings) {
-  const std::vector<double> shares = back_face_shares(mesh, viewpoints.positions);
-  for (std::size_t v = 0; v < shares.size(); ++v) {
-    if (shares[v] <= kInsideBackFaceShare) continue;
+  for (std::size_t v = 0; v < visibility.size(); ++v) {
+    const double share = visibility[v].back_face_share;
+    if (share <= kInsideBackFaceShare) continue;
     std::ostringstream message;
     message << "viewpoint " << viewpoints.names[v] << " at "
             << position_text(viewpoints.positions[v]) << ": "
-            << static_cast<int>(std::lround(100.0 * shares[v]))
+            << static_cast<int>(std::lround(100.0 * share))
             << " % of its rays first hit the back of a face, so it is inside a closed solid "
                "(or the mesh's faces point away from it): move it, or check the face order";
     warnings.push_back(message.str());

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "occlusion/analysis/mesh_occlusion.hpp"
 #include "occlusion/analysis/point_spacing.hpp"
 #include "occlusion/analysis/scene_frame.hpp"
 #include "occlusion/analysis/up_axis.hpp"
@@ -42,8 +43,9 @@ ViewpointChoice::Resolved resolve_for_cloud(const ViewpointChoice& choice, const
                                             const std::string& frame = "robust",
                                             const std::string& up = "+z");
 // Meshes keep their bounding box (scene_frame.hpp says why); this warns for
-// each viewpoint that is inside a closed solid (inside_solid.hpp).
-void warn_viewpoints_inside_solids(const TriangleMesh& mesh,
+// each viewpoint that is inside a closed solid (inside_solid.hpp), from the
+// shares compute_mesh_occlusion measured with its own tree.
+void warn_viewpoints_inside_solids(const std::vector<ViewpointVisibility>& visibility,
                                    const ViewpointChoice::Resolved& viewpoints,
                                    std::vector<std::string>& warnings);
 

@@ -54,7 +54,6 @@ MeshOcclusionReport run_mesh_occlusion_on(const TriangleMesh& mesh,
   check_memory_budget(
       mesh_occlusion_memory(mesh, request.samples_per_unit_area, viewpoints.positions.size()),
       request.max_memory_mb);
-  job::warn_viewpoints_inside_solids(mesh, viewpoints, report.warnings);
   const double half_extent = 0.5 * (hi - lo).maxCoeff();
   if (request.enable_acceleration && request.octree_resolution >= half_extent) {
     report.warnings.push_back("octree_resolution " + std::to_string(request.octree_resolution) +
@@ -70,6 +69,7 @@ MeshOcclusionReport run_mesh_occlusion_on(const TriangleMesh& mesh,
   options.seed = request.seed;
   options.threads = request.threads;
   report.result = compute_mesh_occlusion(mesh, viewpoints.positions, options, progress);
+  job::warn_viewpoints_inside_solids(report.result.viewpoints, viewpoints, report.warnings);
   return report;
 }
 

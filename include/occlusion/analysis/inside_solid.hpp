@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "occlusion/core/mesh.hpp"
+#include "occlusion/core/triangle_octree.hpp"
 
 namespace occlusion {
 
@@ -23,6 +24,12 @@ inline constexpr double kInsideBackFaceShare = 0.5;
 // Per viewpoint: back-face first hits over all kInsideProbeRays rays.
 // std::invalid_argument for a mesh without faces or a non-finite viewpoint.
 std::vector<double> back_face_shares(const TriangleMesh& mesh,
+                                     const std::vector<Eigen::Vector3d>& viewpoints);
+
+// The same over a tree already built on the mesh's triangles, viewpoints in
+// the tree's frame: compute_mesh_occlusion's own, so that the jobs' warning
+// costs no second tree. std::invalid_argument for a non-finite viewpoint.
+std::vector<double> back_face_shares(const TriangleOctree& tree,
                                      const std::vector<Eigen::Vector3d>& viewpoints);
 
 }  // namespace occlusion

@@ -34,6 +34,9 @@ struct ViewpointVisibility {
   Eigen::Vector3d position;
   double visible_area = 0.0;      // area seen from this viewpoint alone
   double visible_fraction = 0.0;  // visible_area / total_area
+  // Share of its inside-solid probes whose first hit is a back face
+  // (inside_solid.hpp): above kInsideBackFaceShare it is inside a solid.
+  double back_face_share = 0.0;
 };
 
 struct GroupVisibility {
