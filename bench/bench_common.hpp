@@ -4,9 +4,9 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstddef>
 #include <cstdio>
 #include <filesystem>
-#include <cstddef>
 #include <limits>
 #include <sstream>
 #include <string>
@@ -84,8 +84,8 @@ inline std::pair<CliRun, CliRun> run_clis_alternating(const std::vector<std::str
   std::pair<bool, bool> failed(false, false);
   runs.first.best.wall_seconds = std::numeric_limits<double>::infinity();
   runs.second.best.wall_seconds = std::numeric_limits<double>::infinity();
-  const auto one = [](const std::vector<std::string>& argv, const std::string& capture,
-                      CliRun& run, bool& failed_before) {
+  const auto one = [](const std::vector<std::string>& argv, const std::string& capture, CliRun& run,
+                      bool& failed_before) {
     if (failed_before) return;
     ChildResult r = run_measured(argv, capture);
     failed_before = r.exit_code != 0;
@@ -115,15 +115,15 @@ inline CliRun run_cli(const std::vector<std::string>& argv, const std::string& c
 // as above; DIR is bench_JOB_out and the captures bench_JOB_cli and
 // bench_JOB_embree_job, all in bench_dir, where embree_job is too.
 inline std::pair<CliRun, CliRun> run_job_and_embree_job(const std::filesystem::path& bench_dir,
-                                                       const std::string& cli,
-                                                       const std::string& job,
-                                                       const std::string& input,
-                                                       const std::vector<std::string>& settings) {
+                                                        const std::string& cli,
+                                                        const std::string& job,
+                                                        const std::string& input,
+                                                        const std::vector<std::string>& settings) {
   const std::string name = "bench_" + job;
   const std::string out = (bench_dir / (name + "_out")).string();
   std::vector<std::string> ours = {cli, "-" + job, input, "--json", "--out", out + "/ours"};
-  std::vector<std::string> theirs = {(bench_dir / "embree_job").string(), "-" + job, input,
-                                     "--out", out + "/embree"};
+  std::vector<std::string> theirs = {(bench_dir / "embree_job").string(), "-" + job, input, "--out",
+                                     out + "/embree"};
   ours.insert(ours.end(), settings.begin(), settings.end());
   theirs.insert(theirs.end(), settings.begin(), settings.end());
   return run_clis_alternating(ours, (bench_dir / (name + "_cli")).string(), theirs,

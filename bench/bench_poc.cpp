@@ -121,11 +121,11 @@ int run(const Options& o) {
   const std::string radius = exact(kPointRadius);
   std::fprintf(stderr, "bench_poc: running %s -poc on %s and embree_job -poc, in turn ...\n",
                cli.c_str(), cloud_path.c_str());
-  const auto [poc_cli, poc_embree] = run_job_and_embree_job(
-      bench_dir, cli, "poc", cloud_path,
-      {"--num-vp", std::to_string(kGridViewpoints), "--num-rays-per-vp",
-       std::to_string(o.rays_per_vp), "--point-radius", radius, "--threads", threads, "--seed",
-       std::to_string(o.seed)});
+  const auto [poc_cli, poc_embree] =
+      run_job_and_embree_job(bench_dir, cli, "poc", cloud_path,
+                             {"--num-vp", std::to_string(kGridViewpoints), "--num-rays-per-vp",
+                              std::to_string(o.rays_per_vp), "--point-radius", radius, "--threads",
+                              threads, "--seed", std::to_string(o.seed)});
   std::fprintf(stderr, "bench_poc: running %s -fscan and embree_job -fscan, in turn ...\n",
                cli.c_str());
   const auto [scan_cli, scan_embree] = run_job_and_embree_job(

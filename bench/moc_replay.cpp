@@ -49,8 +49,7 @@ std::vector<double> face_visible_fractions(const TriangleMesh& mesh, const MeshS
       const auto from = seen.begin() + static_cast<std::ptrdiff_t>(s) * stride;
       visible_samples += std::find(from, from + stride, 1) != from + stride ? 1 : 0;
     }
-    fractions[f] =
-        static_cast<double>(visible_samples) / static_cast<double>(samples.count_on(f));
+    fractions[f] = static_cast<double>(visible_samples) / static_cast<double>(samples.count_on(f));
   }
   return fractions;
 }

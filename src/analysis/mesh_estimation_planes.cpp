@@ -153,8 +153,8 @@ PlaneOutcome fit_plane(const Cloud::ConstPtr& cloud, const pcl::PointIndices& cl
     model->selectWithinDistance(coefficients, options.ransac_distance, inliers);
   }
   outcome.inliers = inliers.size();
-  const bool has_plane = coefficients.size() == 4 && coefficients.allFinite() &&
-                         coefficients.head<3>().norm() > 0.0f;
+  const bool has_plane =
+      coefficients.size() == 4 && coefficients.allFinite() && coefficients.head<3>().norm() > 0.0f;
   if (outcome.inliers < 3 || !has_plane) {
     outcome.reason = SkipReason::kNoPlane;
     outcome.detail = "RANSAC found no plane with 3 or more of " + count_text(points, "points") +
