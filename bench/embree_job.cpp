@@ -36,7 +36,7 @@
 #include "occlusion/analysis/viewpoints.hpp"
 #include "occlusion/io/atomic_file.hpp"
 #include "occlusion/io/cloud_io.hpp"
-#include "occlusion/io/csv_file.hpp"
+#include "occlusion/io/face_table.hpp"
 #include "occlusion/io/mesh_reader.hpp"
 #include "occlusion/io/ply_mesh_writer.hpp"
 
@@ -192,17 +192,11 @@ Json::Value run_moc(const Options& o, Stages& stages) {
 
   if (!o.out.empty()) {
     ensure_directory(o.out);
-    write_mesh_ply(output_path(o, ".moc.ply"), mesh,
-                   std::vector<float>(fractions.begin(), fractions.end()), "visible_fraction");
-    write_file_atomically(output_path(o, ".moc.csv"), [&](std::ostream& out) {
-      out << "face,group,area,samples,visible_fraction\n";
-      out.precision(9);
-      for (std::size_t f = 0; f < mesh.face_count(); ++f) {
-        out << f << ',' << csv_field(mesh.group_names[mesh.face_group[f]]) << ','
-            << mesh.face_area(f) << ',' << samples.count_on(f) << ','
-            << static_cast<float>(fractions[f]) << '\n';
-      }
-    });
+    const std::vector<float> visible_fraction(fractions.begin(), fractions.end());
+    write_mesh_ply(output_path(o, ".moc.ply"), mesh, visible_fraction, "visible_fraction");
+    std::vector<std::size_t> face_samples(mesh.face_count());
+    for (std::size_t f = 0; f < face_samples.size(); ++f) face_samples[f] = samples.count_on(f);
+    write_face_table(output_path(o, ".moc.csv"), mesh, face_samples, visible_fraction);
     write_json(output_path(o, ".moc.json"), json);
   }
   stages.mark("write");

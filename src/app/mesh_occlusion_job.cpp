@@ -3,7 +3,6 @@
 #include <json/writer.h>
 
 #include <cmath>
-#include <iomanip>
 
 #include "job_support.hpp"
 #include "occlusion/analysis/mesh_sampling.hpp"
@@ -11,28 +10,11 @@
 #include "occlusion/app/json_output.hpp"
 #include "occlusion/app/memory_budget.hpp"
 #include "occlusion/io/atomic_file.hpp"
-#include "occlusion/io/csv_file.hpp"
+#include "occlusion/io/face_table.hpp"
 #include "occlusion/io/mesh_reader.hpp"
 #include "occlusion/io/ply_mesh_writer.hpp"
 
 namespace occlusion {
-
-namespace {
-
-void write_face_csv(const std::string& path, const TriangleMesh& mesh,
-                    const MeshOcclusionReport& report) {
-  write_file_atomically(path, [&](std::ostream& out) {
-    out << "face,group,area,samples,visible_fraction\n" << std::setprecision(9);
-    for (std::size_t f = 0; f < mesh.face_count(); ++f) {
-      const double area = mesh.face_area(f);
-      out << f << ',' << csv_field(mesh.group_names[mesh.face_group[f]]) << ',' << area << ','
-          << samples_for_area(area, report.request.samples_per_unit_area) << ','
-          << report.result.face_visible_fraction[f] << '\n';
-    }
-  });
-}
-
-}  // namespace
 
 void validate(const MeshOcclusionRequest& request) {
   if (request.path.empty()) throw UsageError("no mesh given (-moc MESH or occlusion.mesh.path)");
@@ -95,7 +77,11 @@ MeshOcclusionReport run_mesh_occlusion(const MeshOcclusionRequest& request,
     OutputSet outputs;
     write_mesh_ply(outputs.add(ply_path), mesh, report.result.face_visible_fraction,
                    "visible_fraction");
-    write_face_csv(outputs.add(csv_path), mesh, report);
+    std::vector<std::size_t> samples(mesh.face_count());
+    for (std::size_t f = 0; f < samples.size(); ++f) {
+      samples[f] = samples_for_area(mesh.face_area(f), request.samples_per_unit_area);
+    }
+    write_face_table(outputs.add(csv_path), mesh, samples, report.result.face_visible_fraction);
     job::commit_outputs(outputs, report, json_path, {json_path, ply_path, csv_path}, start);
   }
   report.total_seconds = job::seconds_since(start);

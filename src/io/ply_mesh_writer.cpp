@@ -5,6 +5,7 @@
 #include <ostream>
 #include <sstream>
 #include <stdexcept>
+#include <vector>
 
 #include "binary_writer.hpp"
 #include "cloud_formats.hpp"
@@ -77,12 +78,20 @@ std::string header(const TriangleMesh& mesh, const std::string& value_name) {
   return out.str();
 }
 
-std::string body(const TriangleMesh& mesh, const std::vector<float>& face_values) {
+// All vertices, then all faces, through a buffer of kChunkFaces faces' bytes
+// that is written and reused: the whole body at once (9 MB for 100k faces)
+// cost as much in fresh pages as in writing.
+void write_body(std::ostream& stream, const TriangleMesh& mesh,
+                const std::vector<float>& face_values) {
+  constexpr std::size_t kChunkFaces = 8192;
   const std::size_t faces = mesh.face_count();
-  std::string bytes(faces * (3 * kVertexBytes + kFaceBytes), '\0');
-  // All vertices, then all faces, each section exactly its size: one cursor fills both.
-  char* cursor = bytes.data();
+  std::vector<char> buffer(kChunkFaces * 3 * kVertexBytes);
+  char* cursor = buffer.data();
   detail::LittleEndianWriter out([&cursor](char byte) { *cursor++ = byte; });
+  const auto flush = [&] {
+    stream.write(buffer.data(), static_cast<std::streamsize>(cursor - buffer.data()));
+    cursor = buffer.data();
+  };
   for (std::size_t f = 0; f < faces; ++f) {
     const auto rgb = colour_ramp(face_values[f]);
     for (const std::uint32_t index : mesh.faces[f]) {
@@ -96,7 +105,9 @@ std::string body(const TriangleMesh& mesh, const std::vector<float>& face_values
       out.f32(face_values[f]);
       out.i32(static_cast<std::int32_t>(mesh.face_group[f]));
     }
+    if ((f + 1) % kChunkFaces == 0) flush();
   }
+  flush();
   for (std::size_t f = 0; f < faces; ++f) {
     const auto first = static_cast<std::int32_t>(3 * f);
     out.u8(3);
@@ -105,8 +116,9 @@ std::string body(const TriangleMesh& mesh, const std::vector<float>& face_values
     out.i32(first + 2);
     out.f32(face_values[f]);
     out.i32(static_cast<std::int32_t>(mesh.face_group[f]));
+    if ((f + 1) % kChunkFaces == 0) flush();
   }
-  return bytes;
+  flush();
 }
 
 }  // namespace
@@ -124,10 +136,9 @@ void write_mesh_ply(const std::string& path, const TriangleMesh& mesh,
     throw std::invalid_argument("write_mesh_ply: too many faces for 32-bit PLY indices");
   }
   const std::string head = header(mesh, value_name);
-  const std::string data = body(mesh, face_values);
   write_file_atomically(path, [&](std::ostream& out) {
     out.write(head.data(), static_cast<std::streamsize>(head.size()));
-    out.write(data.data(), static_cast<std::streamsize>(data.size()));
+    write_body(out, mesh, face_values);
   });
 }
 

@@ -4,6 +4,7 @@
 
 #include <stdexcept>
 
+#include "occlusion/analysis/mesh_occlusion.hpp"
 #include "support/scenes.hpp"
 
 namespace occlusion {
@@ -43,6 +44,22 @@ TEST(InsideSolid, ViewpointInsideAClosedSolidSeesOnlyBackFaces) {
   ASSERT_EQ(shares.size(), 2u);
   EXPECT_EQ(shares[0], 0.0);  // in the room: every first hit is a front face
   EXPECT_EQ(shares[1], 1.0);  // in the cupboard: every ray hits its inside
+}
+
+// -moc warns from these shares without a tree of its own: compute_mesh_occlusion
+// measures them with its tree, in its frame around the mesh's centre.
+TEST(InsideSolid, MeshOcclusionMeasuresTheSharesWithItsOwnTree) {
+  TriangleMesh mesh;
+  add_oriented_box(mesh, Eigen::Vector3d::Zero(), Eigen::Vector3d(6, 5, 3), true);
+  add_oriented_box(mesh, Eigen::Vector3d(1, 1, 0.5), Eigen::Vector3d(2, 2, 1.5), false);
+  const std::vector<Eigen::Vector3d> viewpoints = {Eigen::Vector3d(4, 3, 1.5),
+                                                   Eigen::Vector3d(1.5, 1.5, 1.0)};
+  MeshOcclusionOptions options;
+  options.samples_per_unit_area = 1.0;
+  const MeshOcclusionResult result = compute_mesh_occlusion(mesh, viewpoints, options);
+  ASSERT_EQ(result.viewpoints.size(), 2u);
+  EXPECT_EQ(result.viewpoints[0].back_face_share, 0.0);
+  EXPECT_EQ(result.viewpoints[1].back_face_share, 1.0);
 }
 
 TEST(InsideSolid, RoomWhoseFacesPointOutLooksTheSame) {

@@ -67,6 +67,26 @@ TEST(Cli, ExplicitViewpoints) {
   EXPECT_TRUE(json["parameters"]["pattern"].isNull());
 }
 
+TEST(Cli, ViewpointInsideAClosedSolidIsWarnedAbout) {
+  const TempDir dir;
+  // The unit cube, every face's normal (e1 x e2) pointing out.
+  dir.write("cube.obj",
+            "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+            "f 1 3 2\nf 1 4 3\nf 5 6 7\nf 5 7 8\nf 1 2 6\nf 1 6 5\n"
+            "f 4 8 7\nf 4 7 3\nf 1 5 8\nf 1 8 4\nf 2 3 7\nf 2 7 6\n");
+  const std::string moc = "-moc '" + dir.file("cube.obj") + "' --json -q --viewpoint ";
+  const CliRun inside = run_cli(moc + "0.5,0.4,0.6");
+  ASSERT_EQ(inside.exit_code, 0) << inside.err;
+  const Json::Value warnings = parse_json(inside.out)["warnings"];
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].asString().find("100 % of its rays first hit the back of a face"),
+            std::string::npos)
+      << warnings[0].asString();
+  const CliRun outside = run_cli(moc + "3,0.4,0.6");
+  ASSERT_EQ(outside.exit_code, 0) << outside.err;
+  EXPECT_EQ(parse_json(outside.out)["warnings"].size(), 0u) << outside.out;
+}
+
 TEST(Cli, InputErrorsExitThree) {
   const CliRun missing = run_cli("-moc /nonexistent/room.obj");
   EXPECT_EQ(missing.exit_code, 3);
