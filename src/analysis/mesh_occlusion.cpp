@@ -58,22 +58,6 @@ bool mesh_shadow_ray(const Eigen::Vector3d& sample, const Eigen::Vector3d& viewp
   return true;
 }
 
-namespace {
-
-// The mesh's triangles relative to `origin`, then in float.
-std::vector<Triangle> local_triangles(const TriangleMesh& mesh, const Eigen::Vector3d& origin) {
-  std::vector<Triangle> triangles;
-  triangles.reserve(mesh.face_count());
-  for (const auto& face : mesh.faces) {
-    triangles.push_back({(mesh.vertices[face[0]] - origin).cast<float>(),
-                         (mesh.vertices[face[1]] - origin).cast<float>(),
-                         (mesh.vertices[face[2]] - origin).cast<float>()});
-  }
-  return triangles;
-}
-
-}  // namespace
-
 MeshOcclusionResult compute_mesh_occlusion(const TriangleMesh& mesh,
                                            const std::vector<Eigen::Vector3d>& viewpoints,
                                            const MeshOcclusionOptions& options,
@@ -103,8 +87,7 @@ MeshOcclusionResult compute_mesh_occlusion(const TriangleMesh& mesh,
 
   start = Clock::now();
   progress("building octree", 0.0);
-  const TriangleOctree tree(pack_triangles(local_triangles(mesh, origin)), options.octree,
-                            progress);
+  const TriangleOctree tree(pack_triangles(mesh, origin), options.octree, progress);
   result.timings.build_seconds = seconds_since(start);
   result.octree = tree.stats();
   progress.check_cancel();

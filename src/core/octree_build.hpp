@@ -125,8 +125,8 @@ class MortonBuilder {
   // `shapes`), builds the nodes, and returns the root: an inner node, or a
   // leaf when the whole scene is one. `shapes` is emptied once sorted, so the
   // two copies never live beside the nodes (16 bytes a sphere at the peak).
-  BuiltChild build(std::vector<Shape>& shapes, LargeVector<Shape>& sorted,
-                   LargeVector<PrimitiveId>& ids) {
+  template <class Shapes>
+  BuiltChild build(Shapes& shapes, LargeVector<Shape>& sorted, LargeVector<PrimitiveId>& ids) {
     const std::size_t n = shapes.size();
     Aabb centroid_box;
     for (const Shape& shape : shapes) centroid_box.extend(shape.centroid());
@@ -159,7 +159,7 @@ class MortonBuilder {
       progress_.check_cancel();
       for (std::size_t i = first; i < last; ++i) sorted[i] = shapes[ids[i]];
     });
-    std::vector<Shape>().swap(shapes);
+    Shapes().swap(shapes);
     sorted_ = &sorted;
     BuiltChild root;
     if (is_leaf_run(0, static_cast<std::uint32_t>(n))) {

@@ -21,6 +21,18 @@ namespace occlusion {
 template <class Shape>
 Octree<Shape>::Octree(std::vector<Shape> shapes, const OctreeOptions& options,
                       const Progress& progress) {
+  build(shapes, options, progress);
+}
+
+template <class Shape>
+Octree<Shape>::Octree(LargeVector<Shape> shapes, const OctreeOptions& options,
+                      const Progress& progress) {
+  build(shapes, options, progress);
+}
+
+template <class Shape>
+template <class Shapes>
+void Octree<Shape>::build(Shapes& shapes, const OctreeOptions& options, const Progress& progress) {
   if (options.max_leaf_size == 0) {
     throw std::invalid_argument("octree: max_leaf_size must be at least 1");
   }
@@ -56,7 +68,7 @@ Octree<Shape>::Octree(std::vector<Shape> shapes, const OctreeOptions& options,
     nodes_.reserve(std::min(shapes.size(), 2 * shapes.size() / options.max_leaf_size + 64));
     octree_detail::MortonBuilder<Shape> builder(options, nodes_, stats_, progress);
     const octree_detail::BuiltChild top = builder.build(shapes, shapes_, ids_);
-    std::vector<Shape>().swap(shapes);  // the sorted copy replaces it
+    Shapes().swap(shapes);  // the sorted copy replaces it
     if (top.count > 0) {
       // The whole scene is one leaf: give it a root node to live in.
       nodes_.emplace_back();

@@ -1,6 +1,6 @@
 #pragma once
 // An allocator for the octree's big arrays (millions of nodes, shapes, codes).
-// Buffers of several megabytes are aligned to 2 MiB and offered to the kernel
+// Buffers of 2 MiB and more are aligned to 2 MiB and offered to the kernel
 // as transparent huge pages (madvise), which Debian enables only on request:
 // first touching a 4 KiB page costs a page fault, and on a virtual machine
 // those faults were most of the build time of a 16M-point octree (6.2 s of

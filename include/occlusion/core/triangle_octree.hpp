@@ -5,6 +5,8 @@
 #include <optional>
 #include <vector>
 
+#include "occlusion/core/large_buffer.hpp"
+#include "occlusion/core/mesh.hpp"
 #include "occlusion/core/octree.hpp"
 #include "occlusion/core/triangle.hpp"
 
@@ -22,5 +24,9 @@ extern template class Octree<PackedTriangle>;
 
 // Convenience: pack triangles for the octree.
 std::vector<PackedTriangle> pack_triangles(const std::vector<Triangle>& triangles);
+
+// The mesh's faces relative to `origin`, in float, packed: straight from the
+// mesh into the buffer the octree is built from, with no copy between.
+LargeVector<PackedTriangle> pack_triangles(const TriangleMesh& mesh, const Eigen::Vector3d& origin);
 
 }  // namespace occlusion
