@@ -251,7 +251,7 @@ Json::Value run_poc(const Options& o, Stages& stages) {
 }
 
 // Shadow rays from a pattern of viewpoints to every point; the points seen
-// and every point with its count of viewpoints (.scan.pcd, .scan_full.pcd,
+// and every point with its count of viewpoints (.scan.ply, .scan_full.ply,
 // .fscan.json), as `occlusion -fscan --out`.
 Json::Value run_fscan(const Options& o, Stages& stages) {
   const PointCloud cloud = read_cloud(o.input);
@@ -298,8 +298,8 @@ Json::Value run_fscan(const Options& o, Stages& stages) {
 
   if (!o.out.empty()) {
     ensure_directory(o.out);
-    write_cloud(output_path(o, ".scan.pcd"), cloud.subset(seen));
-    write_cloud(output_path(o, ".scan_full.pcd"), cloud, {visible_count});
+    write_cloud(output_path(o, ".scan.ply"), cloud.subset(seen));
+    write_cloud(output_path(o, ".scan_full.ply"), cloud, {visible_count});
     write_json(output_path(o, ".fscan.json"), json);
   }
   stages.mark("write");
