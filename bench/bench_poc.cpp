@@ -177,7 +177,7 @@ int run(const Options& o) {
 
   std::fprintf(stderr, "bench_poc: embree ...\n");
   EmbreePoints embree(o.threads);
-  const std::vector<Sphere> spheres =
+  const LargeVector<Sphere> spheres =
       make_spheres(cloud.positions, static_cast<float>(kPointRadius));
   const double embree_build = best_of([&] { return embree.build(spheres); });
   std::vector<std::optional<Hit>> their_hits(np);

@@ -10,7 +10,7 @@ EmbreePoints::EmbreePoints(unsigned threads) : EmbreeTracer(threads) {
   }
 }
 
-double EmbreePoints::build(const std::vector<Sphere>& spheres) {
+double EmbreePoints::build(const LargeVector<Sphere>& spheres) {
   return build_scene(RTC_GEOMETRY_TYPE_SPHERE_POINT, [&](RTCGeometry geometry) {
     auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
         geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 4 * sizeof(float), spheres.size()));

@@ -27,7 +27,7 @@ class EmbreePoints : public EmbreeTracer {
   // (Re)builds the scene from the spheres (vertex format FLOAT4: x, y, z,
   // radius); primitive id i is spheres[i]. Returns the seconds from empty scene
   // to committed BVH.
-  double build(const std::vector<Sphere>& spheres);
+  double build(const LargeVector<Sphere>& spheres);
 
   // hits[i] = rtcIntersect1's closest hit on rays[i] (t and primID), or none.
   void intersect(const Ray* rays, std::size_t count, std::optional<Hit>* hits,

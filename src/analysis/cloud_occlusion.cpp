@@ -52,7 +52,7 @@ void check_inputs(const PointCloud& cloud, const std::vector<Eigen::Vector3d>& v
 // the result needs no hit ids, so they need not be mapped back. Without a
 // mask the cloud's own positions make the spheres: a copy of them would live
 // through the whole build (12 bytes a point at the peak).
-std::vector<Sphere> blocking_spheres(const PointCloud& cloud, const std::vector<bool>& blocking,
+LargeVector<Sphere> blocking_spheres(const PointCloud& cloud, const std::vector<bool>& blocking,
                                      float radius) {
   if (blocking.empty()) return make_spheres(cloud.positions, radius);
   std::vector<Eigen::Vector3f> kept;

@@ -12,12 +12,12 @@ Aabb Sphere::bounds() const {
   return box;
 }
 
-std::vector<Sphere> make_spheres(const std::vector<Eigen::Vector3f>& centers, float radius) {
+LargeVector<Sphere> make_spheres(const std::vector<Eigen::Vector3f>& centers, float radius) {
   if (!(radius > 0.0f) || !std::isfinite(radius)) {
     throw std::invalid_argument("spheres: point radius must be finite and > 0, got " +
                                 std::to_string(radius));
   }
-  std::vector<Sphere> spheres;
+  LargeVector<Sphere> spheres;
   spheres.reserve(centers.size());
   for (std::size_t i = 0; i < centers.size(); ++i) {
     if (!centers[i].allFinite()) {

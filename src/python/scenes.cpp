@@ -133,7 +133,7 @@ SphereOctree build_sphere_scene(const py::handle& points, double radius, double 
   std::vector<Eigen::Vector3f> centres = points_from_array(points, "points");
   const OctreeOptions options =
       octree_options(sphere_octree_options(), octree_resolution, enable_acceleration);
-  std::vector<Sphere> spheres = make_spheres(centres, static_cast<float>(radius));
+  LargeVector<Sphere> spheres = make_spheres(centres, static_cast<float>(radius));
   py::gil_scoped_release release;
   return SphereOctree(std::move(spheres), options);
 }

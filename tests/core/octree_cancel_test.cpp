@@ -21,7 +21,7 @@ double seconds_since(Clock::time_point start) {
 }
 
 // A million points scattered in a 10 m cube.
-std::vector<Sphere> million_spheres() {
+LargeVector<Sphere> million_spheres() {
   Rng random(7);
   std::vector<Eigen::Vector3f> points(1'000'000);
   for (auto& p : points) {
@@ -47,8 +47,8 @@ TEST(OctreeCancel, CancelledBeforeTheBuildBuildsNothing) {
 TEST(OctreeCancel, CancelStopsAMillionPointBuildPromptly) {
   // The caller's copy of the shapes is made before each clock starts: 16 MB
   // of fresh pages cost about as much as a third of the build on a VM.
-  const std::vector<Sphere> spheres = million_spheres();
-  std::vector<Sphere> copy = spheres;
+  const LargeVector<Sphere> spheres = million_spheres();
+  LargeVector<Sphere> copy = spheres;
   auto start = Clock::now();
   const SphereOctree full(std::move(copy), sphere_octree_options());
   const double full_seconds = seconds_since(start);

@@ -58,7 +58,7 @@ std::vector<PackedTriangle> room_triangles() {
   return pack_triangles(triangles);
 }
 
-std::vector<Sphere> room_spheres() {
+LargeVector<Sphere> room_spheres() {
   Rng rng(6);
   std::vector<Eigen::Vector3f> points;
   for (int i = 0; i < 4000; ++i) points.push_back(random_point(rng, 0.0f, 10.0f));
@@ -134,9 +134,11 @@ std::vector<OctreeTraversal> traversals() {
   return all;
 }
 
-template <class Shape>
-void expect_batches_match_brute_force(const std::vector<Shape>& shapes, const Batch& batch,
+// Shapes: a std::vector or a LargeVector of them (both octree constructors).
+template <class Shapes>
+void expect_batches_match_brute_force(const Shapes& shapes, const Batch& batch,
                                       OctreeOptions options) {
+  using Shape = typename Shapes::value_type;
   // The reference, once: brute force over every shape, ray by ray.
   std::vector<std::optional<Hit>> expected(batch.rays.size());
   std::size_t hits = 0;
@@ -187,7 +189,7 @@ TEST(OctreePackets, TrianglesMatchBruteForceWithLeavesOfOne) {
 }
 
 TEST(OctreePackets, SpheresMatchBruteForceRayByRay) {
-  const std::vector<Sphere> spheres = room_spheres();
+  const LargeVector<Sphere> spheres = room_spheres();
   expect_batches_match_brute_force(spheres, test_batch(spheres.size(), 23),
                                    sphere_octree_options());
 }

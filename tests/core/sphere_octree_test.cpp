@@ -22,7 +22,7 @@ Eigen::Vector3f random_point(Rng& rng, float lo, float hi) {
 // Shaped like a scan: a sparse random cloud (furniture, clutter) plus a dense
 // regular grid on a floor and a wall, where neighbouring spheres overlap and
 // many centroids share coordinates.
-std::vector<Sphere> scan_like_cloud() {
+LargeVector<Sphere> scan_like_cloud() {
   Rng rng(42);
   std::vector<Eigen::Vector3f> points;
   for (int i = 0; i < 5000; ++i) points.push_back(random_point(rng, -10.0f, 10.0f));
@@ -75,7 +75,7 @@ struct NamedOptions {
 class SphereOctreeVersusBruteForce : public ::testing::TestWithParam<NamedOptions> {};
 
 TEST_P(SphereOctreeVersusBruteForce, SameHitsTAndIdsOnRandomRays) {
-  const std::vector<Sphere> spheres = scan_like_cloud();
+  const LargeVector<Sphere> spheres = scan_like_cloud();
   ASSERT_GE(spheres.size(), 10000u);
   const SphereOctree tree(spheres, GetParam().options);
   const std::vector<Ray> rays = random_rays(10000, 7);
@@ -104,7 +104,7 @@ TEST_P(SphereOctreeVersusBruteForce, SameHitsTAndIdsOnRandomRays) {
 // The point-cloud occlusion query: from a viewpoint to each point, ignoring
 // the point itself, up to t = 1 (the point's centre).
 TEST_P(SphereOctreeVersusBruteForce, RaysFromAViewpointToEveryPoint) {
-  const std::vector<Sphere> spheres = scan_like_cloud();
+  const LargeVector<Sphere> spheres = scan_like_cloud();
   const SphereOctree tree(spheres, GetParam().options);
   const Eigen::Vector3f viewpoint(1.5f, -2.0f, 0.5f);
   std::size_t blocked = 0;
@@ -201,7 +201,7 @@ TEST(SphereOctree, RayStartingInsideAPointFindsItsExit) {
 }
 
 TEST(SphereOctree, StatsAndIds) {
-  const std::vector<Sphere> spheres = scan_like_cloud();
+  const LargeVector<Sphere> spheres = scan_like_cloud();
   const SphereOctree tree(spheres);
   const OctreeStats& stats = tree.stats();
   EXPECT_EQ(stats.primitives, spheres.size());

@@ -129,7 +129,7 @@ TEST(Sphere, BoundsAreTheCubeAroundIt) {
 
 TEST(Sphere, MakeSpheresKeepsOrderAndRadius) {
   const std::vector<Eigen::Vector3f> centres = {{0, 0, 0}, {1, 2, 3}, {-4, 5, -6}};
-  const std::vector<Sphere> spheres = make_spheres(centres, 0.25f);
+  const LargeVector<Sphere> spheres = make_spheres(centres, 0.25f);
   ASSERT_EQ(spheres.size(), centres.size());
   for (std::size_t i = 0; i < centres.size(); ++i) {
     EXPECT_EQ(spheres[i].center, centres[i]);

@@ -11,8 +11,9 @@
 
 namespace occlusion::testing {
 
-template <class Shape>
-std::optional<Hit> brute_force_intersect(const std::vector<Shape>& shapes, const Ray& query,
+// Shapes: a std::vector or a LargeVector of them.
+template <class Shapes>
+std::optional<Hit> brute_force_intersect(const Shapes& shapes, const Ray& query,
                                          PrimitiveId ignore_id = kNoPrimitive) {
   RayComponents<float> ray = ray_components(query);
   std::optional<Hit> best;

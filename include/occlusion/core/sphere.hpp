@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "occlusion/core/aabb.hpp"
+#include "occlusion/core/large_buffer.hpp"
 #include "occlusion/core/ray.hpp"
 #include "occlusion/core/ray_lanes.hpp"
 
@@ -77,7 +78,8 @@ inline std::optional<float> intersect_sphere(const Ray& ray, const Sphere& spher
 
 // One sphere of `radius` per centre, in order, so that a sphere's primitive id
 // is its point's index. Throws std::invalid_argument for a radius that is not
-// finite and positive, or a centre that is not finite.
-std::vector<Sphere> make_spheres(const std::vector<Eigen::Vector3f>& centers, float radius);
+// finite and positive, or a centre that is not finite. In a LargeVector, which
+// the octree builds from: huge pages for big clouds (16 bytes a point).
+LargeVector<Sphere> make_spheres(const std::vector<Eigen::Vector3f>& centers, float radius);
 
 }  // namespace occlusion
