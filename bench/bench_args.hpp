@@ -4,6 +4,8 @@
 
 #include <charconv>
 #include <cstdint>
+#include <cstdio>
+#include <exception>
 #include <stdexcept>
 #include <string>
 
@@ -33,6 +35,23 @@ inline std::uint64_t parse_unsigned(const std::string& flag, const std::string& 
 inline unsigned parse_threads(const std::string& flag, const std::string& text) {
   const std::uint64_t threads = parse_unsigned(flag, text);
   return static_cast<unsigned>(threads < 1024 ? threads : 1024);
+}
+
+// A bench tool's main: run(parse(argc, argv)), whose result is the exit
+// status; a UsageError prints it with the usage and exits 2, anything else
+// thrown prints it and exits 1.
+template <class Parse, class Run>
+int run_tool(const char* name, const char* usage, int argc, char** argv, const Parse& parse,
+             const Run& run) {
+  try {
+    return run(parse(argc, argv));
+  } catch (const UsageError& e) {
+    std::fprintf(stderr, "%s: %s\n%s", name, e.what(), usage);
+    return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "%s: %s\n", name, e.what());
+    return 1;
+  }
 }
 
 }  // namespace occlusion::bench

@@ -207,17 +207,5 @@ int run(const Options& o) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  Options options;
-  try {
-    options = parse(argc, argv);
-  } catch (const UsageError& e) {
-    std::fprintf(stderr, "bench_moc: %s\n%s", e.what(), kUsage);
-    return 2;
-  }
-  try {
-    return run(options);
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "bench_moc: %s\n", e.what());
-    return 1;
-  }
+  return occlusion::bench::run_tool("bench_moc", kUsage, argc, argv, parse, run);
 }

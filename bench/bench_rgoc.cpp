@@ -165,13 +165,5 @@ int run(const Options& o) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  try {
-    return run(parse(argc, argv));
-  } catch (const UsageError& e) {
-    std::fprintf(stderr, "bench_rgoc: %s\n%s", e.what(), kUsage);
-    return 2;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "bench_rgoc: %s\n", e.what());
-    return 1;
-  }
+  return occlusion::bench::run_tool("bench_rgoc", kUsage, argc, argv, parse, run);
 }

@@ -17,6 +17,7 @@
 #include <exception>
 #include <filesystem>
 #include <iostream>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -203,20 +204,35 @@ Json::Value run_moc(const Options& o, Stages& stages) {
   return json;
 }
 
+// What -poc and -fscan start with: the cloud read, its points as Embree
+// spheres, and its box, which the viewpoints are placed in.
+struct CloudScene {
+  PointCloud cloud;
+  std::unique_ptr<EmbreePoints> embree;
+  Eigen::Vector3d lo, hi;
+};
+
+CloudScene load_cloud_scene(const Options& o, Stages& stages) {
+  CloudScene scene;
+  scene.cloud = read_cloud(o.input);
+  stages.mark("load");
+  scene.embree = std::make_unique<EmbreePoints>(o.threads);
+  scene.embree->build(make_spheres(scene.cloud.positions, static_cast<float>(o.point_radius)));
+  stages.mark("build");
+  Eigen::Vector3f lo, hi;
+  scene.cloud.bounds(lo, hi);
+  scene.lo = lo.cast<double>();
+  scene.hi = hi.cast<double>();
+  return scene;
+}
+
 // Closest hits of rays from a grid of viewpoints; the rays that escape
 // (.poc.escapes.csv, .poc.json), as `occlusion -poc --out`.
 Json::Value run_poc(const Options& o, Stages& stages) {
-  const PointCloud cloud = read_cloud(o.input);
-  stages.mark("load");
-
-  EmbreePoints embree(o.threads);
-  embree.build(make_spheres(cloud.positions, static_cast<float>(o.point_radius)));
-  stages.mark("build");
-
-  Eigen::Vector3f lo, hi;
-  cloud.bounds(lo, hi);
-  const std::vector<Eigen::Vector3d> viewpoints =
-      grid_viewpoints(o.num_vp, lo.cast<double>(), hi.cast<double>());
+  const CloudScene scene = load_cloud_scene(o, stages);
+  const PointCloud& cloud = scene.cloud;
+  const EmbreePoints& embree = *scene.embree;
+  const std::vector<Eigen::Vector3d> viewpoints = grid_viewpoints(o.num_vp, scene.lo, scene.hi);
   CloudOcclusionOptions options;
   options.num_rays_per_vp = o.num_rays_per_vp;
   options.seed = o.seed;
@@ -254,17 +270,10 @@ Json::Value run_poc(const Options& o, Stages& stages) {
 // and every point with its count of viewpoints (.scan.ply, .scan_full.ply,
 // .fscan.json), as `occlusion -fscan --out`.
 Json::Value run_fscan(const Options& o, Stages& stages) {
-  const PointCloud cloud = read_cloud(o.input);
-  stages.mark("load");
-
-  EmbreePoints embree(o.threads);
-  embree.build(make_spheres(cloud.positions, static_cast<float>(o.point_radius)));
-  stages.mark("build");
-
-  Eigen::Vector3f lo, hi;
-  cloud.bounds(lo, hi);
-  const std::vector<Eigen::Vector3d> viewpoints =
-      pattern_viewpoints(o.pattern, lo.cast<double>(), hi.cast<double>());
+  const CloudScene scene = load_cloud_scene(o, stages);
+  const PointCloud& cloud = scene.cloud;
+  const EmbreePoints& embree = *scene.embree;
+  const std::vector<Eigen::Vector3d> viewpoints = pattern_viewpoints(o.pattern, scene.lo, scene.hi);
   ScanOptions options;
   options.point_radius = o.point_radius;
   const std::size_t points = cloud.size();
@@ -306,28 +315,20 @@ Json::Value run_fscan(const Options& o, Stages& stages) {
   return json;
 }
 
+int run(const Options& options) {
+  Stages stages;
+  Json::Value json = options.job == "moc"   ? run_moc(options, stages)
+                     : options.job == "poc" ? run_poc(options, stages)
+                                            : run_fscan(options, stages);
+  stages.timings["total_seconds"] = seconds_since(stages.start);
+  json["timings"] = stages.timings;
+  json["tracer"] = "embree " + EmbreeTracer::version();
+  std::cout << json << std::endl;
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  Options options;
-  try {
-    options = parse(argc, argv);
-  } catch (const UsageError& e) {
-    std::fprintf(stderr, "embree_job: %s\n%s", e.what(), kUsage);
-    return 2;
-  }
-  try {
-    Stages stages;
-    Json::Value json = options.job == "moc"   ? run_moc(options, stages)
-                       : options.job == "poc" ? run_poc(options, stages)
-                                              : run_fscan(options, stages);
-    stages.timings["total_seconds"] = seconds_since(stages.start);
-    json["timings"] = stages.timings;
-    json["tracer"] = "embree " + EmbreeTracer::version();
-    std::cout << json << std::endl;
-    return 0;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "embree_job: %s\n", e.what());
-    return 1;
-  }
+  return run_tool("embree_job", kUsage, argc, argv, parse, run);
 }
