@@ -1,5 +1,6 @@
 #include "occlusion/io/ply_mesh_writer.hpp"
 
+#include <algorithm>
 #include <cstdint>
 #include <limits>
 #include <ostream>
@@ -85,7 +86,8 @@ void write_body(std::ostream& stream, const TriangleMesh& mesh,
                 const std::vector<float>& face_values) {
   constexpr std::size_t kChunkFaces = 8192;
   const std::size_t faces = mesh.face_count();
-  std::vector<char> buffer(kChunkFaces * 3 * kVertexBytes);
+  // A chunk of either section: three vertices or one face record per face.
+  std::vector<char> buffer(kChunkFaces * std::max(3 * kVertexBytes, kFaceBytes));
   char* cursor = buffer.data();
   detail::LittleEndianWriter out([&cursor](char byte) { *cursor++ = byte; });
   const auto flush = [&] {
