@@ -8,6 +8,7 @@
 #include "analysis_support.hpp"
 #include "occlusion/analysis/inside_solid.hpp"
 #include "occlusion/analysis/mesh_sampling.hpp"
+#include "occlusion/core/parallel.hpp"
 #include "occlusion/core/triangle_octree.hpp"
 
 namespace occlusion {
@@ -20,6 +21,18 @@ using analysis_support::seconds_since;
 // Rays are traced in blocks so that progress and cancellation are checked
 // between blocks while each block still keeps every core busy.
 constexpr std::size_t kRaysPerBlock = std::size_t{1} << 16;
+// Rays made per task: enough to outweigh handing out the task.
+constexpr std::size_t kMadeRaysGrain = 4096;
+
+// A ray nothing can block: its interval [1, 0] is empty.
+Ray unblockable_ray(const Eigen::Vector3d& from) {
+  Ray ray;
+  ray.origin = from.cast<float>();
+  ray.direction = Eigen::Vector3f::UnitX();
+  ray.t_min = 1.0f;
+  ray.t_max = 0.0f;
+  return ray;
+}
 
 void check_inputs(const TriangleMesh& mesh, const std::vector<Eigen::Vector3d>& viewpoints,
                   const MeshOcclusionOptions& options) {
@@ -100,37 +113,38 @@ MeshOcclusionResult compute_mesh_occlusion(const TriangleMesh& mesh,
   const std::size_t ray_count = samples.size() * view_count;
   // seen[s * view_count + v]: sample s is visible from viewpoint v.
   std::vector<std::uint8_t> seen(ray_count, 0);
-  std::vector<Ray> rays;
-  std::vector<PrimitiveId> ignore;
-  std::vector<std::size_t> slot;
-  std::vector<std::uint8_t> blocked;
-  progress("tracing", 0.0);
+  // Every (viewpoint, sample) pair of a block gets its slot, viewpoint-major
+  // so that a viewpoint's rays trace together as packets, and the rays are
+  // made on all threads: made one by one they took as long as tracing them.
+  // A pair too close to need a ray gets one with an empty interval, which
+  // nothing blocks, so the sample counts as seen from there.
   const std::size_t samples_per_block = std::max<std::size_t>(1, kRaysPerBlock / view_count);
+  LargeVector<Ray> rays(std::min(samples.size(), samples_per_block) * view_count);
+  LargeVector<PrimitiveId> ignore(rays.size());
+  LargeVector<std::uint8_t> blocked(rays.size());
+  progress("tracing", 0.0);
   for (std::size_t first = 0; first < samples.size(); first += samples_per_block) {
-    const std::size_t last = std::min(samples.size(), first + samples_per_block);
-    rays.clear();
-    ignore.clear();
-    slot.clear();
-    // A viewpoint's rays together: they share an origin, so they trace as packets.
+    const std::size_t count = std::min(samples.size(), first + samples_per_block) - first;
+    parallel_for(count * view_count, kMadeRaysGrain, options.threads,
+                 [&](std::size_t begin, std::size_t end) {
+                   for (std::size_t i = begin; i < end; ++i) {
+                     const std::size_t v = i / count, s = first + i % count;
+                     if (!mesh_shadow_ray(samples.points[s] - origin, local_viewpoints[v], epsilon,
+                                          rays[i], reach)) {
+                       rays[i] = unblockable_ray(local_viewpoints[v]);
+                     }
+                     ignore[i] = samples.face[s];
+                   }
+                 });
+    tree.occluded_batch(rays.data(), count * view_count, ignore.data(), blocked.data(),
+                        options.threads);
     for (std::size_t v = 0; v < view_count; ++v) {
-      for (std::size_t s = first; s < last; ++s) {
-        const std::size_t r = s * view_count + v;
-        Ray ray;
-        if (!mesh_shadow_ray(samples.points[s] - origin, local_viewpoints[v], epsilon, ray,
-                             reach)) {
-          seen[r] = 1;
-          continue;
-        }
-        rays.push_back(ray);
-        ignore.push_back(samples.face[s]);
-        slot.push_back(r);
+      for (std::size_t k = 0; k < count; ++k) {
+        seen[(first + k) * view_count + v] = blocked[v * count + k] ? 0 : 1;
       }
     }
-    blocked.resize(rays.size());
-    tree.occluded_batch(rays.data(), rays.size(), ignore.data(), blocked.data(), options.threads);
-    for (std::size_t i = 0; i < rays.size(); ++i) seen[slot[i]] = blocked[i] ? 0 : 1;
     progress.check_cancel();
-    progress("tracing", static_cast<double>(last) / static_cast<double>(samples.size()));
+    progress("tracing", static_cast<double>(first + count) / static_cast<double>(samples.size()));
   }
   result.timings.trace_seconds = seconds_since(start);
 
