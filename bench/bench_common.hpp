@@ -71,7 +71,7 @@ struct CliRun {
   Json::Value json;  // the best run's stdout parsed as JSON; null if it is not JSON
 };
 
-// The best wall times of kRepetitions runs each of two programs, run in turn
+// The best wall times of `repetitions` runs each of two programs, run in turn
 // (first, second, first, ...) so that a busy machine slows both alike; see
 // child_process.hpp for the peak RSS, and call this while the caller is small.
 // A failed run ends that program's series and is returned as it is. Each
@@ -79,7 +79,8 @@ struct CliRun {
 inline std::pair<CliRun, CliRun> run_clis_alternating(const std::vector<std::string>& first,
                                                       const std::string& first_capture,
                                                       const std::vector<std::string>& second,
-                                                      const std::string& second_capture) {
+                                                      const std::string& second_capture,
+                                                      int repetitions = kRepetitions) {
   std::pair<CliRun, CliRun> runs;
   std::pair<bool, bool> failed(false, false);
   runs.first.best.wall_seconds = std::numeric_limits<double>::infinity();
@@ -91,7 +92,7 @@ inline std::pair<CliRun, CliRun> run_clis_alternating(const std::vector<std::str
     failed_before = r.exit_code != 0;
     if (failed_before || r.wall_seconds < run.best.wall_seconds) run.best = std::move(r);
   };
-  for (int k = 0; k < kRepetitions; ++k) {
+  for (int k = 0; k < repetitions; ++k) {
     one(first, first_capture, runs.first, failed.first);
     if (!second.empty()) one(second, second_capture, runs.second, failed.second);
   }
@@ -114,11 +115,9 @@ inline CliRun run_cli(const std::vector<std::string>& argv, const std::string& c
 // --out DIR/embree SETTINGS` (embree_job.cpp: the same job on Embree), in turn
 // as above; DIR is bench_JOB_out and the captures bench_JOB_cli and
 // bench_JOB_embree_job, all in bench_dir, where embree_job is too.
-inline std::pair<CliRun, CliRun> run_job_and_embree_job(const std::filesystem::path& bench_dir,
-                                                        const std::string& cli,
-                                                        const std::string& job,
-                                                        const std::string& input,
-                                                        const std::vector<std::string>& settings) {
+inline std::pair<CliRun, CliRun> run_job_and_embree_job(
+    const std::filesystem::path& bench_dir, const std::string& cli, const std::string& job,
+    const std::string& input, const std::vector<std::string>& settings, int repetitions) {
   const std::string name = "bench_" + job;
   const std::string out = (bench_dir / (name + "_out")).string();
   std::vector<std::string> ours = {cli, "-" + job, input, "--json", "--out", out + "/ours"};
@@ -127,7 +126,7 @@ inline std::pair<CliRun, CliRun> run_job_and_embree_job(const std::filesystem::p
   ours.insert(ours.end(), settings.begin(), settings.end());
   theirs.insert(theirs.end(), settings.begin(), settings.end());
   return run_clis_alternating(ours, (bench_dir / (name + "_cli")).string(), theirs,
-                              (bench_dir / (name + "_embree_job")).string());
+                              (bench_dir / (name + "_embree_job")).string(), repetitions);
 }
 
 // "load 0.050, build 0.400, trace 0.900, total 1.400 s": the stages a job's

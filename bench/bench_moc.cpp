@@ -45,8 +45,10 @@ struct Options {
   std::size_t samples = 100'000;
   unsigned threads = 2;
   std::uint64_t seed = 1;
-  std::string cli;            // empty: <build dir>/occlusion
-  int repeat = kRepetitions;  // traces of each tracer, alternating; the best counts
+  std::string cli;  // empty: <build dir>/occlusion
+  // Traces of each tracer, and whole processes of each program, alternating;
+  // the best counts.
+  int repeat = kRepetitions;
 };
 
 Options parse(int argc, char** argv) {
@@ -95,7 +97,8 @@ int run(const Options& o) {
   const auto [cli_run, embree_run] = run_job_and_embree_job(
       bench_dir, cli, "moc", room_path,
       {"--pattern", std::to_string(kPattern), "--samples-per-unit-area", exact(density),
-       "--threads", std::to_string(o.threads), "--seed", std::to_string(o.seed)});
+       "--threads", std::to_string(o.threads), "--seed", std::to_string(o.seed)},
+      o.repeat);
 
   const MeshSamples samples = sample_mesh(mesh, density, o.seed);
   Eigen::Vector3d lo, hi;

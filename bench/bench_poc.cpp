@@ -1,4 +1,5 @@
 // bench_poc [--points N] [--triangles N] [--rays-per-vp N] [--threads T] [--seed S] [--cli PATH]
+//           [--repeat N]
 //
 // Times the point-cloud hot paths (-poc closest hits, -fscan shadow rays) on a
 // sampled furnished room against Intel Embree's sphere points, and the
@@ -41,7 +42,7 @@ constexpr double kPointRadius = 0.01;
 constexpr double kTTolerance = 1e-4;
 constexpr const char* kUsage =
     "usage: bench_poc [--points N] [--triangles N] [--rays-per-vp N] [--threads T] [--seed S]\n"
-    "                 [--cli PATH]\n";
+    "                 [--cli PATH] [--repeat N]\n";
 
 struct Options {
   std::size_t points = 1'000'000;
@@ -49,7 +50,8 @@ struct Options {
   std::size_t rays_per_vp = 30'000;
   unsigned threads = 2;
   std::uint64_t seed = 1;
-  std::string cli;  // empty: <build dir>/occlusion
+  std::string cli;            // empty: <build dir>/occlusion
+  int repeat = kRepetitions;  // whole processes of the CLI and embree_job, alternating
 };
 
 Options parse(int argc, char** argv) {
@@ -66,14 +68,17 @@ Options parse(int argc, char** argv) {
       o.threads = parse_threads(arg, flag_value(argc, argv, i));
     } else if (arg == "--seed") {
       o.seed = parse_unsigned(arg, flag_value(argc, argv, i));
+    } else if (arg == "--repeat") {
+      o.repeat = static_cast<int>(
+          std::min<std::size_t>(1000, parse_unsigned(arg, flag_value(argc, argv, i))));
     } else if (arg == "--cli") {
       o.cli = flag_value(argc, argv, i);
     } else {
       throw UsageError("unknown argument '" + arg + "'");
     }
   }
-  if (o.points == 0 || o.triangles == 0 || o.rays_per_vp == 0 || o.threads == 0) {
-    throw UsageError("--points, --triangles, --rays-per-vp and --threads must be > 0");
+  if (o.points == 0 || o.triangles == 0 || o.rays_per_vp == 0 || o.threads == 0 || o.repeat == 0) {
+    throw UsageError("--points, --triangles, --rays-per-vp, --threads and --repeat must be > 0");
   }
   if (o.points > 100'000'000) throw UsageError("--points must be at most 100000000");
   return o;
@@ -125,12 +130,14 @@ int run(const Options& o) {
       run_job_and_embree_job(bench_dir, cli, "poc", cloud_path,
                              {"--num-vp", std::to_string(kGridViewpoints), "--num-rays-per-vp",
                               std::to_string(o.rays_per_vp), "--point-radius", radius, "--threads",
-                              threads, "--seed", std::to_string(o.seed)});
+                              threads, "--seed", std::to_string(o.seed)},
+                             o.repeat);
   std::fprintf(stderr, "bench_poc: running %s -fscan and embree_job -fscan, in turn ...\n",
                cli.c_str());
   const auto [scan_cli, scan_embree] = run_job_and_embree_job(
       bench_dir, cli, "fscan", cloud_path,
-      {"--pattern", std::to_string(kPattern), "--point-radius", radius, "--threads", threads});
+      {"--pattern", std::to_string(kPattern), "--point-radius", radius, "--threads", threads},
+      o.repeat);
 
   auto start = std::chrono::steady_clock::now();
   const PointCloud cloud = read_cloud(cloud_path);
