@@ -1,9 +1,9 @@
 #include "occlusion/io/face_table.hpp"
 
-#include <charconv>
 #include <ostream>
 #include <stdexcept>
 
+#include "number_text.hpp"
 #include "occlusion/io/atomic_file.hpp"
 #include "occlusion/io/csv_file.hpp"
 
@@ -15,19 +15,6 @@ constexpr int kSignificantDigits = 9;
 // Rows are formatted into a buffer of about this size, then written: a
 // stream's own number formatting took a third of -moc's writing.
 constexpr std::size_t kFlushBytes = std::size_t{1} << 20;
-
-void append_number(std::string& text, double value) {
-  char digits[32];
-  const auto end = std::to_chars(digits, digits + sizeof digits, value, std::chars_format::general,
-                                 kSignificantDigits)
-                       .ptr;
-  text.append(digits, end);
-}
-
-void append_count(std::string& text, std::size_t value) {
-  char digits[24];
-  text.append(digits, std::to_chars(digits, digits + sizeof digits, value).ptr);
-}
 
 }  // namespace
 
@@ -48,15 +35,16 @@ void write_face_table(const std::string& path, const TriangleMesh& mesh,
     std::string text = "face,group,area,samples,visible_fraction\n";
     text.reserve(kFlushBytes + 256);
     for (std::size_t f = 0; f < faces; ++f) {
-      append_count(text, f);
+      detail::append_number(text, f);
       text += ',';
       text += group_fields.at(mesh.face_group[f]);
       text += ',';
-      append_number(text, mesh.face_area(f));
+      detail::append_significant(text, mesh.face_area(f), kSignificantDigits);
       text += ',';
-      append_count(text, samples[f]);
+      detail::append_number(text, samples[f]);
       text += ',';
-      append_number(text, static_cast<double>(visible_fraction[f]));
+      detail::append_significant(text, static_cast<double>(visible_fraction[f]),
+                                 kSignificantDigits);
       text += '\n';
       if (text.size() >= kFlushBytes) {
         out.write(text.data(), static_cast<std::streamsize>(text.size()));

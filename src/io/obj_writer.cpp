@@ -1,26 +1,14 @@
 #include "occlusion/io/obj_writer.hpp"
 
-#include <charconv>
 #include <cstdint>
 #include <ostream>
 
+#include "number_text.hpp"
 #include "occlusion/io/atomic_file.hpp"
 
 namespace occlusion {
 
 namespace {
-
-void append_number(std::string& out, double value) {
-  char buffer[32];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
-  out.append(buffer, result.ptr);
-}
-
-void append_number(std::string& out, std::uint64_t value) {
-  char buffer[24];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
-  out.append(buffer, result.ptr);
-}
 
 // One line of text: every line break or tab becomes a space.
 std::string one_line(std::string text) {
@@ -46,7 +34,7 @@ void write_obj(const std::string& path, const TriangleMesh& mesh, const std::str
     text += 'v';
     for (int k = 0; k < 3; ++k) {
       text += ' ';
-      append_number(text, v[k]);
+      detail::append_number(text, v[k]);
     }
     text += '\n';
   }
@@ -59,7 +47,7 @@ void write_obj(const std::string& path, const TriangleMesh& mesh, const std::str
     text += 'f';
     for (const std::uint32_t index : mesh.faces[f]) {
       text += ' ';
-      append_number(text, static_cast<std::uint64_t>(index) + 1);
+      detail::append_number(text, static_cast<std::uint64_t>(index) + 1);
     }
     text += '\n';
   }

@@ -1,4 +1,3 @@
-#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <ostream>
@@ -7,6 +6,7 @@
 
 #include "binary_writer.hpp"
 #include "cloud_formats.hpp"
+#include "number_text.hpp"
 #include "occlusion/io/atomic_file.hpp"
 
 namespace occlusion::detail {
@@ -70,20 +70,6 @@ void write_binary_body(std::ostream& out, const PointCloud& cloud,
   flush();
 }
 
-// The shortest text that reads back as exactly the same float (or double).
-template <class Real>
-void append_float(std::string& text, Real value) {
-  char digits[32];
-  const auto result = std::to_chars(digits, digits + sizeof digits, value);
-  text.append(digits, result.ptr);
-}
-
-void append_integer(std::string& text, long long value) {
-  char digits[24];
-  const auto result = std::to_chars(digits, digits + sizeof digits, value);
-  text.append(digits, result.ptr);
-}
-
 void write_ascii_body(std::ostream& out, const PointCloud& cloud,
                       const std::vector<ScalarField>& extra) {
   std::string text;
@@ -91,31 +77,31 @@ void write_ascii_body(std::ostream& out, const PointCloud& cloud,
     for (int axis = 0; axis < 3; ++axis) {
       if (axis > 0) text += ' ';
       if (cloud.shifted()) {
-        append_float(text, cloud.original_position(i)[axis]);
+        append_number(text, cloud.original_position(i)[axis]);
       } else {
-        append_float(text, cloud.positions[i][axis]);
+        append_number(text, cloud.positions[i][axis]);
       }
     }
     if (cloud.has_colours()) {
       for (const std::uint8_t channel : cloud.colours[i]) {
         text += ' ';
-        append_integer(text, channel);
+        append_number(text, channel);
       }
     }
     if (cloud.has_labels()) {
       text += ' ';
-      append_integer(text, cloud.labels[i]);
+      append_number(text, cloud.labels[i]);
     }
     if (cloud.has_instances()) {
       text += ' ';
-      append_integer(text, cloud.instances[i]);
+      append_number(text, cloud.instances[i]);
     }
     for (const ScalarField& field : extra) {
       text += ' ';
       if (field.integer) {
-        append_integer(text, static_cast<long long>(field.values[i]));
+        append_number(text, static_cast<long long>(field.values[i]));
       } else {
-        append_float(text, field.values[i]);
+        append_number(text, field.values[i]);
       }
     }
     text += '\n';

@@ -1,10 +1,10 @@
 #include "occlusion/io/polygon_file.hpp"
 
-#include <charconv>
 #include <cmath>
 #include <ostream>
 #include <stdexcept>
 
+#include "number_text.hpp"
 #include "occlusion/io/atomic_file.hpp"
 #include "occlusion/io/file_bytes.hpp"
 #include "occlusion/io/input_error.hpp"
@@ -73,7 +73,6 @@ std::vector<Polygon> read_polygons(const std::string& path) {
 void write_polygons(const std::string& path, const std::vector<Polygon>& polygons) {
   if (polygons.empty()) throw std::invalid_argument("write_polygons: no polygons");
   std::string text = "# openings: x y z per line, a blank line between polygons\n";
-  char digits[32];
   for (std::size_t p = 0; p < polygons.size(); ++p) {
     if (polygons[p].size() < 3) {
       throw std::invalid_argument("write_polygons: polygon " + std::to_string(p) + " has " +
@@ -87,7 +86,7 @@ void write_polygons(const std::string& path, const std::vector<Polygon>& polygon
       }
       for (int axis = 0; axis < 3; ++axis) {
         if (axis > 0) text += ' ';
-        text.append(digits, std::to_chars(digits, digits + sizeof digits, point[axis]).ptr);
+        detail::append_number(text, point[axis]);
       }
       text += '\n';
     }
