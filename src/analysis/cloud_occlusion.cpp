@@ -8,8 +8,10 @@
 #include <stdexcept>
 
 #include "analysis_support.hpp"
+#include "occlusion/analysis/surface_closure.hpp"
 #include "occlusion/core/parallel.hpp"
 #include "occlusion/core/sphere_octree.hpp"
+#include "occlusion/core/surfel_octree.hpp"
 
 namespace occlusion {
 
@@ -30,11 +32,19 @@ void check_inputs(const PointCloud& cloud, const std::vector<Eigen::Vector3d>& v
   cloud.validate();
   if (cloud.size() == 0) throw std::invalid_argument("cloud occlusion: the cloud has no points");
   analysis_support::check_viewpoints(viewpoints, "cloud occlusion");
-  analysis_support::check_positive(options.point_radius, "point_radius", "cloud occlusion");
+  double radius = options.point_radius;
+  if (options.surfels) {
+    if (options.surfels->surfels.size() != cloud.size()) {
+      throw std::invalid_argument(
+          "cloud occlusion: " + std::to_string(options.surfels->surfels.size()) + " surfels for " +
+          std::to_string(cloud.size()) + " points");
+    }
+    radius = options.surfels->stats.radius_quantile_10;
+  }
+  analysis_support::check_positive(radius, "point_radius", "cloud occlusion");
   Eigen::Vector3f lo, hi;
   cloud.bounds(lo, hi);
-  analysis_support::check_float_precision(lo, hi, viewpoints, options.point_radius,
-                                          "cloud occlusion");
+  analysis_support::check_float_precision(lo, hi, viewpoints, radius, "cloud occlusion");
   if (options.num_rays_per_vp == 0) {
     throw std::invalid_argument("cloud occlusion: num_rays_per_vp must be > 0");
   }
@@ -62,6 +72,15 @@ LargeVector<Sphere> blocking_spheres(const PointCloud& cloud, const std::vector<
   return make_spheres(kept, radius);
 }
 
+LargeVector<Surfel> blocking_surfels(const LargeVector<Surfel>& surfels,
+                                     const std::vector<bool>& blocking) {
+  LargeVector<Surfel> kept;
+  for (std::size_t i = 0; i < surfels.size(); ++i) {
+    if (blocking.empty() || blocking[i]) kept.push_back(surfels[i]);
+  }
+  return kept;
+}
+
 // A ray that hit a point may still have left the room first, through an
 // opening in front of that point.
 RayClass classify(const Ray& ray, const std::optional<Hit>& hit,
@@ -86,26 +105,21 @@ Ray light_source_ray(const Eigen::Vector3d& viewpoint, const Eigen::Vector3d& di
   return ray;
 }
 
-CloudOcclusionResult compute_cloud_occlusion(const PointCloud& cloud,
-                                             const std::vector<Eigen::Vector3d>& viewpoints,
-                                             const std::vector<PlanarPolygon>& openings,
-                                             const CloudOcclusionOptions& options,
-                                             const Progress& progress) {
-  check_inputs(cloud, viewpoints, options);
-  CloudOcclusionResult result;
+namespace {
 
-  auto start = Clock::now();
-  progress("building octree", 0.0);
-  const SphereOctree tree(
-      blocking_spheres(cloud, options.blocking, static_cast<float>(options.point_radius)),
-      options.octree, progress);
-  result.build_seconds = seconds_since(start);
+template <class Shape>
+CloudOcclusionResult trace(const Octree<Shape>& tree, double build_seconds, const PointCloud& cloud,
+                           const std::vector<Eigen::Vector3d>& viewpoints,
+                           const std::vector<PlanarPolygon>& openings,
+                           const CloudOcclusionOptions& options, const Progress& progress) {
+  CloudOcclusionResult result;
+  result.build_seconds = build_seconds;
   result.octree = tree.stats();
   result.points = cloud.size();
   result.blocking_points = tree.size();
   progress.check_cancel();
 
-  start = Clock::now();
+  const auto start = Clock::now();
   const std::size_t per_view = options.num_rays_per_vp;
   const std::size_t ray_count = per_view * viewpoints.size();
   std::vector<SphereDirections> directions;
@@ -186,6 +200,33 @@ CloudOcclusionResult compute_cloud_occlusion(const PointCloud& cloud,
   result.occlusion_level = level(result.occlusion_rays, result.rays - result.outside_view_rays);
   progress("done", 1.0);
   return result;
+}
+
+}  // namespace
+
+CloudOcclusionResult compute_cloud_occlusion(const PointCloud& cloud,
+                                             const std::vector<Eigen::Vector3d>& viewpoints,
+                                             const std::vector<PlanarPolygon>& openings,
+                                             const CloudOcclusionOptions& options,
+                                             const Progress& progress) {
+  check_inputs(cloud, viewpoints, options);
+  const auto start = Clock::now();
+  progress("building octree", 0.0);
+  if (options.surfels) {
+    const SurfelOctree tree(blocking_surfels(options.surfels->surfels, options.blocking),
+                            options.octree, progress);
+    CloudOcclusionResult result =
+        trace(tree, seconds_since(start), cloud, viewpoints, openings, options, progress);
+    if (options.blocking.empty()) {
+      result.open_surface_share =
+          open_surface_share(tree, *options.surfels, options.seed, options.threads);
+    }
+    return result;
+  }
+  const SphereOctree tree(
+      blocking_spheres(cloud, options.blocking, static_cast<float>(options.point_radius)),
+      options.octree, progress);
+  return trace(tree, seconds_since(start), cloud, viewpoints, openings, options, progress);
 }
 
 double interior_exterior_ratio(const std::vector<bool>& exterior) {

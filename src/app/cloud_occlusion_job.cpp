@@ -178,13 +178,19 @@ CloudOcclusionReport run_cloud_occlusion_on(const PointCloud& cloud,
       job::openings_in_frame(openings, cloud, request.polygon_path);
   check_memory_budget(
       cloud_occlusion_memory(cloud.size(), viewpoints.positions.size(), request.num_rays_per_vp,
-                             request.escape_directions || !request.out.empty()),
+                             request.escape_directions || !request.out.empty(),
+                             request.primitive == "disc"),
       request.max_memory_mb);
-  report.point_radius =
-      job::choose_point_radius(cloud, request.point_radius, "-poc", report.warnings);
+  const job::PointModel model =
+      job::choose_point_model(cloud,
+                              {request.primitive, request.point_radius, request.disc_coverage,
+                               request.normal_neighbours, request.threads},
+                              "-poc", report.warnings, progress);
+  report.point_model = model.report;
 
   CloudOcclusionOptions options;
-  options.point_radius = report.point_radius.radius;
+  options.point_radius = report.point_model.radius.radius;
+  options.surfels = model.surfels ? &*model.surfels : nullptr;
   options.num_rays_per_vp = static_cast<std::size_t>(request.num_rays_per_vp);
   options.sampling = parse_sampling(request.sampling);
   options.light_radius = request.light_radius;
@@ -198,6 +204,7 @@ CloudOcclusionReport run_cloud_occlusion_on(const PointCloud& cloud,
   report.result =
       compute_cloud_occlusion(cloud, viewpoints.positions, local_openings, options, progress);
   job::viewpoints_to_original(report.result.viewpoints, cloud);
+  report.point_model.open_surface_share = report.result.open_surface_share;
 
   if (request.exterior) {
     ExteriorReport exterior;
@@ -272,17 +279,20 @@ Json::Value to_json(const CloudOcclusionReport& report) {
   }
 
   Json::Value parameters = parameters_json(cloud_occlusion_keys(), q);
-  // The radius in force (measured when automatic), not the "auto" asked for.
-  parameters["point_radius"] = report.point_radius.radius;
-  parameters["point_radius_auto"] = report.point_radius.automatic;
+  // The radius in force (measured when automatic; discs: the median), not the
+  // "auto" asked for.
+  parameters["point_radius"] = report.point_model.radius.radius;
+  parameters["point_radius_auto"] = report.point_model.radius.automatic;
   json["parameters"] = parameters;
   if (!report.frame.isNull()) json["frame"] = report.frame;
-  json["point_spacing"] = job::point_radius_json(report.point_radius);
+  json["point_model"] = job::point_model_json(report.point_model);
+  json["point_spacing"] = job::point_radius_json(report.point_model.radius);
 
   json["octree"] = to_json(report.result.octree);
 
   Json::Value timings(Json::objectValue);
   timings["load_seconds"] = report.load_seconds;
+  if (report.point_model.surfels) timings["surfel_seconds"] = report.point_model.surfels->seconds;
   timings["build_seconds"] = report.result.build_seconds;
   timings["trace_seconds"] = report.result.trace_seconds;
   timings["total_seconds"] = report.total_seconds;

@@ -13,7 +13,10 @@ const Keys<CloudOcclusionRequest>& cloud_tracing_keys() {
           .range(1, 100'000'000)
           .metavar("N")
           .doc("rays from each viewpoint's light source"),
+      primitive_key(&R::primitive),
       point_radius_key(&R::point_radius),
+      disc_coverage_key(&R::disc_coverage),
+      normal_neighbours_key(&R::normal_neighbours),
       key("polygon_path", &R::polygon_path)
           .path()
           .metavar("FILE")

@@ -47,8 +47,10 @@ std::vector<JobInfo> make_jobs() {
                     "path",
                     "CLOUD [options]",
                     "occlusion ray ratio of a point cloud, with openings",
-                    "Each point is a sphere of point_radius; from each viewpoint num_rays_per_vp\n"
-                    "rays leave a spherical light source. A ray that hits no point and leaves\n"
+                    "Each point is a disc in its surface, sized from its neighbours so that\n"
+                    "surfaces close (or, with primitive sphere, a sphere of point_radius); from\n"
+                    "each viewpoint num_rays_per_vp rays leave a spherical light source. A ray\n"
+                    "that hits no point and leaves\n"
                     "through no opening is an occlusion ray; occlusion_level = occlusion rays /\n"
                     "rays.",
                     {},
@@ -80,8 +82,9 @@ std::vector<JobInfo> make_jobs() {
                     "the points that fixed viewpoints really see",
                     "Fixed-viewpoint scan: keep the points of a full cloud that the viewpoints\n"
                     "really see. Point P is seen from viewpoint V if the segment V-P meets no\n"
-                    "other point's sphere (point_radius), ignoring hits within self_tolerance of\n"
-                    "P (its neighbours on the same surface) and within point_radius of V.",
+                    "other point's disc (or sphere), ignoring hits on P's own surface: within\n"
+                    "3 x its thickness / sin(elevation) of P for discs, within self_tolerance\n"
+                    "for spheres.",
                     {},
                     {}},
             &scan_keys, &run_scan),

@@ -110,8 +110,7 @@ void warn_viewpoints_inside_solids(const std::vector<ViewpointVisibility>& visib
   }
 }
 
-PointRadius choose_point_radius(const PointCloud& cloud, double requested, const std::string& job,
-                                std::vector<std::string>& warnings) {
+PointRadius choose_point_radius(const PointCloud& cloud, double requested, const std::string& job) {
   PointRadius chosen;
   chosen.automatic = is_auto_radius(requested);
   try {
@@ -124,29 +123,8 @@ PointRadius choose_point_radius(const PointCloud& cloud, double requested, const
     }
     throw UsageError(std::string("--point-radius auto: ") + e.what() + "; give a radius");
   }
-  const double spacing = chosen.spacing.spacing;
   const double factor = job == "-fscan" ? kScanRadiusPerSpacing : kTracingRadiusPerSpacing;
-  chosen.radius = chosen.automatic ? factor * spacing : requested;
-  if (chosen.automatic) return chosen;
-  std::ostringstream message;
-  message << "point_radius " << requested << " is " << requested / spacing
-          << " x the point spacing " << spacing << " (median nearest-neighbour distance): ";
-  if (requested > kHighRadiusPerSpacing * spacing) {
-    message << (job == "-fscan" ? "neighbouring points hide each other, so the visible fraction "
-                                  "is too low"
-                                : "points swell into each other and close real gaps, so the "
-                                  "occlusion level is too low");
-  } else if (requested < kLowRadiusPerSpacing * spacing) {
-    message << (job == "-fscan"
-                    ? "rays pass between the points of a surface, so points behind it count as "
-                      "seen and the visible fraction is too high"
-                    : "rays leak between the points of surfaces, so the occlusion level is too "
-                      "high");
-  } else {
-    return chosen;
-  }
-  message << " (omit point_radius for auto = " << factor << " x spacing)";
-  warnings.push_back(message.str());
+  chosen.radius = chosen.automatic ? factor * chosen.spacing.spacing : requested;
   return chosen;
 }
 

@@ -11,12 +11,15 @@
 #include "occlusion/analysis/mesh_occlusion.hpp"
 #include "occlusion/analysis/point_spacing.hpp"
 #include "occlusion/analysis/scene_frame.hpp"
+#include "occlusion/analysis/surfel_estimation.hpp"
 #include "occlusion/analysis/up_axis.hpp"
 #include "occlusion/app/json_output.hpp"
+#include "occlusion/app/point_model.hpp"
 #include "occlusion/app/viewpoint_choice.hpp"
 #include "occlusion/core/mesh.hpp"
 #include "occlusion/core/point_cloud.hpp"
 #include "occlusion/core/polygon.hpp"
+#include "occlusion/core/progress.hpp"
 #include "occlusion/io/atomic_file.hpp"
 
 namespace occlusion::job {
@@ -55,11 +58,30 @@ UpAxis parse_up(const std::string& up);
 
 // The point radius a job traces with: the request's, or for kAutoPointRadius
 // the measured spacing times kScanRadiusPerSpacing (`job` "-fscan") or
-// kTracingRadiusPerSpacing ("-poc"). The spacing is measured either way and a
-// radius far from it is warned about, naming the bias, which differs by job.
-PointRadius choose_point_radius(const PointCloud& cloud, double requested, const std::string& job,
-                                std::vector<std::string>& warnings);
+// kTracingRadiusPerSpacing ("-poc"). The spacing is measured either way.
+PointRadius choose_point_radius(const PointCloud& cloud, double requested, const std::string& job);
 Json::Value point_radius_json(const PointRadius& radius);
+
+// A cloud job's point settings, as its keys hold them.
+struct PointSettings {
+  std::string primitive;  // "disc" or "sphere"
+  double point_radius = kAutoPointRadius;
+  double disc_coverage = kDefaultDiscCoverage;
+  unsigned normal_neighbours = kDefaultNormalNeighbours;
+  unsigned threads = 0;
+};
+
+// The points as the job traces them: `surfels` is set for discs. Warns
+// (naming what goes wrong, only where it does) about a setting that leaves
+// surfaces open or a model with many points it could not orient.
+struct PointModel {
+  PointModelReport report;
+  std::optional<SurfelEstimate> surfels;
+};
+PointModel choose_point_model(const PointCloud& cloud, const PointSettings& settings,
+                              const std::string& job, std::vector<std::string>& warnings,
+                              const Progress& progress);
+Json::Value point_model_json(const PointModelReport& model);
 
 // [{"name": ..., "position": [x, y, z], <figures>...}, ...] built by the caller.
 Json::Value viewpoint_json(const std::string& name, const Eigen::Vector3d& position);

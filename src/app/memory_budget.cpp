@@ -42,6 +42,10 @@ std::string megabytes(std::uint64_t bytes) {
 // Per element of the octrees: the primitive and its share of the nodes.
 constexpr std::uint64_t kTriangleOctreeBytes = 128;
 constexpr std::uint64_t kSphereOctreeBytes = 64;
+// The disc model beside it (surfel_estimation.hpp): the surfels and their
+// thickness, the estimate's per-point arrays and kd-tree, and the octree's
+// larger primitive.
+constexpr std::uint64_t kDiscModelBytes = 96;
 
 }  // namespace
 
@@ -65,9 +69,10 @@ MemoryEstimate mesh_occlusion_memory(const TriangleMesh& mesh, double samples_pe
 }
 
 MemoryEstimate cloud_occlusion_memory(std::size_t points, std::size_t viewpoints,
-                                      std::uint64_t rays_per_viewpoint, bool keep_escapes) {
-  std::uint64_t bytes = times(points, kSphereOctreeBytes);
-  std::string made_of = count(points) + " points";
+                                      std::uint64_t rays_per_viewpoint, bool keep_escapes,
+                                      bool discs) {
+  std::uint64_t bytes = times(points, kSphereOctreeBytes + (discs ? kDiscModelBytes : 0));
+  std::string made_of = count(points) + (discs ? " points as discs" : " points");
   if (keep_escapes) {
     // Every ray may escape: 12 bytes of direction each.
     bytes = plus(bytes, times(times(rays_per_viewpoint, viewpoints), 12));
@@ -77,10 +82,12 @@ MemoryEstimate cloud_occlusion_memory(std::size_t points, std::size_t viewpoints
   return {bytes, made_of};
 }
 
-MemoryEstimate scan_memory(std::size_t points, std::size_t viewpoints) {
+MemoryEstimate scan_memory(std::size_t points, std::size_t viewpoints, bool discs) {
   // The octree, the counts, and the written subset (a copy of the cloud at most).
-  const std::uint64_t bytes = times(points, kSphereOctreeBytes + 4 + 32);
-  return {bytes, count(points) + " points, " + count(viewpoints) + " viewpoints"};
+  const std::uint64_t bytes =
+      times(points, kSphereOctreeBytes + 4 + 32 + (discs ? kDiscModelBytes : 0));
+  return {bytes, count(points) + (discs ? " points as discs, " : " points, ") + count(viewpoints) +
+                     " viewpoints"};
 }
 
 MemoryEstimate region_growing_memory(std::size_t points, const RegionGrowingOptions& options) {

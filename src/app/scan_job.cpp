@@ -64,13 +64,19 @@ ScanReport run_scan_on(const PointCloud& cloud, const ViewpointChoice::Resolved&
   for (const auto& position : viewpoints.positions) {
     report.viewpoint_positions.push_back(cloud.to_original(position));
   }
-  check_memory_budget(scan_memory(cloud.size(), viewpoints.positions.size()),
-                      request.max_memory_mb);
-  report.point_radius =
-      job::choose_point_radius(cloud, request.point_radius, "-fscan", report.warnings);
+  check_memory_budget(
+      scan_memory(cloud.size(), viewpoints.positions.size(), request.primitive == "disc"),
+      request.max_memory_mb);
+  const job::PointModel model =
+      job::choose_point_model(cloud,
+                              {request.primitive, request.point_radius, request.disc_coverage,
+                               request.normal_neighbours, request.threads},
+                              "-fscan", report.warnings, progress);
+  report.point_model = model.report;
 
   ScanOptions options;
-  options.point_radius = report.point_radius.radius;
+  options.point_radius = report.point_model.radius.radius;
+  options.surfels = model.surfels ? &*model.surfels : nullptr;
   options.self_tolerance = request.self_tolerance;
   options.octree.min_cell_size = static_cast<float>(request.octree_resolution);
   options.octree.enable_acceleration = request.enable_acceleration;
@@ -162,17 +168,24 @@ Json::Value to_json(const ScanReport& report) {
   json["classes"] = classes;
 
   Json::Value parameters = parameters_json(scan_keys(), q);
-  // The radius and tolerance in force, not "auto" or the "-1 = 2 x radius" shorthand.
-  const double radius = report.point_radius.radius;
+  // The radius and tolerance in force, not "auto" or the "-1 = 2 x radius"
+  // shorthand (discs: the median radius; their reach is per point and ray).
+  const double radius = report.point_model.radius.radius;
   parameters["point_radius"] = radius;
-  parameters["point_radius_auto"] = report.point_radius.automatic;
-  parameters["self_tolerance"] = q.self_tolerance < 0.0 ? 2.0 * radius : q.self_tolerance;
+  parameters["point_radius_auto"] = report.point_model.radius.automatic;
+  if (q.self_tolerance >= 0.0) {
+    parameters["self_tolerance"] = q.self_tolerance;
+  } else if (q.primitive == "sphere") {
+    parameters["self_tolerance"] = 2.0 * radius;
+  }
   json["parameters"] = parameters;
   if (!report.frame.isNull()) json["frame"] = report.frame;
-  json["point_spacing"] = job::point_radius_json(report.point_radius);
+  json["point_model"] = job::point_model_json(report.point_model);
+  json["point_spacing"] = job::point_radius_json(report.point_model.radius);
 
   Json::Value timings(Json::objectValue);
   timings["load_seconds"] = report.load_seconds;
+  if (report.point_model.surfels) timings["surfel_seconds"] = report.point_model.surfels->seconds;
   timings["build_seconds"] = r.build_seconds;
   timings["trace_seconds"] = r.trace_seconds;
   timings["total_seconds"] = report.total_seconds;

@@ -10,8 +10,10 @@ const Keys<ScanRequest>& scan_keys() {
   static const Keys<R> keys = join<R>({
       {input_key(&R::path, "point cloud: .pcd, .ply, .txt or an S3DIS room/Area folder")},
       viewpoint_keys(&R::viewpoints),
-      {point_radius_key(&R::point_radius), self_tolerance_key(&R::self_tolerance),
-       frame_key(&R::frame), up_key(&R::up), octree_resolution_key(&R::octree_resolution),
+      {primitive_key(&R::primitive), point_radius_key(&R::point_radius),
+       disc_coverage_key(&R::disc_coverage), normal_neighbours_key(&R::normal_neighbours),
+       self_tolerance_key(&R::self_tolerance), frame_key(&R::frame), up_key(&R::up),
+       octree_resolution_key(&R::octree_resolution),
        enable_acceleration_key(&R::enable_acceleration),
        cloud_format_key(&R::format, "format of the written clouds"),
        skip_bad_lines_key(&R::skip_bad_lines), threads_key(&R::threads),

@@ -45,7 +45,10 @@ Progress cancel_only(const Progress& progress) {
 ScanRequest study_scan_request(const StudyRequest& request, const std::string& scene) {
   ScanRequest scan;
   scan.path = scene;
+  scan.primitive = request.tracing.primitive;
   scan.point_radius = request.tracing.point_radius;
+  scan.disc_coverage = request.tracing.disc_coverage;
+  scan.normal_neighbours = request.tracing.normal_neighbours;
   scan.self_tolerance = request.self_tolerance;
   scan.octree_resolution = request.tracing.octree_resolution;
   scan.enable_acceleration = request.tracing.enable_acceleration;

@@ -1,6 +1,7 @@
 // Low-level ray scenes for people who trace their own rays, in the shape
-// Open3D's RaycastingScene has: TriangleScene (a mesh) and SphereScene (a
-// point cloud, one sphere of `radius` per point), each over the library's
+// Open3D's RaycastingScene has: TriangleScene (a mesh), DiscScene (a point
+// cloud as the jobs trace it by default, one disc per point) and SphereScene
+// (a point cloud, one sphere of `radius` per point), each over the library's
 // octree, with batch `intersect` and `occluded`. Ray rules are the library's
 // (docs/architecture.md, "Ray rules"): closed [t_min, t_max], directions need
 // not be unit (t is in units of the direction), ties go to the lower id.
@@ -18,10 +19,12 @@
 #include "interrupt.hpp"
 #include "json_values.hpp"
 #include "numpy_views.hpp"
+#include "occlusion/analysis/surfel_estimation.hpp"
 #include "occlusion/app/json_output.hpp"
 #include "occlusion/core/mesh.hpp"
 #include "occlusion/core/parallel.hpp"
 #include "occlusion/core/sphere_octree.hpp"
+#include "occlusion/core/surfel_octree.hpp"
 #include "occlusion/core/triangle_octree.hpp"
 
 namespace py = pybind11;
@@ -138,6 +141,35 @@ SphereOctree build_sphere_scene(const py::handle& points, double radius, double 
   return SphereOctree(std::move(spheres), options);
 }
 
+SurfelOctree build_disc_scene(const py::handle& points, const py::handle& normals,
+                              const py::handle& radii, double disc_coverage,
+                              unsigned normal_neighbours, double octree_resolution,
+                              bool enable_acceleration) {
+  if (normals.is_none() != radii.is_none()) {
+    throw py::value_error(
+        "normals and radii: give both, or neither (then they are estimated as the jobs do)");
+  }
+  const OctreeOptions options =
+      octree_options(surfel_octree_options(), octree_resolution, enable_acceleration);
+  PointCloud cloud;
+  cloud.positions = points_from_array(points, "points");
+  if (normals.is_none()) {
+    SurfelOptions estimate;
+    estimate.coverage = disc_coverage;
+    estimate.neighbours = normal_neighbours;
+    py::gil_scoped_release release;
+    return SurfelOctree(estimate_surfels(cloud, estimate).surfels, options);
+  }
+  const std::vector<Eigen::Vector3f> normal_rows = points_from_array(normals, "normals");
+  const ScalarView radius_rows(radii, "radii");
+  radius_rows.expect_rows(cloud.size());
+  std::vector<float> radius_values(cloud.size());
+  for (std::size_t i = 0; i < cloud.size(); ++i) radius_values[i] = radius_rows[i];
+  LargeVector<Surfel> surfels = make_surfels(cloud.positions, normal_rows, radius_values);
+  py::gil_scoped_release release;
+  return SurfelOctree(std::move(surfels), options);
+}
+
 constexpr const char* kIntersectDoc = R"doc(Closest hit of each ray.
 
 origins: (N, 3) or (3,) for one origin shared by all rays; directions: (N, 3).
@@ -219,6 +251,47 @@ positive, or a point that is not finite.)doc");
   spheres.def(py::init(&build_sphere_scene), py::arg("points"), py::arg("radius"), py::kw_only(),
               py::arg("octree_resolution") = 0.0, py::arg("enable_acceleration") = true);
   bind_queries(spheres);
+
+  py::class_<SurfelOctree> discs(m, "DiscScene",
+                                 R"doc(A point cloud for ray queries, as the jobs trace it.
+
+DiscScene(points, normals=None, radii=None, *, disc_coverage=0.99,
+          normal_neighbours=16, octree_resolution=0.0, enable_acceleration=True)
+Each point is a disc (a surfel): centred on the point, in the plane of `normals`
+(a zero row: a sphere of that radius), of `radii` (a number or (N,) array).
+Without normals and radii they are estimated as the jobs' primitive disc does:
+a plane fitted to each point's normal_neighbours nearest, a radius from their
+density that closes disc_coverage of the surface (README, Point model).
+Primitive ids are point indices. A disc is two-sided and closed; a ray in its
+plane misses it. ValueError for sizes that differ, a radius that is not finite
+and positive, or a point or normal that is not finite.)doc");
+  discs.def(py::init(&build_disc_scene), py::arg("points"), py::arg("normals") = py::none(),
+            py::arg("radii") = py::none(), py::kw_only(),
+            py::arg("disc_coverage") = kDefaultDiscCoverage,
+            py::arg("normal_neighbours") = kDefaultNormalNeighbours,
+            py::arg("octree_resolution") = 0.0, py::arg("enable_acceleration") = true);
+  discs.def_property_readonly(
+      "normals",
+      [](const SurfelOctree& self) {
+        std::vector<float> values;
+        values.reserve(3 * self.size());
+        for (PrimitiveId id = 0; id < self.size(); ++id) {
+          const Eigen::Vector3f& n = self.shape(id).normal;
+          values.insert(values.end(), {n.x(), n.y(), n.z()});
+        }
+        py::array_t<float> out = to_numpy<float>(std::move(values));
+        return out.reshape({static_cast<py::ssize_t>(self.size()), py::ssize_t{3}});
+      },
+      "float32 (N, 3): each point's unit normal, zero where it is a sphere.");
+  discs.def_property_readonly(
+      "radii",
+      [](const SurfelOctree& self) {
+        std::vector<float> values(self.size());
+        for (PrimitiveId id = 0; id < self.size(); ++id) values[id] = self.shape(id).radius;
+        return to_numpy<float>(std::move(values));
+      },
+      "float32 (N,): each point's radius.");
+  bind_queries(discs);
 }
 
 }  // namespace occlusion::python

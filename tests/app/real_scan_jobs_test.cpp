@@ -51,18 +51,30 @@ TEST(RealScanJobs, ScanOfAKinectFrameFromItsSensorKeepsItWithDefaults) {
   request.path = "kinect frame";
   const ScanReport report = run_scan_on(frame, at_sensor(), request);
   EXPECT_GE(report.result.visible_fraction, 0.99);
-  EXPECT_TRUE(report.point_radius.automatic);
-  EXPECT_DOUBLE_EQ(report.point_radius.radius,
-                   kScanRadiusPerSpacing * report.point_radius.spacing.spacing);
+  const PointModelReport& model = report.point_model;
+  EXPECT_EQ(model.primitive, "disc");
+  EXPECT_TRUE(model.radius.automatic);
+  ASSERT_TRUE(model.surfels);
+  EXPECT_GT(model.surfels->oriented, frame.size() * 9 / 10);
+  EXPECT_DOUBLE_EQ(model.radius.radius, model.surfels->radius_median);
   EXPECT_TRUE(report.warnings.empty());
   const Json::Value json = to_json(report);
-  EXPECT_DOUBLE_EQ(json["parameters"]["point_radius"].asDouble(), report.point_radius.radius);
-  EXPECT_DOUBLE_EQ(json["parameters"]["self_tolerance"].asDouble(),
-                   2.0 * report.point_radius.radius);
-  EXPECT_DOUBLE_EQ(json["point_spacing"]["spacing"].asDouble(),
-                   report.point_radius.spacing.spacing);
+  EXPECT_DOUBLE_EQ(json["parameters"]["point_radius"].asDouble(), model.radius.radius);
+  EXPECT_EQ(json["parameters"]["self_tolerance"].asString(), "auto");  // per point and ray
+  EXPECT_EQ(json["point_model"]["primitive"].asString(), "disc");
+  EXPECT_EQ(json["point_model"]["discs"].asUInt64(), model.surfels->oriented);
+  EXPECT_DOUBLE_EQ(json["point_spacing"]["spacing"].asDouble(), model.radius.spacing.spacing);
 
-  // A radius of several spacings hides points: the warning says so.
+  // The thesis' spheres, auto: a quarter of the spacing, tolerance 2 x radius.
+  request.primitive = "sphere";
+  const ScanReport spheres = run_scan_on(frame, at_sensor(), request);
+  EXPECT_GE(spheres.result.visible_fraction, 0.99);
+  EXPECT_DOUBLE_EQ(spheres.point_model.radius.radius,
+                   kScanRadiusPerSpacing * spheres.point_model.radius.spacing.spacing);
+  EXPECT_DOUBLE_EQ(to_json(spheres)["parameters"]["self_tolerance"].asDouble(),
+                   2.0 * spheres.point_model.radius.radius);
+
+  // Spheres of several spacings hide points: the warning says so.
   request.point_radius = 0.03;
   const ScanReport fixed = run_scan_on(frame, at_sensor(), request);
   EXPECT_LT(fixed.result.visible_fraction, 0.99);

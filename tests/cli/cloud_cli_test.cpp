@@ -22,8 +22,9 @@ const std::string kRoom = "'" + kSource + "/files/s3dis_synthetic/Area_1/office_
 const std::string kArea = "'" + kSource + "/files/s3dis_synthetic/Area_1'";
 const std::string kOpenings = "'" + kSource + "/files/s3dis_synthetic/openings.txt'";
 const std::string kRealScan = "'" + kSource + "/../shared/data/room_scan1.pcd'";
-// The sample office is sampled every 6.5 cm: spheres of 6 cm close the surfaces.
-const std::string kClosedSurfaces = " --point-radius 0.06";
+// The sample office's surfaces are closed by the default model (discs sized
+// from their neighbours); spheres needed --point-radius 0.06 for it.
+const std::string kClosedSurfaces = "";
 
 std::size_t class_points(const Json::Value& classes, const std::string& name,
                          const char* field = "points") {
@@ -90,8 +91,9 @@ TEST(CloudCli, ExteriorVariantAndRatio) {
 
 TEST(CloudCli, ScanWritesSeenAndFullClouds) {
   const TempDir dir;
-  // The radius the point-radius default was before it became auto.
-  const std::string radius = " --point-radius 0.01";
+  // The radius the point-radius default was before it became auto, as spheres:
+  // discs are re-estimated on the scanned cloud, whose new edges change a few.
+  const std::string radius = " --primitive sphere --point-radius 0.01";
   const Json::Value json =
       run_json("-fscan " + kRoom + radius + " --pattern 1 --out '" + dir.path() + "'");
   const double fraction = json["visible_fraction"].asDouble();
@@ -132,7 +134,10 @@ TEST(CloudCli, KinectFrameFromItsSensor) {
   const std::string frame = "'" + kSource + "/../shared/data/mosd_learn25.pcd' --viewpoint 0,0,0";
   const Json::Value scan = run_json("-fscan " + frame);
   EXPECT_EQ(scan["points"].asUInt64(), 195021u);
-  EXPECT_GE(scan["visible_fraction"].asDouble(), 0.99);
+  // Discs: 98.0 % (a Kinect's depth noise is about its point spacing: see
+  // analysis/scan.cpp, kMinReachPerRadius); spheres of a quarter spacing keep
+  // every point, and leak through every surface (cloud_truth_test.cpp).
+  EXPECT_GE(scan["visible_fraction"].asDouble(), 0.975);
   EXPECT_TRUE(scan["parameters"]["point_radius_auto"].asBool());
   EXPECT_EQ(scan["warnings"].size(), 0u);
   const Json::Value poc = run_json("-poc " + frame + " --num-rays-per-vp 3000");

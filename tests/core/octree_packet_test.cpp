@@ -16,6 +16,7 @@
 #include "occlusion/core/random.hpp"
 #include "occlusion/core/sampling.hpp"
 #include "occlusion/core/sphere_octree.hpp"
+#include "occlusion/core/surfel_octree.hpp"
 #include "occlusion/core/triangle_octree.hpp"
 #include "support/brute_force.hpp"
 
@@ -67,6 +68,31 @@ LargeVector<Sphere> room_spheres() {
   }
   points.push_back(points[17]);  // coincident points: a tie
   return make_spheres(points, 0.08f);
+}
+
+// Discs in every orientation among the clutter, the gridded floor as discs
+// lying in it (rays in its plane), every 13th point unoriented (a sphere), and
+// coincident twins (a tie).
+LargeVector<Surfel> room_surfels() {
+  Rng rng(7);
+  std::vector<Eigen::Vector3f> points, normals;
+  std::vector<float> radii;
+  for (int i = 0; i < 4000; ++i) {
+    points.push_back(random_point(rng, 0.0f, 10.0f));
+    normals.push_back(i % 13 == 0 ? Eigen::Vector3f::Zero() : random_point(rng, -1.0f, 1.0f));
+    radii.push_back(static_cast<float>(0.05 + 0.1 * rng.uniform()));
+  }
+  for (int i = 0; i < 80; ++i) {
+    for (int j = 0; j < 80; ++j) {
+      points.emplace_back(i * 0.125f, j * 0.125f, 0.0f);
+      normals.emplace_back(0.0f, 0.0f, 1.0f);
+      radii.push_back(0.09f);
+    }
+  }
+  points.push_back(points[17]);
+  normals.push_back(normals[17]);
+  radii.push_back(radii[17]);
+  return make_surfels(points, normals, radii);
 }
 
 const std::vector<Eigen::Vector3f> kViewpoints = {
@@ -195,6 +221,12 @@ TEST(OctreePackets, SpheresMatchBruteForceRayByRay) {
   const LargeVector<Sphere> spheres = room_spheres();
   expect_batches_match_brute_force(spheres, test_batch(spheres.size(), 23),
                                    sphere_octree_options());
+}
+
+TEST(OctreePackets, SurfelsMatchBruteForceRayByRay) {
+  const LargeVector<Surfel> surfels = room_surfels();
+  expect_batches_match_brute_force(surfels, test_batch(surfels.size(), 24),
+                                   surfel_octree_options());
 }
 
 TEST(OctreePackets, TiesGoToTheLowerIdInEveryTraversal) {

@@ -203,3 +203,45 @@ def test_ctrl_c_interrupts_a_long_batch():
         timer.cancel()
     # The scene is still usable afterwards.
     assert scene.occluded(np.zeros(3), directions[:10]).shape == (10,)
+
+
+class TestDiscs:
+    def test_disc_hit_at_known_t_and_rim(self):
+        scene = occlusion.DiscScene([[0.0, 0.0, 5.0]], [[0.0, 0.0, 3.0]], [1.0])
+        origins = np.array([[0.5, 0.0, 0.0], [1.5, 0.0, 0.0], [0.0, 0.0, 5.0]])
+        directions = np.array([[0.0, 0.0, 2.0], [0.0, 0.0, 1.0], [1.0, 0.0, 0.0]])
+        t, ids = scene.intersect(origins, directions)
+        # Crossing at t = 2.5 in units of |d| = 2; outside the rim; in the plane.
+        np.testing.assert_array_equal(t, [2.5, np.inf, np.inf])
+        np.testing.assert_array_equal(ids, [0, NO_HIT, NO_HIT])
+        np.testing.assert_allclose(scene.normals, [[0.0, 0.0, 1.0]])
+
+    def test_zero_normal_is_a_sphere(self):
+        discs = occlusion.DiscScene([[0.0, 0.0, 5.0]], [[0.0, 0.0, 0.0]], 1.0)
+        spheres = occlusion.SphereScene([[0.0, 0.0, 5.0]], 1.0)
+        origins = np.array([[0.6, 0.0, 0.0], [0.0, 0.0, 5.0]])
+        directions = np.array([[0.0, 0.0, 1.0], [1.0, 0.0, 0.0]])
+        np.testing.assert_array_equal(discs.intersect(origins, directions)[0],
+                                      spheres.intersect(origins, directions)[0])
+
+    def test_estimated_discs_close_a_plane_that_spheres_leak_through(self):
+        rng = np.random.default_rng(1)
+        points = np.c_[rng.uniform(0, 4, (20000, 2)), np.zeros(20000)]
+        discs = occlusion.DiscScene(points)
+        assert discs.normals.shape == (20000, 3) and discs.radii.shape == (20000,)
+        np.testing.assert_allclose(np.abs(discs.normals[:, 2]), 1.0, atol=1e-5)
+        origins = np.c_[rng.uniform(1, 3, (5000, 2)), np.ones(5000)]
+        down = np.tile([0.3, 0.0, -1.0], (5000, 1))
+        assert discs.occluded(origins, down).mean() >= 0.995
+        # The thesis' spheres at 0.71 x the median spacing (-poc's old auto) leak.
+        spacing = 0.47 / np.sqrt(20000 / 16)
+        spheres = occlusion.SphereScene(points, 0.71 * spacing)
+        assert spheres.occluded(origins, down).mean() < 0.5
+
+    def test_bad_arguments_are_value_errors(self):
+        with pytest.raises(ValueError):
+            occlusion.DiscScene([[0.0, 0.0, 0.0]], [[0.0, 0.0, 1.0]])
+        with pytest.raises(ValueError):
+            occlusion.DiscScene([[0.0, 0.0, 0.0]], [[0.0, 0.0, 1.0]], [0.0])
+        with pytest.raises(ValueError):
+            occlusion.DiscScene([[0.0, 0.0, 0.0], [1.0, 0.0, 0.0]], [[0.0, 0.0, 1.0]], 1.0)

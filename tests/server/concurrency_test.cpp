@@ -142,9 +142,9 @@ TEST(Concurrency, CancelStopsAJobDuringItsOctreeBuild) {
   write_cloud(server.files().file("big.ply"), cloud);
 
   auto client = server.connect();
-  client->send_request(
-      1, "cloud_occlusion",
-      params(R"({"path": "big.ply", "point_radius": 0.01, "viewpoints": [[5, 5, 5]],
+  client->send_request(1, "cloud_occlusion",
+                       params(R"({"path": "big.ply", "primitive": "sphere", "point_radius": 0.01,
+                                  "viewpoints": [[5, 5, 5]],
                                   "num_rays_per_vp": 1000, "out": ""})"));
   for (;;) {
     const auto message = client->receive(Millis(120000));

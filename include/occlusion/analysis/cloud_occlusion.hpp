@@ -1,5 +1,7 @@
 #pragma once
-// Point-cloud occlusion (thesis 3.3): each point is a sphere of point_radius;
+// Point-cloud occlusion (thesis 3.3): each point is a disc of the cloud's
+// surfel model (surfel_estimation.hpp) or, as in the thesis, a sphere of
+// point_radius;
 // from each viewpoint a spherical light source sends num_rays_per_vp rays in
 // directions uniform on the sphere. A ray that hits no point and does not
 // leave through an opening is an occlusion ray; the occlusion level is the
@@ -26,6 +28,7 @@
 
 #include "occlusion/analysis/field_of_view.hpp"
 #include "occlusion/analysis/sphere_directions.hpp"
+#include "occlusion/analysis/surfel_estimation.hpp"
 #include "occlusion/core/octree.hpp"
 #include "occlusion/core/point_cloud.hpp"
 #include "occlusion/core/polygon.hpp"
@@ -36,7 +39,11 @@
 namespace occlusion {
 
 struct CloudOcclusionOptions {
+  // Spheres: every point's radius. Unused when `surfels` is set.
   double point_radius = 0.01;
+  // Set: the points are these surfels (one per point of the cloud, owned by
+  // the caller and alive through the call).
+  const SurfelEstimate* surfels = nullptr;
   std::size_t num_rays_per_vp = 30000;
   DirectionSampling sampling = DirectionSampling::kUniform;
   // Radius of the spherical light source: rays start at viewpoint + r * direction.
@@ -70,12 +77,15 @@ struct CloudOcclusionResult {
   std::size_t points = 0, blocking_points = 0;
   std::vector<ViewpointRays> viewpoints;
   OctreeStats octree;
+  // Discs with every point blocking: the share of the surfaces they leave
+  // open (surface_closure.hpp), seeded by `seed`.
+  std::optional<double> open_surface_share;
   double build_seconds = 0.0, trace_seconds = 0.0;
 };
 
 // Throws std::invalid_argument for an empty cloud, no viewpoints, a non-finite
-// viewpoint, point_radius <= 0, num_rays_per_vp == 0, or a blocking mask of the
-// wrong size; Cancelled when progress.cancel is set.
+// viewpoint, point_radius <= 0 (spheres), surfels for another cloud, num_rays_per_vp == 0, or a
+// blocking mask of the wrong size; Cancelled when progress.cancel is set.
 CloudOcclusionResult compute_cloud_occlusion(const PointCloud& cloud,
                                              const std::vector<Eigen::Vector3d>& viewpoints,
                                              const std::vector<PlanarPolygon>& openings,

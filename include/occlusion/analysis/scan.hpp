@@ -1,7 +1,20 @@
 #pragma once
 // Fixed-viewpoint scan (-fscan): which points of a full cloud do the viewpoints
-// really see? Point i is seen from viewpoint v if the segment between them
-// meets no other point's sphere (radius point_radius), not counting hits
+// really see? With surfels (the default model, surfel_estimation.hpp), point i
+// is seen from viewpoint v if the segment between them meets no other point's
+// disc, not counting hits within its own surface's reach of point i: that
+// reach is (3 x the thickness of i's neighbourhood) / sin(elevation), where
+// the elevation is the angle between the ray and i's disc, at least 1.5 times
+// i's radius and at most twice it (2 r for an unoriented point). A disc that
+// lies in i's surface meets the ray within that reach, so a surface seen at
+// any positive elevation does not hide itself (nor does a noisy one, whose
+// neighbours' discs stand a little in front of it: the least reach is for
+// them), while an occluder farther in front of it than that still does. Hits within twice the
+// median radius of the viewpoint are not counted either (a viewpoint on a point still sees).
+//
+// With spheres (the thesis' model), point i is seen from viewpoint v if the
+// segment between them meets no other point's sphere (radius point_radius),
+// not counting hits
 // within self_tolerance of point i (its neighbours on the same surface would
 // otherwise hide it) nor within 2 * point_radius of the viewpoint (every sphere
 // that holds the viewpoint ends there, so a viewpoint placed inside a point's
@@ -17,6 +30,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "occlusion/analysis/surfel_estimation.hpp"
 #include "occlusion/core/octree.hpp"
 #include "occlusion/core/point_cloud.hpp"
 #include "occlusion/core/progress.hpp"
@@ -26,9 +40,13 @@
 namespace occlusion {
 
 struct ScanOptions {
+  // Spheres: every point's radius. Unused when `surfels` is set.
   double point_radius = 0.01;
-  // Negative: 2 * point_radius (the default of the interface).
+  // Spheres: negative means 2 * point_radius (the default of the interface).
   double self_tolerance = -1.0;
+  // Set: the points are these surfels (one per point of the cloud, owned by
+  // the caller and alive through the call).
+  const SurfelEstimate* surfels = nullptr;
   OctreeOptions octree = sphere_octree_options();
   unsigned threads = 0;
 };
@@ -56,5 +74,17 @@ ScanResult scan_cloud(const PointCloud& cloud, const std::vector<Eigen::Vector3d
 // "not occluded" at once.
 Ray scan_shadow_ray(const Eigen::Vector3d& viewpoint, const Eigen::Vector3f& point,
                     const ScanOptions& options);
+
+// The same for surfels: direction = the surfel's centre - viewpoint, over
+// [near_viewpoint / |d|, 1 - reach / |d|] with the reach of the rule above
+// (`thickness` is the point's), or `fixed_reach` when it is >= 0 (an explicit
+// self_tolerance); the empty interval [1, 0] for a point within
+// near_viewpoint + reach of the viewpoint.
+Ray scan_surfel_ray(const Eigen::Vector3d& viewpoint, const Surfel& surfel, float thickness,
+                    double near_viewpoint, double fixed_reach = -1.0);
+
+// The reach of a surfel's own surface along a ray of unit direction `unit`
+// that ends at it (the rule above).
+double own_surface_reach(const Surfel& surfel, float thickness, const Eigen::Vector3d& unit);
 
 }  // namespace occlusion

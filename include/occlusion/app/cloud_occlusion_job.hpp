@@ -13,6 +13,7 @@
 #include "occlusion/analysis/cloud_occlusion.hpp"
 #include "occlusion/analysis/point_spacing.hpp"
 #include "occlusion/app/key.hpp"
+#include "occlusion/app/point_model.hpp"
 #include "occlusion/app/viewpoint_choice.hpp"
 
 namespace occlusion {
@@ -21,8 +22,13 @@ struct CloudOcclusionRequest {
   std::string path;
   ViewpointChoice viewpoints = ViewpointChoice::from_grid(9);
   std::uint64_t num_rays_per_vp = 30000;
-  // kAutoPointRadius: from the measured point spacing (job_support.hpp).
+  // How points meet rays (app/point_model.hpp): discs, or the thesis' spheres.
+  std::string primitive = "disc";
+  // kAutoPointRadius: discs from their neighbours' density, spheres from the
+  // measured point spacing (job_support.hpp).
   double point_radius = kAutoPointRadius;
+  double disc_coverage = kDefaultDiscCoverage;
+  unsigned normal_neighbours = kDefaultNormalNeighbours;
   std::string polygon_path;  // openings file; empty = none
   double octree_resolution = 0.0;
   bool enable_acceleration = true;
@@ -59,7 +65,7 @@ struct ExteriorReport {
 struct CloudOcclusionReport {
   CloudOcclusionRequest request;
   CloudOcclusionResult result;
-  PointRadius point_radius;                  // as traced, with the measured spacing
+  PointModelReport point_model;              // as traced, with the measured spacing
   std::optional<FieldOfView> field_of_view;  // set for a single-view frame
   std::string field_of_view_source;          // why the cloud was taken as one
   std::optional<ExteriorReport> exterior;

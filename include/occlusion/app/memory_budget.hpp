@@ -26,10 +26,13 @@ void check_memory_budget(const MemoryEstimate& estimate, std::uint64_t max_memor
 MemoryEstimate mesh_occlusion_memory(const TriangleMesh& mesh, double samples_per_unit_area,
                                      std::size_t viewpoints);
 // -poc: the point octree, and each viewpoint's escape directions when kept.
+// `discs`: the points are traced as discs (app/point_model.hpp), whose model
+// and its estimation take more per point than spheres.
 MemoryEstimate cloud_occlusion_memory(std::size_t points, std::size_t viewpoints,
-                                      std::uint64_t rays_per_viewpoint, bool keep_escapes);
+                                      std::uint64_t rays_per_viewpoint, bool keep_escapes,
+                                      bool discs);
 // -fscan: the point octree and the per-point counts.
-MemoryEstimate scan_memory(std::size_t points, std::size_t viewpoints);
+MemoryEstimate scan_memory(std::size_t points, std::size_t viewpoints, bool discs);
 // -rgoc and extract_polygons: PCL's cloud, normals, kd-tree and the
 // neighbour lists of region growing and normal estimation.
 MemoryEstimate region_growing_memory(std::size_t points, const RegionGrowingOptions& options);

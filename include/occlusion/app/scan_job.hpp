@@ -10,6 +10,7 @@
 #include "occlusion/analysis/point_spacing.hpp"
 #include "occlusion/analysis/scan.hpp"
 #include "occlusion/app/key.hpp"
+#include "occlusion/app/point_model.hpp"
 #include "occlusion/app/viewpoint_choice.hpp"
 
 namespace occlusion {
@@ -17,9 +18,15 @@ namespace occlusion {
 struct ScanRequest {
   std::string path;
   ViewpointChoice viewpoints = ViewpointChoice::from_pattern(7);
-  // kAutoPointRadius: from the measured point spacing (job_support.hpp).
+  // How points meet rays (app/point_model.hpp): discs, or the thesis' spheres.
+  std::string primitive = "disc";
+  // kAutoPointRadius: discs from their neighbours' density, spheres from the
+  // measured point spacing (job_support.hpp).
   double point_radius = kAutoPointRadius;
-  double self_tolerance = -1.0;  // negative: 2 * point_radius (the radius in use)
+  double disc_coverage = kDefaultDiscCoverage;
+  unsigned normal_neighbours = kDefaultNormalNeighbours;
+  // Negative: spheres 2 * point_radius, discs their own surface's reach (scan.hpp).
+  double self_tolerance = -1.0;
   double octree_resolution = 0.0;
   bool enable_acceleration = true;
   std::string format = "ply";  // of the written clouds: ply or pcd
@@ -44,7 +51,7 @@ struct ClassVisibility {
 struct ScanReport {
   ScanRequest request;
   ScanResult result;
-  PointRadius point_radius;  // as traced, with the measured spacing
+  PointModelReport point_model;  // as traced, with the measured spacing
   std::vector<std::string> viewpoint_names;
   Json::Value frame;  // how the viewpoints were placed (ViewpointChoice::Resolved::frame)
   std::vector<Eigen::Vector3d> viewpoint_positions;  // in the file's frame

@@ -7,6 +7,7 @@
 
 #include "occlusion/analysis/confusion_matrix.hpp"
 #include "occlusion/analysis/point_spacing.hpp"
+#include "occlusion/analysis/surfel_estimation.hpp"
 #include "occlusion/app/key.hpp"
 
 namespace occlusion {
@@ -72,7 +73,37 @@ KeyBuilder<R> samples_per_unit_area_key(double R::*field) {
       .doc("sampling density of the faces: max(1, round(area x density)) samples per face");
 }
 
-// "auto" (held as kAutoPointRadius): from the measured point spacing.
+// How a cloud's points meet rays (analysis/surfel_estimation.hpp, README "Point
+// model"): discs in their surface (the default) or the thesis' spheres.
+template <class R>
+KeyBuilder<R> primitive_key(std::string R::*field) {
+  return key("primitive", field)
+      .choices({"disc", "sphere"})
+      .doc(
+          "each point is a disc in its surface, oriented and sized from its neighbours so "
+          "that surfaces close (disc), or a sphere of point_radius (sphere, the thesis' model)");
+}
+
+template <class R>
+KeyBuilder<R> disc_coverage_key(double R::*field) {
+  return key("disc_coverage", field)
+      .range(0.5, 0.999999)
+      .metavar("C")
+      .doc(
+          "discs with point_radius auto: the share of each sampled surface they close (the "
+          "rest lets rays through)");
+}
+
+template <class R>
+KeyBuilder<R> normal_neighbours_key(unsigned R::*field) {
+  return key("normal_neighbours", field)
+      .range(kMinNeighbours, 256)
+      .metavar("K")
+      .doc("discs: neighbours each point's plane and density are measured from");
+}
+
+// "auto" (held as kAutoPointRadius): discs from their neighbours' density,
+// spheres from the measured point spacing.
 template <class R>
 KeyBuilder<R> point_radius_key(double R::*field) {
   return custom_key<R>(
@@ -88,8 +119,9 @@ KeyBuilder<R> point_radius_key(double R::*field) {
       .unit("scene units")
       .metavar("R")
       .doc(
-          "sphere radius of each point; auto: from the measured point spacing (README, Real "
-          "scans)");
+          "radius of each point's disc or sphere; auto: discs sized per point from their "
+          "neighbours' density (disc_coverage), spheres from the measured point spacing "
+          "(README, Point model)");
 }
 
 template <class R>
@@ -124,8 +156,8 @@ KeyBuilder<R> self_tolerance_key(double R::*field) {
       .unit("scene units")
       .metavar("D")
       .doc(
-          "a point is seen if nothing blocks the ray closer than this to it; auto: 2 x "
-          "point_radius");
+          "spheres: a point is seen if nothing blocks the ray closer than this to it; auto: 2 x "
+          "point_radius (discs measure their own surface's reach, README, Point model)");
 }
 
 template <class R>

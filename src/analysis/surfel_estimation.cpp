@@ -1,0 +1,410 @@
+// One kd-tree (FLANN's single index, as PCL builds it) over the cloud's own
+// floats, one k-nearest search per point for its plane and density, and a
+// second search only for the points that may be stray.
+
+#include "occlusion/analysis/surfel_estimation.hpp"
+
+#include <flann/algorithms/dist.h>
+#include <flann/algorithms/kdtree_single_index.h>
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "analysis_support.hpp"
+#include "occlusion/core/parallel.hpp"
+#include "pcl_frame.hpp"
+
+namespace occlusion {
+
+namespace {
+
+using analysis_support::Clock;
+using analysis_support::seconds_since;
+using FlannTree = flann::KDTreeSingleIndex<flann::L2_Simple<float>>;
+constexpr int kLeafSize = 15;
+constexpr std::size_t kGrain = 1024;
+// A second eigenvalue below this share of the largest: the neighbours lie on a line.
+constexpr double kMinSpread = 1e-3;
+// Below this surface variation a neighbourhood is one flat surface: no refit.
+constexpr double kFlatVariation = 0.01;
+constexpr float kSphereShare = 0.5f;
+constexpr double kRmsShare = 0.5;
+// How many times more neighbours a point whose neighbours lie on a line asks for.
+constexpr std::size_t kWideSearch = 4;
+
+// Positions closer than this (relative to their magnitude, floats) are one position.
+double same_position_distance(const Eigen::Vector3f& p) {
+  return 1e-6 * std::max(1.0, static_cast<double>(p.cwiseAbs().maxCoeff()));
+}
+
+// About 20 progress steps per pass, but no block so small that the threads idle.
+std::size_t block_size(std::size_t count) {
+  return std::max<std::size_t>(count / 20, 16384);
+}
+
+float quantile(std::vector<float> values, double q) {
+  if (values.empty()) return 0.0f;
+  const auto k = static_cast<std::size_t>(q * static_cast<double>(values.size() - 1) + 0.5);
+  std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(k), values.end());
+  return values[k];
+}
+
+void check_options(const PointCloud& cloud, const SurfelOptions& options) {
+  if (options.neighbours < kMinNeighbours || options.neighbours > 256) {
+    throw std::invalid_argument("surfels: neighbours must be in [" +
+                                std::to_string(kMinNeighbours) + ", 256], got " +
+                                std::to_string(options.neighbours));
+  }
+  if (!(options.coverage > 0.0 && options.coverage < 1.0)) {
+    throw std::invalid_argument("surfels: coverage must lie in (0, 1)");
+  }
+  if (!(options.fixed_radius >= 0.0) || !std::isfinite(options.fixed_radius)) {
+    throw std::invalid_argument("surfels: a fixed radius must be finite and >= 0");
+  }
+  if (!(options.max_surface_variation >= 0.0 && options.max_surface_variation <= 1.0 / 3.0)) {
+    throw std::invalid_argument("surfels: max_surface_variation must lie in [0, 1/3]");
+  }
+  if (cloud.size() < 2) throw std::invalid_argument("surfels: the cloud needs at least two points");
+  for (const Eigen::Vector3f& p : cloud.positions) {
+    if (!(p.cwiseAbs().maxCoeff() <= pcl_frame::kMaxLocalCoordinate)) {
+      throw std::invalid_argument(
+          "surfels: a point is not finite or lies more than 1e15 units from the cloud's "
+          "origin, beyond what a float kd-tree can search; remove the stray far points (or fix "
+          "the unit) first");
+    }
+  }
+}
+
+// What one point's neighbourhood says.
+struct Neighbourhood {
+  Eigen::Vector3f normal = Eigen::Vector3f::Zero();  // zero: not trusted
+  float radius = 0.0f;                               // 0: no distinct neighbour
+  float thickness = 0.0f;
+  float surface_variation = 0.0f;
+  bool duplicate = false;
+  bool line = false;  // the neighbours lie along one line: no plane among them
+};
+
+// The distinct positions among a point's nearest (nearest first, the point
+// itself among them): a neighbour at the point's position, or at one already
+// taken, is the same position stored again.
+class Distinct {
+ public:
+  void reset(const Eigen::Vector3f& own, double same) {
+    own_ = own;
+    same_ = same;
+    kept_.clear();
+    duplicate_ = false;
+  }
+  void offer(const Eigen::Vector3f& p) {
+    if ((p - own_).cast<double>().norm() <= same_) {
+      duplicate_ = true;
+      return;
+    }
+    for (const Eigen::Vector3f& q : kept_) {
+      if ((p - q).cast<double>().norm() <= same_) return;
+    }
+    kept_.push_back(p);
+  }
+  std::size_t count() const { return kept_.size(); }
+  const Eigen::Vector3f& operator[](std::size_t j) const { return kept_[j]; }
+  bool duplicate() const { return duplicate_; }
+
+ private:
+  Eigen::Vector3f own_;
+  double same_ = 0.0;
+  std::vector<Eigen::Vector3f> kept_;
+  bool duplicate_ = false;
+};
+
+// A plane fitted to the point and its `count` nearest distinct neighbours.
+struct PlaneFit {
+  Eigen::Vector3d normal = Eigen::Vector3d::Zero();
+  Eigen::Vector3d major = Eigen::Vector3d::UnitX();  // in-plane axis of the largest spread
+  double variation = 1.0;                            // lambda0 / (lambda0 + lambda1 + lambda2)
+  double rms = 0.0;     // the points' RMS distance from the plane, sqrt(lambda0)
+  bool spread = false;  // the points span two directions (not a line)
+};
+
+PlaneFit fit_plane(const Eigen::Vector3f& own, const Distinct& distinct, std::size_t count) {
+  Eigen::Vector3d mean = own.cast<double>();
+  for (std::size_t j = 0; j < count; ++j) mean += distinct[j].cast<double>();
+  mean /= static_cast<double>(count + 1);
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+  const auto add = [&](const Eigen::Vector3f& p) {
+    const Eigen::Vector3d d = p.cast<double>() - mean;
+    covariance += d * d.transpose();
+  };
+  add(own);
+  for (std::size_t j = 0; j < count; ++j) add(distinct[j]);
+  covariance /= static_cast<double>(count + 1);
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
+  solver.computeDirect(covariance);
+  const Eigen::Vector3d lambda = solver.eigenvalues().cwiseMax(0.0);  // increasing
+  PlaneFit fit;
+  const double total = lambda.sum();
+  const Eigen::Vector3d normal = solver.eigenvectors().col(0);
+  if (!(total > 0.0) || !normal.allFinite() || !(normal.norm() > 0.5)) return fit;
+  fit.normal = normal.normalized();
+  const Eigen::Vector3d major = solver.eigenvectors().col(2);
+  if (major.allFinite() && major.norm() > 0.5) fit.major = major.normalized();
+  fit.variation = lambda[0] / total;
+  fit.rms = std::sqrt(lambda[0]);
+  fit.spread = lambda[1] >= kMinSpread * lambda[2];
+  return fit;
+}
+
+// The noise of the point's surface: its neighbours' distances from its own
+// plane, from their lower quartile (a thin object's other side, a minority of
+// the neighbours, does not count), scaled to the standard deviation of
+// Gaussian noise on both points (|N(0, sigma sqrt 2)| has its quartile at
+// 0.45 sigma).
+float surface_noise(const Eigen::Vector3f& own, const Distinct& distinct,
+                    const Eigen::Vector3d& normal) {
+  thread_local std::vector<double> offsets;
+  offsets.clear();
+  for (std::size_t j = 0; j < distinct.count(); ++j) {
+    offsets.push_back(std::abs(normal.dot((distinct[j] - own).cast<double>())));
+  }
+  const auto quarter = static_cast<std::ptrdiff_t>(offsets.size() / 4);
+  std::nth_element(offsets.begin(), offsets.begin() + quarter, offsets.end());
+  return static_cast<float>(offsets[static_cast<std::size_t>(quarter)] / 0.45);
+}
+
+// The radius rule in the point's tangent plane, where the neighbourhood's
+// layout shows (four 90-degree sectors, centred on the plane's two in-plane
+// axes):
+// - at a surface's boundary some sectors are empty, and the density is the m
+//   neighbours over the occupied sectors' share of the disc of radius D, not
+//   the whole disc: a boundary point's disc would otherwise be too large by
+//   sqrt(2) and overhang the edge;
+// - on a regular grid of spacings a x b the surface closes only where r
+//   reaches half a cell's diagonal, sqrt(a^2 + b^2) / 2, which the density
+//   rule falls short of when b is several times a (a scanner's rows and
+//   columns): the neighbourhood's largest spread lies along the rows, so the
+//   sectors follow the grid, a and b are the nearest neighbours along each
+//   axis (the larger of the two opposite sectors), and r is at least half the
+//   diagonal (at most D).
+double tangent_radius(const Eigen::Vector3f& own, const Distinct& distinct, const PlaneFit& fit,
+                      double farthest, double coverage) {
+  const Eigen::Vector3d axis_u = fit.major;
+  const Eigen::Vector3d axis_v = fit.normal.cross(axis_u).normalized();
+  double nearest[4] = {INFINITY, INFINITY, INFINITY, INFINITY};  // +u, +v, -u, -v
+  for (std::size_t j = 0; j < distinct.count(); ++j) {
+    const Eigen::Vector3d d = (distinct[j] - own).cast<double>();
+    const double u = axis_u.dot(d), v = axis_v.dot(d);
+    const int sector = std::abs(u) >= std::abs(v) ? (u >= 0.0 ? 0 : 2) : (v >= 0.0 ? 1 : 3);
+    nearest[sector] = std::min(nearest[sector], std::hypot(u, v));
+  }
+  int occupied = 0;
+  for (const double g : nearest) occupied += std::isfinite(g) ? 1 : 0;
+  const std::size_t m = distinct.count();
+  double radius = coverage_radius(farthest, m, coverage) * std::sqrt(occupied / 4.0);
+  const auto gap = [&](int a, int b) {
+    const double ga = std::isfinite(nearest[a]) ? nearest[a] : 0.0;
+    const double gb = std::isfinite(nearest[b]) ? nearest[b] : 0.0;
+    return std::max(ga, gb);
+  };
+  const double along_axes = 0.5 * std::hypot(gap(0, 2), gap(1, 3));
+  radius = std::max(radius, std::min(along_axes, farthest));
+  return radius;
+}
+
+Neighbourhood measure(const Eigen::Vector3f& own, const Distinct& distinct,
+                      const SurfelOptions& options) {
+  Neighbourhood hood;
+  hood.duplicate = distinct.duplicate();
+  const std::size_t m = distinct.count();
+  if (m == 0) return hood;
+  double farthest = 0.0;
+  for (std::size_t j = 0; j < m; ++j) {
+    farthest = std::max(farthest, (distinct[j] - own).cast<double>().norm());
+  }
+  hood.radius = static_cast<float>(options.fixed_radius > 0.0
+                                       ? options.fixed_radius
+                                       : coverage_radius(farthest, m, options.coverage));
+  if (m < kMinNeighbours) return hood;
+  // Near an edge the neighbours lie on two surfaces and the plane through
+  // all of them is tilted between both; the nearest half lie mostly on the
+  // point's own surface, so where they fit a plane better, theirs is taken.
+  PlaneFit fit = fit_plane(own, distinct, m);
+  const std::size_t half = std::max(kMinNeighbours, (m + 1) / 2);
+  if (fit.variation > kFlatVariation && half < m) {
+    const PlaneFit nearest = fit_plane(own, distinct, half);
+    if (nearest.spread && nearest.variation < fit.variation) fit = nearest;
+  }
+  hood.surface_variation = static_cast<float>(fit.variation);
+  hood.line = !fit.spread;
+  if (fit.spread && fit.variation <= options.max_surface_variation) {
+    hood.normal = fit.normal.cast<float>();
+    // The quartile misses noise that comes in steps (a depth camera's
+    // quantised depths put most neighbours on the point's own step): half
+    // the RMS distance bounds it from below, and stays below half the gap
+    // between a thin board's two sides.
+    hood.thickness =
+        std::max(surface_noise(own, distinct, fit.normal), static_cast<float>(kRmsShare * fit.rms));
+    if (options.fixed_radius <= 0.0) {
+      hood.radius =
+          static_cast<float>(tangent_radius(own, distinct, fit, farthest, options.coverage));
+    }
+  }
+  return hood;
+}
+
+}  // namespace
+
+double coverage_radius(double farthest_distance, std::size_t distinct_neighbours, double coverage) {
+  const double log_open = std::log(1.0 / (1.0 - coverage));
+  // One neighbour gives no density estimate: its distance is the best scale there is.
+  if (distinct_neighbours < 2) return farthest_distance * std::sqrt(log_open);
+  return farthest_distance * std::sqrt(log_open / static_cast<double>(distinct_neighbours - 1));
+}
+
+SurfelEstimate estimate_surfels(const PointCloud& cloud, const SurfelOptions& options,
+                                const Progress& progress) {
+  check_options(cloud, options);
+  const auto start = Clock::now();
+  const std::size_t count = cloud.size();
+  const std::size_t k = std::min(options.neighbours + 1, count);
+  SurfelEstimate estimate;
+  std::vector<Eigen::Vector3f> normals(count);
+  std::vector<float> radii(count);
+  std::vector<float> variation(count);
+  std::vector<std::uint8_t> duplicate(count);
+  estimate.thickness.assign(count, 0.0f);
+
+  // The cloud's own floats, in place (12 bytes a point): no copy for the tree.
+  const flann::Matrix<float> points(const_cast<float*>(cloud.positions[0].data()), count, 3,
+                                    sizeof(Eigen::Vector3f));
+  FlannTree tree(points, flann::KDTreeSingleIndexParams(kLeafSize, /*reorder=*/true));
+  tree.buildIndex();
+  const flann::SearchParams search(/*checks=*/-1, /*eps=*/0.0f, /*sorted=*/true);
+
+  const auto search_blocks = [&](const char* stage, const std::vector<std::size_t>* subset,
+                                 std::size_t wanted, const auto& visit) {
+    const std::size_t total = subset ? subset->size() : count;
+    const std::size_t block = block_size(total);
+    progress(stage, 0.0);
+    for (std::size_t begin = 0; begin < total; begin += block) {
+      const std::size_t end = std::min(total, begin + block);
+      parallel_for(end - begin, kGrain, options.threads, [&](std::size_t first, std::size_t last) {
+        flann::KNNSimpleResultSet<float> found(wanted);
+        std::vector<std::size_t> ids(wanted);
+        std::vector<float> distances(wanted);
+        for (std::size_t n = begin + first; n < begin + last; ++n) {
+          const std::size_t i = subset ? (*subset)[n] : n;
+          found.clear();
+          tree.findNeighbors(found, cloud.positions[i].data(), search);
+          const std::size_t got = std::min(found.size(), wanted);
+          found.copy(ids.data(), distances.data(), got, true);
+          visit(i, ids.data(), got);
+        }
+      });
+      progress.check_cancel();
+      progress(stage, static_cast<double>(end) / static_cast<double>(total));
+    }
+  };
+
+  std::vector<std::uint8_t> line(count);
+  const auto model_point = [&](std::size_t i, const std::size_t* ids, std::size_t got) {
+    thread_local Distinct distinct;
+    const Eigen::Vector3f& own = cloud.positions[i];
+    distinct.reset(own, same_position_distance(own));
+    for (std::size_t j = 0; j < got; ++j) {
+      if (ids[j] != i) distinct.offer(cloud.positions[ids[j]]);
+    }
+    const Neighbourhood hood = measure(own, distinct, options);
+    normals[i] = hood.normal;
+    radii[i] = hood.normal.isZero() ? kSphereShare * hood.radius : hood.radius;
+    variation[i] = hood.surface_variation;
+    duplicate[i] = hood.duplicate;
+    line[i] = hood.line;
+    estimate.thickness[i] = hood.thickness;
+  };
+  search_blocks("surfels", nullptr, k, model_point);
+  // On a scanner's grid seen at a grazing angle the columns can lie ten times
+  // farther apart than the rows, and all k nearest on the point's own scan
+  // line: those points look again, kWideSearch times as far in count.
+  std::vector<std::size_t> lines;
+  for (std::size_t i = 0; i < count; ++i) {
+    if (line[i]) lines.push_back(i);
+  }
+  search_blocks("surfels (scan lines)", &lines,
+                std::min(kWideSearch * options.neighbours + 1, count), model_point);
+
+  // Positions stored more than k times have no distinct neighbour in reach:
+  // they take the cloud's median radius.
+  std::vector<float> measured;
+  measured.reserve(count);
+  for (const float r : radii) {
+    if (r > 0.0f) measured.push_back(r);
+  }
+  if (measured.empty()) {
+    throw std::invalid_argument(
+        "surfels: no point has a neighbour at a distinct position (all points coincide?)");
+  }
+  const float median_radius = quantile(measured, 0.5);
+  for (float& r : radii) {
+    if (!(r > 0.0f)) r = median_radius;
+  }
+
+  SurfelStats& stats = estimate.stats;
+  if (options.fixed_radius <= 0.0) {
+    // Stray points: a radius kStrayRatio times their neighbours' median. A
+    // stray point's neighbours are at least as dense as the sparsest tenth of
+    // the cloud, so only points above kStrayRatio x that quantile can be stray.
+    const float low = quantile(measured, 0.1);
+    std::vector<std::size_t> candidates;
+    for (std::size_t i = 0; i < count; ++i) {
+      if (radii[i] > kStrayRatio * low) candidates.push_back(i);
+    }
+    std::vector<float> stray_radius(count, 0.0f);
+    search_blocks("stray points", &candidates, k,
+                  [&](std::size_t i, const std::size_t* ids, std::size_t got) {
+                    thread_local std::vector<float> around;
+                    around.clear();
+                    for (std::size_t j = 0; j < got; ++j) {
+                      if (ids[j] != i) around.push_back(radii[ids[j]]);
+                    }
+                    if (around.empty()) return;
+                    const float typical = quantile(around, 0.5);
+                    if (radii[i] > kStrayRatio * typical) stray_radius[i] = typical;
+                  });
+    for (const std::size_t i : candidates) {
+      if (stray_radius[i] > 0.0f) {
+        radii[i] = stray_radius[i];
+        normals[i] = Eigen::Vector3f::Zero();
+        estimate.thickness[i] = 0.0f;
+        ++stats.stray;
+      }
+    }
+  }
+
+  estimate.surfels = make_surfels(cloud.positions, normals, radii);
+  stats.points = count;
+  std::vector<float> oriented_variation, oriented_thickness;
+  for (std::size_t i = 0; i < count; ++i) {
+    stats.duplicates += duplicate[i];
+    if (estimate.surfels[i].oriented()) {
+      oriented_variation.push_back(variation[i]);
+      oriented_thickness.push_back(estimate.thickness[i]);
+    }
+  }
+  stats.oriented = oriented_variation.size();
+  stats.unoriented = count - stats.oriented;
+  stats.radius_quantile_10 = quantile(radii, 0.1);
+  stats.radius_median = quantile(radii, 0.5);
+  stats.radius_quantile_90 = quantile(radii, 0.9);
+  stats.surface_variation_median = quantile(oriented_variation, 0.5);
+  stats.thickness_median = quantile(oriented_thickness, 0.5);
+  stats.seconds = seconds_since(start);
+  progress("surfels", 1.0);
+  return estimate;
+}
+
+}  // namespace occlusion
