@@ -75,6 +75,7 @@ LargeVector<Sphere> blocking_spheres(const PointCloud& cloud, const std::vector<
 LargeVector<Surfel> blocking_surfels(const LargeVector<Surfel>& surfels,
                                      const std::vector<bool>& blocking) {
   LargeVector<Surfel> kept;
+  kept.reserve(blocking.empty() ? surfels.size() : 0);
   for (std::size_t i = 0; i < surfels.size(); ++i) {
     if (blocking.empty() || blocking[i]) kept.push_back(surfels[i]);
   }
