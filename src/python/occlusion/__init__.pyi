@@ -102,6 +102,48 @@ class SphereScene:
     @property
     def stats(self) -> dict[str, int]: ...
 
+class DiscScene:
+    """A point cloud for ray queries as the jobs trace it: one disc per point; ids are point indices."""
+
+    def __init__(
+        self,
+        points: _Points,
+        normals: Optional[_Points] = None,
+        radii: Union[float, npt.ArrayLike, None] = None,
+        *,
+        disc_coverage: float = 0.99,
+        normal_neighbours: int = 16,
+        octree_resolution: float = 0.0,
+        enable_acceleration: bool = True,
+    ) -> None: ...
+    def intersect(
+        self,
+        origins: _Points,
+        directions: _Points,
+        t_min: Union[float, npt.ArrayLike] = 0.0,
+        t_max: Union[float, npt.ArrayLike] = ...,
+        *,
+        threads: int = 0,
+    ) -> Tuple[npt.NDArray[np.float32], npt.NDArray[np.uint32]]: ...
+    def occluded(
+        self,
+        origins: _Points,
+        directions: _Points,
+        t_min: Union[float, npt.ArrayLike] = 0.0,
+        t_max: Union[float, npt.ArrayLike] = ...,
+        *,
+        threads: int = 0,
+    ) -> npt.NDArray[np.bool_]: ...
+    def __len__(self) -> int: ...
+    @property
+    def normals(self) -> npt.NDArray[np.float32]: ...
+    @property
+    def radii(self) -> npt.NDArray[np.float32]: ...
+    @property
+    def bounds(self) -> Tuple[npt.NDArray[np.float32], npt.NDArray[np.float32]]: ...
+    @property
+    def stats(self) -> dict[str, int]: ...
+
 class Cloud:
     """A point cloud read by read_cloud."""
 
