@@ -7,7 +7,7 @@ import type { JobReport } from "../results";
 import { num } from "../results";
 import { occlusionCard, scanCard } from "../ui/occlusion_view";
 import { percent } from "../ui/format";
-import { RAY_DISPLAY } from "../settings_defaults";
+import { RAY_DISPLAY, cloudJobParams } from "../settings_defaults";
 import { sessionMeasure } from "../study_measures";
 import type { AppContext } from "./context";
 
@@ -45,18 +45,19 @@ export class Occlusion {
       await this.regionGrowing(info.path, viewpoints, s.samplesPerUnitArea, names);
       return;
     }
+    // Only what the user set (a radius with auto off, a primitive, a ray count):
+    // the rest takes the server's defaults, as the CLI would.
     const cloud: Record<string, unknown> = {
       path: info.path,
       viewpoints,
-      num_rays_per_vp: s.raysPerViewpoint,
-      point_radius: s.pointRadius,
+      ...cloudJobParams(s, "poc"),
       seed: 0,
     };
     const openings = this.ctx.openings.openingsFile;
     if (openings) cloud.polygon_path = openings;
     const jobs: Promise<void>[] = [this.cloud(cloud, names, colours)];
     if (s.visibilityScan) {
-      jobs.push(this.scan({ path: info.path, viewpoints, point_radius: s.pointRadius }, names));
+      jobs.push(this.scan({ path: info.path, viewpoints, ...cloudJobParams(s, "scan") }, names));
     }
     await Promise.all(jobs);
   }
