@@ -4,7 +4,7 @@
 
 import type { EscapeData, FaceFractionData, Vec3, VisibilityData } from "../decode/types";
 import type { JobReport } from "../results";
-import { num } from "../results";
+import { num, reportPointRadius } from "../results";
 import { occlusionCard, scanCard } from "../ui/occlusion_view";
 import { percent } from "../ui/format";
 import { RAY_DISPLAY, cloudJobParams } from "../settings_defaults";
@@ -177,6 +177,16 @@ export class Occlusion {
   }
 
   private remember(path: string, report: JobReport): void {
+    const radius = reportPointRadius(report);
+    if (radius !== undefined) {
+      this.ctx.history.pointRadius.set(path, radius);
+      // With auto on, the slider shows what the server chose: unticking auto starts there.
+      const gui = this.ctx.gui;
+      if (gui.settings.pointRadiusAuto && path === this.ctx.view.info?.path) {
+        gui.set("pointRadius", radius);
+      }
+      this.ctx.renderViewpoints();
+    }
     const measure = sessionMeasure(report.job);
     const value = num(
       measure === "session_scan" ? report.visible_fraction : report.occlusion_level,

@@ -1,6 +1,7 @@
 // Is a viewpoint where a scanner could stand? Outside the occupied space (the
 // scene's robust box) it sees the room from outside and its figures mean
-// little; within a point radius of a scanned point it sits inside an object.
+// little; within a point radius of a scanned point it sits inside an object
+// (the radius the last job traced with, or the user's; none before either).
 
 import { contains } from "../decode/robust_extent";
 import type { Bounds, Vec3 } from "../decode/types";
@@ -23,13 +24,13 @@ export function viewpointWarning(
   p: Vec3,
   extent: Bounds,
   cloud: { positions: Float32Array; count: number } | null,
-  radius: number,
+  radius: number | null,
 ): string | null {
   if (!contains(extent, p)) return "outside the occupied space (the scan's robust box)";
-  if (cloud) {
+  if (cloud && radius !== null && radius > 0) {
     const d = nearestDistance(cloud.positions, cloud.count, p);
     if (d < radius) {
-      return `inside an object: a scanned point ${d.toFixed(3)} m away (point radius ${radius})`;
+      return `inside an object: a scanned point ${d.toFixed(3)} m away (point radius ${Number(radius.toPrecision(3))})`;
     }
   }
   return null;

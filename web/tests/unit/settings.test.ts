@@ -1,12 +1,15 @@
 // The point model's settings: the server's declarations (hello) give the
 // primitive's default and choices and make the point radius "auto"; the cloud
-// jobs send only what the user set.
+// jobs send only what the user set; reports show the model they traced with.
 
 import { afterEach, beforeEach, describe, expect, test } from "vitest";
 import { parseServerMessage } from "../../src/protocol/messages";
 import type { HelloMessage } from "../../src/protocol/messages";
+import { reportPointRadius } from "../../src/results";
+import { viewpointWarning } from "../../src/scene/viewpoint_checks";
 import { CHOICES, SETTINGS, adoptServerKeys, cloudJobParams } from "../../src/settings_defaults";
 import type { CloudSettings } from "../../src/settings_defaults";
+import { pointModelText } from "../../src/ui/occlusion_view";
 
 // The shape `occlusion serve` publishes (src/app/key.cpp, to_json): per job, a list.
 const POINT_KEYS = [
@@ -148,5 +151,65 @@ describe("cloudJobParams: only what the user set", () => {
     const s = { ...defaults(), raysPerViewpoint: 5000 };
     expect(cloudJobParams(s, "poc")).toEqual({ num_rays_per_vp: 5000 });
     expect(cloudJobParams(s, "scan")).toEqual({});
+  });
+});
+
+const DISC_REPORT = {
+  job: "cloud_occlusion",
+  parameters: { point_radius: 0.0213, point_radius_auto: true },
+  point_model: {
+    primitive: "disc",
+    point_radius: 0.0213,
+    point_radius_auto: true,
+    discs: 31204,
+    spheres: 1815,
+    stray_points: 12,
+    radius_quantile_10: 0.0151,
+    radius_median: 0.0213,
+    radius_quantile_90: 0.0342,
+    open_surface_share: 0.0087,
+  },
+  timings: { total_seconds: 1.2, surfel_seconds: 0.25 },
+};
+
+describe("the report's point model", () => {
+  test("discs: counts and the median radius in a line, the rest in its tooltip", () => {
+    const model = pointModelText(DISC_REPORT);
+    expect(model?.text).toBe("discs 31,204, spheres 1,815, median radius 0.0213 (auto)");
+    expect(model?.detail).toContain("radius 10–90 %: 0.0151–0.0342");
+    expect(model?.detail).toContain("stray points: 12");
+    expect(model?.detail).toContain("open surface: 0.87%");
+    expect(model?.detail).toContain("250 ms");
+  });
+
+  test("spheres of a given radius; reports without a point model", () => {
+    const sphere = {
+      point_model: { primitive: "sphere", point_radius: 0.06, point_radius_auto: false },
+    };
+    expect(pointModelText(sphere)?.text).toBe("spheres of radius 0.06");
+    expect(pointModelText({ job: "mesh_occlusion" })).toBeNull();
+  });
+
+  test("the radius a job traced with: point_model's, else its parameters'", () => {
+    expect(reportPointRadius(DISC_REPORT)).toBe(0.0213);
+    expect(reportPointRadius({ parameters: { point_radius: 0.05 } })).toBe(0.05);
+    expect(reportPointRadius({ parameters: { point_radius: "auto" } })).toBeUndefined();
+    expect(reportPointRadius({ job: "mesh_occlusion" })).toBeUndefined();
+  });
+});
+
+describe("viewpoint warning without a radius yet", () => {
+  const box = {
+    min: [0, 0, 0] as [number, number, number],
+    max: [6, 4, 3] as [number, number, number],
+  };
+  const cloud = { positions: new Float32Array([3, 2, 0.75]), count: 1 };
+
+  test("no radius: only the occupied-space check; a radius: inside an object too", () => {
+    expect(viewpointWarning([3, 2, 0.76], box, cloud, null)).toBeNull();
+    expect(viewpointWarning([7, 2, 1], box, cloud, null)).toContain("outside");
+    expect(viewpointWarning([3, 2, 0.76], box, cloud, 0.0213)).toBe(
+      "inside an object: a scanned point 0.010 m away (point radius 0.0213)",
+    );
   });
 });
