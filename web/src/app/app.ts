@@ -428,7 +428,7 @@ export class App {
   /**
    * The point radius the viewpoint warnings use: the user's, when auto is off;
    * else the one the last -poc or -fscan on this scene traced with (its report);
-   * else none yet (only the occupied-space check).
+   * else none yet (the check measures the cloud's spacing where the viewpoint is).
    */
   private pointRadiusInUse(): number | null {
     const s = this.ctx.gui.settings;

@@ -198,18 +198,29 @@ describe("the report's point model", () => {
   });
 });
 
-describe("viewpoint warning without a radius yet", () => {
+describe("viewpoint warning: the radius in use, or the cloud's spacing there", () => {
   const box = {
     min: [0, 0, 0] as [number, number, number],
     max: [6, 4, 3] as [number, number, number],
   };
-  const cloud = { positions: new Float32Array([3, 2, 0.75]), count: 1 };
+  // A row of points 0.02 apart (one duplicated) on a table top at z 0.75.
+  const row = [0, 0.02, 0.04, 0.04, 0.06].flatMap((dx) => [3 + dx, 2, 0.75]);
+  const cloud = { positions: new Float32Array(row), count: 5 };
 
-  test("no radius: only the occupied-space check; a radius: inside an object too", () => {
-    expect(viewpointWarning([3, 2, 0.76], box, cloud, null)).toBeNull();
-    expect(viewpointWarning([7, 2, 1], box, cloud, null)).toContain("outside");
+  test("a radius from a report (or the user): inside an object within it", () => {
     expect(viewpointWarning([3, 2, 0.76], box, cloud, 0.0213)).toBe(
       "inside an object: a scanned point 0.010 m away (point radius 0.0213)",
     );
+    expect(viewpointWarning([3, 2, 0.78], box, cloud, 0.0213)).toBeNull();
+    expect(viewpointWarning([7, 2, 1], box, cloud, 0.0213)).toContain("outside");
+  });
+
+  test("none yet: closer than the nearest point's own neighbour (duplicates aside)", () => {
+    expect(viewpointWarning([3.04, 2, 0.76], box, cloud, null)).toBe(
+      "inside an object: a scanned point 0.010 m away (the point spacing there is 0.02)",
+    );
+    expect(viewpointWarning([3.04, 2, 0.78], box, cloud, null)).toBeNull();
+    const lone = { positions: new Float32Array([3, 2, 0.75]), count: 1 };
+    expect(viewpointWarning([3, 2, 0.751], box, lone, null)).toBeNull();
   });
 });
