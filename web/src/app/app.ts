@@ -427,7 +427,7 @@ export class App {
 
   /**
    * The point radius the viewpoint warnings use: the user's, when auto is off;
-   * else the one the last -poc or -fscan on this scene traced with (its report);
+   * else the one the last -poc on this scene traced with (its report);
    * else none yet (the check measures the cloud's spacing where the viewpoint is).
    */
   private pointRadiusInUse(): number | null {

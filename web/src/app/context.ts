@@ -19,7 +19,7 @@ import type { SceneView } from "./scene_view";
 export interface SessionHistory {
   /** Latest figure of each session measure computed per scene path. */
   occlusion: Map<string, Partial<Record<MeasureId, number>>>;
-  /** The point radius the latest -poc or -fscan traced with, per scene path (its report's). */
+  /** The point radius the latest -poc traced with, per scene path (its report's). */
   pointRadius: Map<string, number>;
   /** Latest visibility-scan output (the seen points) per scene path. */
   scanOutput: Map<string, string>;

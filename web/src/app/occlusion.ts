@@ -177,7 +177,8 @@ export class Occlusion {
   }
 
   private remember(path: string, report: JobReport): void {
-    const radius = reportPointRadius(report);
+    // -poc's radius: with spheres and auto, -fscan sizes its own differently (README, Point model).
+    const radius = report.job === "cloud_occlusion" ? reportPointRadius(report) : undefined;
     if (radius !== undefined) {
       this.ctx.history.pointRadius.set(path, radius);
       // With auto on, the slider shows what the server chose: unticking auto starts there.

@@ -1,7 +1,7 @@
 // Is a viewpoint where a scanner could stand? Outside the occupied space (the
 // scene's robust box) it sees the room from outside and its figures mean
 // little; within a point radius of a scanned point it sits inside an object.
-// The radius is the one the last job traced with (its report), or the user's;
+// The radius is the one the last -poc traced with (its report), or the user's;
 // before either, the spacing of the cloud at the nearest point (its distance
 // to its own nearest neighbour) stands in: the viewer has no number of its own.
 

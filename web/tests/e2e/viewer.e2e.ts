@@ -228,6 +228,11 @@ describe("viewer (e2e)", () => {
     expect(lastSent("scan").params).toMatchObject({ primitive: "sphere" });
     const model = await expectCliAnswers("sphere");
     expect(model).toMatchObject({ primitive: "sphere", point_radius_auto: true });
+    // The slider (auto on) and the viewpoint warnings take -poc's radius, not the scan's own.
+    const slider = await page.evaluate(
+      () => (window as any).__occlusion.app.ctx.gui.settings.pointRadius as number,
+    );
+    expect(slider).toBeCloseTo(Number(model.point_radius), 12);
     await screenshot(page, "03-sphere-point-model");
     // Back to the server's default (which the next computations then do not send).
     await choice.selectOption({ label: "disc" });
