@@ -118,9 +118,8 @@ export class GuiPanel {
     const compute = this.gui.addFolder("Occlusion settings");
     const declared = (key: GuiKey & SettingName, name: string, decimals: number) => {
       const d = SETTINGS[key];
-      add(compute, key, name, d.min, d.max, d.step)
-        .decimals(decimals)
-        .domElement.setAttribute("title", `${d.key} (${d.unit}): ${d.doc}`);
+      add(compute, key, name, d.min, d.max, d.step).decimals(decimals);
+      this.describe(key);
     };
     declared("raysPerViewpoint", "Rays / viewpoint", 0);
     add(compute, "primitive", "Point model", [""]).hide();
@@ -178,7 +177,17 @@ export class GuiPanel {
       this.set(name as GuiKey & SettingName, d.default);
       if (name === "pointRadius") this.set("pointRadiusAuto", d.auto ?? false);
       if (!d.sceneRange) this.setRange(name as GuiKey, d.min, d.max, d.step);
+      this.describe(name as GuiKey & SettingName);
     }
+  }
+
+  /** The declaration as the slider's tooltip. */
+  private describe(name: GuiKey & SettingName): void {
+    const d = SETTINGS[name];
+    const auto = d.auto ? "; default auto" : "";
+    this.controllers
+      .get(name)
+      ?.domElement.setAttribute("title", `${d.key} (${d.unit}${auto}): ${d.doc}`);
   }
 
   /** A drop-down of the server's choices, set to its default; hidden while it declares none. */

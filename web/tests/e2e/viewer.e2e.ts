@@ -239,6 +239,40 @@ describe("viewer (e2e)", () => {
     await title.click();
   });
 
+  test("Auto radius off: the slider's radius goes to both jobs, and the CLI agrees", async () => {
+    const title = page.locator("#gui .lil-title", { hasText: "Occlusion settings" });
+    await title.click();
+    const controller = (name: string) =>
+      page.locator("#gui .lil-controller", { has: page.locator(".lil-name", { hasText: name }) });
+    const slider = controller("Point radius");
+    expect(await slider.getAttribute("class")).toContain("lil-disabled");
+    await controller("Auto radius").locator("input").uncheck();
+    expect(await slider.getAttribute("class")).not.toContain("lil-disabled");
+    // Where auto left it: the radius the last -poc traced with.
+    const radius = await page.evaluate(
+      () => (window as any).__occlusion.app.ctx.gui.settings.pointRadius as number,
+    );
+    expect(Number(await slider.locator("input").inputValue())).toBeCloseTo(radius, 3);
+    await page.locator("[data-testid=btn-compute]").click();
+    await page
+      .locator("[data-testid=occlusion-card] [data-testid=point-model]", { hasText: "discs" })
+      .waitFor({ timeout: 60_000 });
+    await expect.poll(() => page.locator("[data-testid=job]").count()).toBe(0);
+    const poc = lastSent("cloud_occlusion");
+    expect(poc.params).toMatchObject({ point_radius: radius });
+    expect(poc.params).not.toHaveProperty("primitive");
+    expect(lastSent("scan").params).toMatchObject({ point_radius: radius });
+    const model = await expectCliAnswers("fixed-radius-discs");
+    expect(model).toMatchObject({ primitive: "disc", point_radius_auto: false });
+    expect(
+      await page.locator("[data-testid=occlusion-card] [data-testid=point-model]").textContent(),
+    ).not.toContain("(auto)");
+    // Auto again: nothing sent.
+    await controller("Auto radius").locator("input").check();
+    expect(await slider.getAttribute("class")).toContain("lil-disabled");
+    await title.click();
+  });
+
   test("a viewpoint marker dragged before computing is where the job looks from", async () => {
     const screen = () =>
       page.evaluate(() => {
