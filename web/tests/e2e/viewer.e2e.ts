@@ -221,7 +221,7 @@ describe("viewer (e2e)", () => {
         hasText: "spheres of radius",
       })
       .waitFor({ timeout: 60_000 });
-    await expect.poll(() => page.locator("[data-testid=job]").count()).toBe(0);
+    await expect.poll(() => page.locator("[data-testid=job]").count(), { timeout: 30_000 }).toBe(0);
     expect(sent.length).toBeGreaterThan(before);
     expect(lastSent("cloud_occlusion").params).toMatchObject({ primitive: "sphere" });
     expect(lastSent("cloud_occlusion").params).not.toHaveProperty("point_radius");
@@ -254,19 +254,21 @@ describe("viewer (e2e)", () => {
     );
     expect(Number(await slider.locator("input").inputValue())).toBeCloseTo(radius, 3);
     await page.locator("[data-testid=btn-compute]").click();
-    await page
-      .locator("[data-testid=occlusion-card] [data-testid=point-model]", { hasText: "discs" })
-      .waitFor({ timeout: 60_000 });
-    await expect.poll(() => page.locator("[data-testid=job]").count()).toBe(0);
+    // Both cards anew: discs of the radius sent (no "(auto)").
+    for (const card of ["occlusion-card", "scan-card"]) {
+      await page
+        .locator(`[data-testid=${card}] [data-testid=point-model]`, {
+          hasText: /^point model: discs [\d,]+, spheres [\d,]+, median radius [\d.]+$/,
+        })
+        .waitFor({ timeout: 60_000 });
+    }
+    await expect.poll(() => page.locator("[data-testid=job]").count(), { timeout: 30_000 }).toBe(0);
     const poc = lastSent("cloud_occlusion");
     expect(poc.params).toMatchObject({ point_radius: radius });
     expect(poc.params).not.toHaveProperty("primitive");
     expect(lastSent("scan").params).toMatchObject({ point_radius: radius });
     const model = await expectCliAnswers("fixed-radius-discs");
     expect(model).toMatchObject({ primitive: "disc", point_radius_auto: false });
-    expect(
-      await page.locator("[data-testid=occlusion-card] [data-testid=point-model]").textContent(),
-    ).not.toContain("(auto)");
     // Auto again: nothing sent.
     await controller("Auto radius").locator("input").check();
     expect(await slider.getAttribute("class")).toContain("lil-disabled");
