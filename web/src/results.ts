@@ -86,6 +86,13 @@ export function num(value: unknown): number | undefined {
   return typeof value === "number" && Number.isFinite(value) ? value : undefined;
 }
 
+/** The point radius a cloud job traced with: its point_model's (auto: the median disc radius), else its parameters'. */
+export function reportPointRadius(report: JobReport): number | undefined {
+  const model = report.point_model as Record<string, unknown> | undefined;
+  const radius = num(model?.point_radius) ?? num(report.parameters?.point_radius);
+  return radius !== undefined && radius > 0 ? radius : undefined;
+}
+
 export function isEvaluation(report: JobReport): report is EvaluationReport {
   return Array.isArray(report.classes) && typeof report.confusion === "object";
 }

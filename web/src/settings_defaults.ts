@@ -2,15 +2,26 @@
 // sets, its default, range, step, unit and what it means. The GUI panel,
 // the evaluate dialog and the jobs read these and nothing else.
 //
-// Today the declarations are the viewer's own copy of the server's defaults.
-// When `hello` publishes each command's key declarations (issue 11), call
-// `adoptServerKeys(hello)`: a key the server declares overrides the default,
-// range and doc here (same names), and the viewer follows the server.
+// The numbers here are the viewer's fallbacks until the server's `hello`
+// arrives: `adoptServerKeys(hello)` takes each declared key's default, range,
+// choices and doc (same names), and the viewer follows the server. A choice
+// (CHOICES) has none of its own: its default and choices come only from hello.
+// The cloud jobs send only what the user set (`cloudJobParams`), so whatever
+// the user leaves alone takes the server's default.
 
 export interface SettingDeclaration {
   /** The job parameter (the JSON config key). */
   key: string;
+  /** The slider's starting value (for an `auto` key: only where the slider starts). */
   default: number;
+  /**
+   * The server's default is "auto" (the server chooses the value, e.g. point
+   * radii from the cloud's density): the viewer sends the key only when the
+   * user sets a number.
+   */
+  auto?: boolean;
+  /** The slider's range comes from the scene (scene_view.ts), not from the declaration. */
+  sceneRange?: boolean;
   min: number;
   max: number;
   step: number;
@@ -39,11 +50,13 @@ export const SETTINGS: Record<SettingName, SettingDeclaration> = {
   pointRadius: {
     key: "point_radius",
     default: 0.06,
+    auto: true,
+    sceneRange: true,
     min: 0.005,
     max: 0.3,
     step: 0.001,
     unit: "m",
-    doc: "Radius of the sphere that stands for each point when rays are traced.",
+    doc: "Radius of each point's disc or sphere; auto: the server sizes them from the cloud.",
   },
   samplesPerUnitArea: {
     key: "samples_per_unit_area",
@@ -83,6 +96,22 @@ export const SETTINGS: Record<SettingName, SettingDeclaration> = {
   },
 };
 
+/** A setting with named values (a drop-down); its default and choices come from `hello`. */
+export interface ChoiceDeclaration {
+  key: string;
+  /** The server's default; "" until `hello` declared the key. */
+  default: string;
+  /** The values the server takes; empty until `hello` declared the key. */
+  choices: string[];
+  doc: string;
+}
+
+export type ChoiceName = "primitive";
+
+export const CHOICES: Record<ChoiceName, ChoiceDeclaration> = {
+  primitive: { key: "primitive", default: "", choices: [], doc: "How each point meets rays." },
+};
+
 /** Declarations as `hello` may carry them (issue 11): per command, per key. */
 interface ServerKey {
   default?: unknown;
@@ -90,14 +119,15 @@ interface ServerKey {
   max?: unknown;
   doc?: unknown;
   unit?: unknown;
+  choices?: unknown;
 }
 
 /**
- * Takes defaults, ranges and docs from the server's key declarations where it
- * has them (`hello.keys[command][key]` or `hello.commands[command].keys[key]`);
- * returns the names that changed.
+ * Takes defaults, ranges, choices and docs from the server's key declarations
+ * where it has them (`hello.keys[command][key]` or
+ * `hello.commands[command].keys[key]`); returns the names that changed.
  */
-export function adoptServerKeys(hello: Record<string, unknown>): SettingName[] {
+export function adoptServerKeys(hello: Record<string, unknown>): (SettingName | ChoiceName)[] {
   const found = new Map<string, ServerKey>();
   const collect = (keys: unknown) => {
     if (typeof keys !== "object" || keys === null) return;
@@ -111,19 +141,67 @@ export function adoptServerKeys(hello: Record<string, unknown>): SettingName[] {
   };
   perCommand(hello.keys, false);
   perCommand(hello.commands, true);
-  const changed: SettingName[] = [];
+  const changed: (SettingName | ChoiceName)[] = [];
   for (const [name, d] of Object.entries(SETTINGS) as [SettingName, SettingDeclaration][]) {
     const k = found.get(d.key);
     if (!k) continue;
     const num = (v: unknown) => (typeof v === "number" && Number.isFinite(v) ? v : undefined);
+    // "auto" (any string) as the default: the server chooses; a number: that number.
+    d.auto = typeof k.default === "string" ? true : num(k.default) !== undefined ? false : d.auto;
     d.default = num(k.default) ?? d.default;
-    d.min = num(k.min) ?? d.min;
-    d.max = num(k.max) ?? d.max;
+    if (!d.sceneRange) {
+      d.min = num(k.min) ?? d.min;
+      d.max = num(k.max) ?? d.max;
+    }
     if (typeof k.doc === "string") d.doc = k.doc;
     if (typeof k.unit === "string") d.unit = k.unit;
     changed.push(name);
   }
+  for (const [name, d] of Object.entries(CHOICES) as [ChoiceName, ChoiceDeclaration][]) {
+    const k = found.get(d.key);
+    if (!k || !Array.isArray(k.choices)) continue;
+    const choices = k.choices.filter((c): c is string => typeof c === "string");
+    if (choices.length === 0) continue;
+    d.choices = choices;
+    d.default = typeof k.default === "string" && choices.includes(k.default) ? k.default : "";
+    if (typeof k.doc === "string") d.doc = k.doc;
+    changed.push(name);
+  }
   return changed;
+}
+
+/** What the panel holds for the cloud jobs' point model and rays. */
+export interface CloudSettings {
+  raysPerViewpoint: number;
+  /** Let the server size the points (send no point_radius). */
+  pointRadiusAuto: boolean;
+  pointRadius: number;
+  /** A value of CHOICES.primitive.choices, or "" for the server's default. */
+  primitive: string;
+}
+
+/**
+ * The keys of the point-cloud jobs (-poc, or -fscan with `scan`) that the
+ * user set: a value equal to the server's declared default is left out, the
+ * point radius is sent only when "auto" is off, and the primitive only when
+ * it is one the server offers and not its default. What is left out takes
+ * the server's default, so the viewer and the CLI give the same answer.
+ */
+export function cloudJobParams(s: CloudSettings, job: "poc" | "scan"): Record<string, unknown> {
+  const params: Record<string, unknown> = {};
+  if (job === "poc" && s.raysPerViewpoint !== SETTINGS.raysPerViewpoint.default) {
+    params[SETTINGS.raysPerViewpoint.key] = s.raysPerViewpoint;
+  }
+  const radius = SETTINGS.pointRadius;
+  const numberSet = Number.isFinite(s.pointRadius) && s.pointRadius > 0;
+  if (!s.pointRadiusAuto && numberSet && (radius.auto || s.pointRadius !== radius.default)) {
+    params[radius.key] = s.pointRadius;
+  }
+  const primitive = CHOICES.primitive;
+  if (primitive.choices.includes(s.primitive) && s.primitive !== primitive.default) {
+    params[primitive.key] = s.primitive;
+  }
+  return params;
 }
 
 /** How many escape rays per viewpoint are drawn at most, and above how many in all they start hidden. */

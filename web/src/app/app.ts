@@ -98,6 +98,7 @@ export class App {
     const view = new SceneView(viewer, gui, legend, this.toolbar, markers, rays, polygons);
     const history: SessionHistory = {
       occlusion: new Map(),
+      pointRadius: new Map(),
       scanOutput: new Map(),
       study: [],
       outputs: new Set(),
@@ -161,6 +162,7 @@ export class App {
       files,
       openings,
       history,
+      renderViewpoints: () => this.renderViewpoints(),
       status: {
         scene: (text) => (byId("status-scene").textContent = text),
         timing: (text) => (byId("status-timing").textContent = text),
@@ -208,7 +210,7 @@ export class App {
             position,
             enabled: m.enabled,
             warning: view.info
-              ? viewpointWarning(position, view.info.extent, cloud, gui.settings.pointRadius)
+              ? viewpointWarning(position, view.info.extent, cloud, this.pointRadiusInUse())
               : null,
           };
         }),
@@ -410,6 +412,7 @@ export class App {
         rays.visible = s.showRays;
         break;
       case "pointRadius":
+      case "pointRadiusAuto":
         this.renderViewpoints();
         break;
       case "useShaderMaterial":
@@ -420,6 +423,18 @@ export class App {
         view.apply(key);
     }
     viewer.requestRender();
+  }
+
+  /**
+   * The point radius the viewpoint warnings use: the user's, when auto is off;
+   * else the one the last -poc on this scene traced with (its report);
+   * else none yet (the check measures the cloud's spacing where the viewpoint is).
+   */
+  private pointRadiusInUse(): number | null {
+    const s = this.ctx.gui.settings;
+    if (!s.pointRadiusAuto) return s.pointRadius;
+    const path = this.ctx.view.info?.path;
+    return (path !== undefined ? this.ctx.history.pointRadius.get(path) : undefined) ?? null;
   }
 
   private onKey(event: KeyboardEvent): void {

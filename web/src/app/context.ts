@@ -19,6 +19,8 @@ import type { SceneView } from "./scene_view";
 export interface SessionHistory {
   /** Latest figure of each session measure computed per scene path. */
   occlusion: Map<string, Partial<Record<MeasureId, number>>>;
+  /** The point radius the latest -poc traced with, per scene path (its report's). */
+  pointRadius: Map<string, number>;
   /** Latest visibility-scan output (the seen points) per scene path. */
   scanOutput: Map<string, string>;
   study: StudyPoint[];
@@ -46,4 +48,6 @@ export interface AppContext {
   openings: OpeningPanel;
   status: StatusLine;
   history: SessionHistory;
+  /** Redraws the viewpoint list (its warnings use the point radius in use). */
+  renderViewpoints(): void;
 }

@@ -4,10 +4,10 @@
 
 import type { EscapeData, FaceFractionData, Vec3, VisibilityData } from "../decode/types";
 import type { JobReport } from "../results";
-import { num } from "../results";
+import { num, reportPointRadius } from "../results";
 import { occlusionCard, scanCard } from "../ui/occlusion_view";
 import { percent } from "../ui/format";
-import { RAY_DISPLAY } from "../settings_defaults";
+import { RAY_DISPLAY, cloudJobParams } from "../settings_defaults";
 import { sessionMeasure } from "../study_measures";
 import type { AppContext } from "./context";
 
@@ -45,18 +45,19 @@ export class Occlusion {
       await this.regionGrowing(info.path, viewpoints, s.samplesPerUnitArea, names);
       return;
     }
+    // Only what the user set (a radius with auto off, a primitive, a ray count):
+    // the rest takes the server's defaults, as the CLI would.
     const cloud: Record<string, unknown> = {
       path: info.path,
       viewpoints,
-      num_rays_per_vp: s.raysPerViewpoint,
-      point_radius: s.pointRadius,
+      ...cloudJobParams(s, "poc"),
       seed: 0,
     };
     const openings = this.ctx.openings.openingsFile;
     if (openings) cloud.polygon_path = openings;
     const jobs: Promise<void>[] = [this.cloud(cloud, names, colours)];
     if (s.visibilityScan) {
-      jobs.push(this.scan({ path: info.path, viewpoints, point_radius: s.pointRadius }, names));
+      jobs.push(this.scan({ path: info.path, viewpoints, ...cloudJobParams(s, "scan") }, names));
     }
     await Promise.all(jobs);
   }
@@ -176,6 +177,17 @@ export class Occlusion {
   }
 
   private remember(path: string, report: JobReport): void {
+    // -poc's radius: with spheres and auto, -fscan sizes its own differently (README, Point model).
+    const radius = report.job === "cloud_occlusion" ? reportPointRadius(report) : undefined;
+    if (radius !== undefined) {
+      this.ctx.history.pointRadius.set(path, radius);
+      // With auto on, the slider shows what the server chose: unticking auto starts there.
+      const gui = this.ctx.gui;
+      if (gui.settings.pointRadiusAuto && path === this.ctx.view.info?.path) {
+        gui.set("pointRadius", radius);
+      }
+      this.ctx.renderViewpoints();
+    }
     const measure = sessionMeasure(report.job);
     const value = num(
       measure === "session_scan" ? report.visible_fraction : report.occlusion_level,

@@ -1,13 +1,13 @@
 // The seed's GUI panel (lil-gui, docked in the left sidebar so that it never
 // covers the 3-D view): light intensity, show cloud, shader material, the
 // viewpoint toggles (centre, max, min, all lights) and picker size, plus the
-// view and computation settings this viewer adds. Computation defaults and
-// ranges come from settings_defaults.ts.
+// view and computation settings this viewer adds. Computation defaults,
+// ranges and choices come from settings_defaults.ts (the server's `hello`).
 
 import GUI from "lil-gui";
 import type { Controller } from "lil-gui";
-import { SETTINGS } from "../settings_defaults";
-import type { SettingName } from "../settings_defaults";
+import { CHOICES, SETTINGS } from "../settings_defaults";
+import type { ChoiceName, SettingName } from "../settings_defaults";
 
 export interface GuiSettings {
   lightIntensity: number;
@@ -25,7 +25,11 @@ export interface GuiSettings {
   showRays: boolean;
   pickerSize: number;
   raysPerViewpoint: number;
+  /** The server sizes the points (no point_radius sent). */
+  pointRadiusAuto: boolean;
   pointRadius: number;
+  /** disc or sphere (CHOICES.primitive, from hello); "" before hello. */
+  primitive: string;
   samplesPerUnitArea: number;
   minClusterSize: number;
   maxClusterSize: number;
@@ -51,7 +55,9 @@ export const DEFAULT_SETTINGS: GuiSettings = {
   showRays: true,
   pickerSize: 0.05,
   raysPerViewpoint: SETTINGS.raysPerViewpoint.default,
+  pointRadiusAuto: SETTINGS.pointRadius.auto ?? false,
   pointRadius: SETTINGS.pointRadius.default,
+  primitive: CHOICES.primitive.default,
   samplesPerUnitArea: SETTINGS.samplesPerUnitArea.default,
   minClusterSize: SETTINGS.minClusterSize.default,
   maxClusterSize: SETTINGS.maxClusterSize.default,
@@ -79,7 +85,10 @@ export class GuiPanel {
         ...args,
       )
         .name(name)
-        .onChange(() => this.onChange(key, this.settings));
+        .onChange(() => {
+          if (key === "pointRadiusAuto") this.enable("pointRadius", !this.settings.pointRadiusAuto);
+          this.onChange(key, this.settings);
+        });
       this.controllers.set(key, controller);
       return controller;
     };
@@ -109,12 +118,18 @@ export class GuiPanel {
     const compute = this.gui.addFolder("Occlusion settings");
     const declared = (key: GuiKey & SettingName, name: string, decimals: number) => {
       const d = SETTINGS[key];
-      add(compute, key, name, d.min, d.max, d.step)
-        .decimals(decimals)
-        .domElement.setAttribute("title", `${d.key} (${d.unit}): ${d.doc}`);
+      add(compute, key, name, d.min, d.max, d.step).decimals(decimals);
+      this.describe(key);
     };
     declared("raysPerViewpoint", "Rays / viewpoint", 0);
+    add(compute, "primitive", "Point model", [""]).hide();
+    add(compute, "pointRadiusAuto", "Auto radius").domElement.setAttribute(
+      "title",
+      "point_radius auto: the server sizes each point from the cloud (discs from their " +
+        "neighbours, spheres from the point spacing); untick to set one radius for all",
+    );
     declared("pointRadius", "Point radius", 3);
+    this.enable("pointRadius", !this.settings.pointRadiusAuto);
     declared("samplesPerUnitArea", "Samples / m² (mesh)", 0);
     declared("minClusterSize", "Min cluster size", 0);
     declared("maxClusterSize", "Max cluster size", 0);
@@ -130,6 +145,7 @@ export class GuiPanel {
   set<K extends GuiKey>(key: K, value: GuiSettings[K]): void {
     this.settings[key] = value;
     this.controllers.get(key)?.updateDisplay();
+    if (key === "pointRadiusAuto") this.enable("pointRadius", !this.settings.pointRadiusAuto);
   }
 
   setColourOptions(options: Record<string, string>, current: string): void {
@@ -149,14 +165,41 @@ export class GuiPanel {
     c?.updateDisplay();
   }
 
-  /** Takes the declared defaults and ranges again (after the server published its own). */
-  refreshDeclared(names: SettingName[]): void {
+  /** Takes the declared defaults, ranges and choices again (after the server published its own). */
+  refreshDeclared(names: (SettingName | ChoiceName)[]): void {
     for (const name of names) {
-      const d = SETTINGS[name];
+      if (name in CHOICES) {
+        this.setChoices(name as ChoiceName);
+        continue;
+      }
+      const d = SETTINGS[name as SettingName];
       if (!(name in this.settings)) continue;
       this.set(name as GuiKey & SettingName, d.default);
-      this.setRange(name as GuiKey, d.min, d.max, d.step);
+      if (name === "pointRadius") this.set("pointRadiusAuto", d.auto ?? false);
+      if (!d.sceneRange) this.setRange(name as GuiKey, d.min, d.max, d.step);
+      this.describe(name as GuiKey & SettingName);
     }
+  }
+
+  /** The declaration as the slider's tooltip. */
+  private describe(name: GuiKey & SettingName): void {
+    const d = SETTINGS[name];
+    const auto = d.auto ? "; default auto" : "";
+    this.controllers
+      .get(name)
+      ?.domElement.setAttribute("title", `${d.key} (${d.unit}${auto}): ${d.doc}`);
+  }
+
+  /** A drop-down of the server's choices, set to its default; hidden while it declares none. */
+  private setChoices(name: ChoiceName): void {
+    const d = CHOICES[name];
+    const controller = this.controllers.get(name);
+    if (!controller) return;
+    this.settings[name] = d.default;
+    controller.options(d.choices.length ? d.choices : [""]);
+    controller.domElement.setAttribute("title", `${d.key} (default ${d.default}): ${d.doc}`);
+    controller.updateDisplay();
+    controller.show(d.choices.length > 0);
   }
 
   show(key: GuiKey, on: boolean): void {

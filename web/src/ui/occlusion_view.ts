@@ -8,6 +8,54 @@ import { fixed, integer, ms, percent, point } from "./format";
 import { card, facts, headline, table, warnings } from "./results_panel";
 import type { Heading } from "./results_panel";
 
+/** Three significant digits, as a plain number (0.0213, 1.25). */
+function short(x: number | undefined): string {
+  return x === undefined ? "—" : String(Number(x.toPrecision(3)));
+}
+
+/**
+ * The point model a cloud job traced with (its report's `point_model`), in a
+ * line: "discs 31,204, spheres 1,815, median radius 0.0213 (auto)", or
+ * "spheres of radius 0.06"; null for reports without one. `detail` is the
+ * rest of it, for a tooltip.
+ */
+export function pointModelText(report: JobReport): { text: string; detail: string } | null {
+  const model = report.point_model;
+  if (typeof model !== "object" || model === null) return null;
+  const m = model as Record<string, unknown>;
+  const auto = m.point_radius_auto === true ? " (auto)" : "";
+  const discs = num(m.discs);
+  const text =
+    m.primitive === "sphere" || discs === undefined
+      ? `spheres of radius ${short(num(m.point_radius))}${auto}`
+      : `discs ${integer(discs)}, spheres ${integer(num(m.spheres))}, ` +
+        `median radius ${short(num(m.radius_median) ?? num(m.point_radius))}${auto}`;
+  const detail: string[] = [];
+  const q10 = num(m.radius_quantile_10);
+  const q90 = num(m.radius_quantile_90);
+  if (q10 !== undefined && q90 !== undefined) {
+    detail.push(`radius 10–90 %: ${short(q10)}–${short(q90)}`);
+  }
+  if (num(m.stray_points) !== undefined)
+    detail.push(`stray points: ${integer(num(m.stray_points))}`);
+  const open = num(m.open_surface_share);
+  if (open !== undefined) detail.push(`open surface: ${percent(open, 2)}`);
+  const surfels = num(report.timings?.surfel_seconds);
+  if (surfels !== undefined) detail.push(`discs estimated in ${ms(surfels * 1000)}`);
+  return { text, detail: detail.join("; ") };
+}
+
+function pointModelLine(report: JobReport): HTMLElement | null {
+  const model = pointModelText(report);
+  if (!model) return null;
+  return h("div", {
+    class: "mt-1 text-xs text-slate-400",
+    text: `point model: ${model.text}`,
+    title: model.detail,
+    testid: "point-model",
+  });
+}
+
 function seconds(report: JobReport): string {
   const total = num(report.timings?.total_seconds);
   return total === undefined ? "—" : ms(total * 1000);
@@ -75,6 +123,7 @@ export function occlusionCard(report: JobReport, names: string[] = []): HTMLElem
     [
       headline("Occlusion level", percent(level, 2), "occlusion-level", level),
       facts(pairs),
+      isMesh ? null : pointModelLine(report),
       typeof polygonPath === "string" && polygonPath
         ? h("div", {
             class: "mt-1 break-all text-xs text-teal-300",
@@ -131,6 +180,7 @@ export function scanCard(report: JobReport, names: string[] = []): HTMLElement {
         ["points", integer(num(report.points))],
         ["time", seconds(report)],
       ]),
+      pointModelLine(report),
       h("div", { class: "mt-3" }, [
         table(
           ["viewpoint", "position", "sees"],

@@ -3,7 +3,7 @@
 // its "listening on" line), and Debian's Chromium driven by playwright-core.
 // Every wait is bounded; stop() always ends the server (SIGTERM, then SIGKILL).
 
-import { spawn } from "node:child_process";
+import { execFile, spawn } from "node:child_process";
 import type { ChildProcess } from "node:child_process";
 import {
   chmodSync,
@@ -200,17 +200,98 @@ export async function launchBrowser(): Promise<Browser> {
   return browser;
 }
 
-/** A page that fails the test on uncaught errors; console errors are collected. */
+/** A request the page sent over its WebSocket (docs/protocol.md). */
+export interface SentRequest {
+  id: number;
+  command: string;
+  params: Record<string, unknown>;
+}
+
+/**
+ * A page that fails the test on uncaught errors; console errors are collected,
+ * and so is every request the page sends (`sent`, oldest first).
+ */
 export async function openPage(browser: Browser, url: string) {
   const page = await browser.newPage({ viewport: { width: 1400, height: 860 } });
   page.setDefaultTimeout(30_000);
   const problems: string[] = [];
+  const sent: SentRequest[] = [];
+  page.on("websocket", (socket) =>
+    socket.on("framesent", ({ payload }) => {
+      if (typeof payload !== "string") return;
+      try {
+        const message = JSON.parse(payload) as Partial<SentRequest>;
+        if (typeof message.command === "string") {
+          sent.push({
+            id: Number(message.id),
+            command: message.command,
+            params: message.params ?? {},
+          });
+        }
+      } catch {
+        // not JSON: the server answers that, not this test
+      }
+    }),
+  );
   page.on("pageerror", (error) => problems.push(`pageerror: ${error.message}`));
   page.on("console", (message) => {
     if (message.type() === "error") problems.push(`console: ${message.text()}`);
   });
   await page.goto(url, { waitUntil: "load" });
-  return { page, problems };
+  return { page, problems, sent };
+}
+
+/** The CLI flag of each job command (occlusion --help). */
+const CLI_FLAG: Record<string, string> = {
+  cloud_occlusion: "-poc",
+  scan: "-fscan",
+  mesh_occlusion: "-moc",
+  region_growing_occlusion: "-rgoc",
+};
+
+/**
+ * The command line that runs a request's job with the CLI: the same keys as
+ * options (`--num-rays-per-vp 5000`, `--viewpoint X,Y,Z` per viewpoint), the
+ * paths inside `dataDir` as the server resolves them, outputs in `outDir`.
+ */
+export function cliArgs(
+  request: Pick<SentRequest, "command" | "params">,
+  dataDir: string,
+  outDir: string,
+): string[] {
+  const flag = CLI_FLAG[request.command];
+  if (!flag) throw new Error(`e2e: no CLI command for '${request.command}'`);
+  const { path, ...params } = request.params;
+  const args = [flag, join(dataDir, String(path))];
+  for (const [key, value] of Object.entries(params)) {
+    const option = `--${key.replace(/_/g, "-")}`;
+    if (key === "viewpoints") {
+      for (const v of value as number[][]) args.push("--viewpoint", v.join(","));
+    } else if (key.endsWith("_path")) args.push(option, join(dataDir, String(value)));
+    else if (Array.isArray(value)) args.push(option, value.join(","));
+    else args.push(option, String(value));
+  }
+  return [...args, "--out", outDir, "--json"];
+}
+
+/** Runs the CLI (the server's binary) and returns the report it prints with --json. */
+export function runCli(args: string[], timeoutMs = 120_000): Promise<Record<string, unknown>> {
+  return new Promise((done, fail) => {
+    execFile(
+      SERVER_BIN,
+      args,
+      { timeout: timeoutMs, maxBuffer: 64 << 20 },
+      (error, stdout, stderr) => {
+        if (error) {
+          fail(
+            new Error(`e2e: ${SERVER_BIN} ${args.join(" ")} failed: ${error.message}\n${stderr}`),
+          );
+          return;
+        }
+        done(JSON.parse(stdout) as Record<string, unknown>);
+      },
+    );
+  });
 }
 
 export async function screenshot(page: Page, name: string): Promise<string> {

@@ -1,22 +1,27 @@
 // The viewer against the real server, in real headless Chromium: load the
 // sample room, see its points, compute occlusion, pick and save an opening
-// (used by the next computation), evaluate, and read a server error.
+// (used by the next computation), evaluate, and read a server error. -poc and
+// -fscan with the defaults, and with primitive sphere, give the CLI's answers
+// on the same input (figures in web/test-artifacts/cli-vs-viewer.json).
 // Screenshots of every step go to web/test-artifacts/.
 
-import { existsSync, readFileSync } from "node:fs";
-import { join } from "node:path";
+import { existsSync, mkdirSync, readFileSync, writeFileSync } from "node:fs";
+import { dirname, join } from "node:path";
 import type { Browser, Page } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, test } from "vitest";
 import {
+  ARTIFACTS,
   canvasForeground,
+  cliArgs,
   launchBrowser,
   openPage,
   prepareData,
   removeData,
+  runCli,
   screenshot,
   startServer,
 } from "./harness";
-import type { Server } from "./harness";
+import type { SentRequest, Server } from "./harness";
 
 const ROOM = "s3dis_synthetic/Area_1/office_1";
 
@@ -24,6 +29,47 @@ let server: Server;
 let browser: Browser;
 let page: Page;
 let problems: string[];
+let sent: SentRequest[];
+/** The viewer's and the CLI's figures on the same requests, for test-artifacts/cli-vs-viewer.json. */
+const comparisons: Record<string, unknown>[] = [];
+
+/** The newest request the page sent for `command`. */
+function lastSent(command: string): SentRequest {
+  const request = [...sent].reverse().find((r) => r.command === command);
+  if (!request) throw new Error(`the viewer sent no '${command}' request`);
+  return request;
+}
+
+/**
+ * Runs the viewer's last -poc and -fscan requests with the CLI and expects its
+ * answers: occlusion_level and visible_fraction as the cards show them (the
+ * server's figures, to 1e-12), and the point model the CLI traced with.
+ */
+async function expectCliAnswers(label: string): Promise<Record<string, unknown>> {
+  const out = join(dirname(server.dataDir), `cli-${label}`);
+  const poc = lastSent("cloud_occlusion");
+  const scan = lastSent("scan");
+  const cliPoc = await runCli(cliArgs(poc, server.dataDir, out));
+  const cliScan = await runCli(cliArgs(scan, server.dataDir, out));
+  const card = (testid: string, figure: string) =>
+    page.locator(`[data-testid=${testid}] [data-testid=${figure}]`).getAttribute("data-value");
+  const viewer = {
+    occlusion_level: Number(await card("occlusion-card", "occlusion-level")),
+    visible_fraction: Number(await card("scan-card", "visible-fraction")),
+  };
+  const cli = {
+    occlusion_level: cliPoc.occlusion_level as number,
+    visible_fraction: cliScan.visible_fraction as number,
+  };
+  const model = cliPoc.point_model as Record<string, unknown>;
+  comparisons.push({ label, poc: poc.params, scan: scan.params, viewer, cli, point_model: model });
+  console.log(`cli vs viewer (${label}): ${JSON.stringify({ viewer, cli })}`);
+  expect(typeof cli.occlusion_level).toBe("number");
+  expect(typeof cli.visible_fraction).toBe("number");
+  expect(Math.abs(viewer.occlusion_level - cli.occlusion_level)).toBeLessThanOrEqual(1e-12);
+  expect(Math.abs(viewer.visible_fraction - cli.visible_fraction)).toBeLessThanOrEqual(1e-12);
+  return model;
+}
 
 async function occlusionLevel(): Promise<number> {
   const figure = page.locator("[data-testid=occlusion-card] [data-testid=occlusion-level]");
@@ -35,10 +81,17 @@ describe("viewer (e2e)", () => {
   beforeAll(async () => {
     server = await startServer(prepareData());
     browser = await launchBrowser();
-    ({ page, problems } = await openPage(browser, `${server.url}/`));
+    ({ page, problems, sent } = await openPage(browser, `${server.url}/`));
   });
 
   afterAll(async () => {
+    if (comparisons.length) {
+      mkdirSync(ARTIFACTS, { recursive: true });
+      writeFileSync(
+        join(ARTIFACTS, "cli-vs-viewer.json"),
+        JSON.stringify(comparisons, null, 2) + "\n",
+      );
+    }
     await browser?.close().catch(() => undefined);
     await server?.stop();
     if (server) removeData(server.dataDir);
@@ -111,6 +164,115 @@ describe("viewer (e2e)", () => {
     ).toBe(3);
     await expect.poll(() => page.locator("[data-testid=job]").count()).toBe(0);
     await screenshot(page, "03-occlusion");
+  });
+
+  test("with the defaults, -poc and -fscan send no point model and give the CLI's answers", async () => {
+    // Nothing the user left alone is sent: the server's defaults apply (discs, point_radius auto).
+    const poc = lastSent("cloud_occlusion");
+    const scan = lastSent("scan");
+    expect(poc.params.path).toBe(ROOM);
+    for (const key of ["point_radius", "primitive", "num_rays_per_vp"]) {
+      expect(poc.params).not.toHaveProperty(key);
+    }
+    for (const key of ["point_radius", "primitive"]) expect(scan.params).not.toHaveProperty(key);
+    const model = await expectCliAnswers("defaults");
+    expect(model).toMatchObject({ primitive: "disc", point_radius_auto: true });
+    // The cards say which model traced the rays.
+    const line = page.locator("[data-testid=occlusion-card] [data-testid=point-model]");
+    expect(await line.textContent()).toMatch(
+      /^point model: discs [\d,]+, spheres [\d,]+, median radius [\d.]+ \(auto\)$/,
+    );
+    expect(await line.textContent()).toContain(
+      `discs ${Number(model.discs).toLocaleString("en-US")},`,
+    );
+    await page.locator("[data-testid=scan-card] [data-testid=point-model]").waitFor();
+    // With auto on, the (disabled) slider holds the radius the server chose.
+    const gui = await page.evaluate(() => {
+      const app = (window as any).__occlusion.app;
+      return {
+        auto: app.ctx.gui.settings.pointRadiusAuto,
+        radius: app.ctx.gui.settings.pointRadius,
+      };
+    });
+    expect(gui.auto).toBe(true);
+    expect(gui.radius).toBeCloseTo(Number(model.point_radius), 12);
+  });
+
+  test("primitive sphere, chosen among the server's choices, reaches both jobs and the CLI agrees", async () => {
+    const title = page.locator("#gui .lil-title", { hasText: "Occlusion settings" });
+    await title.click(); // the folder starts closed
+    const choice = page
+      .locator("#gui .lil-controller", { hasText: "Point model" })
+      .locator("select");
+    await choice.waitFor();
+    // Choices and default from hello (the server's declaration of `primitive`).
+    expect(await choice.locator("option").allTextContents()).toEqual(["disc", "sphere"]);
+    expect(await choice.inputValue()).toBe("disc");
+    await choice.selectOption({ label: "sphere" });
+    const before = sent.length;
+    await page.locator("[data-testid=btn-compute]").click();
+    await page
+      .locator("[data-testid=occlusion-card] [data-testid=point-model]", {
+        hasText: "spheres of radius",
+      })
+      .waitFor({ timeout: 60_000 });
+    await page
+      .locator("[data-testid=scan-card] [data-testid=point-model]", {
+        hasText: "spheres of radius",
+      })
+      .waitFor({ timeout: 60_000 });
+    await expect.poll(() => page.locator("[data-testid=job]").count(), { timeout: 30_000 }).toBe(0);
+    expect(sent.length).toBeGreaterThan(before);
+    expect(lastSent("cloud_occlusion").params).toMatchObject({ primitive: "sphere" });
+    expect(lastSent("cloud_occlusion").params).not.toHaveProperty("point_radius");
+    expect(lastSent("scan").params).toMatchObject({ primitive: "sphere" });
+    const model = await expectCliAnswers("sphere");
+    expect(model).toMatchObject({ primitive: "sphere", point_radius_auto: true });
+    // The slider (auto on) and the viewpoint warnings take -poc's radius, not the scan's own.
+    const slider = await page.evaluate(
+      () => (window as any).__occlusion.app.ctx.gui.settings.pointRadius as number,
+    );
+    expect(slider).toBeCloseTo(Number(model.point_radius), 12);
+    await screenshot(page, "03-sphere-point-model");
+    // Back to the server's default (which the next computations then do not send).
+    await choice.selectOption({ label: "disc" });
+    await title.click();
+  });
+
+  test("Auto radius off: the slider's radius goes to both jobs, and the CLI agrees", async () => {
+    const title = page.locator("#gui .lil-title", { hasText: "Occlusion settings" });
+    await title.click();
+    const controller = (name: string) =>
+      page.locator("#gui .lil-controller", { has: page.locator(".lil-name", { hasText: name }) });
+    const slider = controller("Point radius");
+    expect(await slider.getAttribute("class")).toContain("lil-disabled");
+    await controller("Auto radius").locator("input").uncheck();
+    expect(await slider.getAttribute("class")).not.toContain("lil-disabled");
+    // Where auto left it: the radius the last -poc traced with.
+    const radius = await page.evaluate(
+      () => (window as any).__occlusion.app.ctx.gui.settings.pointRadius as number,
+    );
+    expect(Number(await slider.locator("input").inputValue())).toBeCloseTo(radius, 3);
+    await page.locator("[data-testid=btn-compute]").click();
+    // Both cards anew: discs of the radius sent (no "(auto)").
+    for (const card of ["occlusion-card", "scan-card"]) {
+      await page
+        .locator(`[data-testid=${card}] [data-testid=point-model]`, {
+          hasText: /^point model: discs [\d,]+, spheres [\d,]+, median radius [\d.]+$/,
+        })
+        .waitFor({ timeout: 60_000 });
+    }
+    await expect.poll(() => page.locator("[data-testid=job]").count(), { timeout: 30_000 }).toBe(0);
+    const poc = lastSent("cloud_occlusion");
+    expect(poc.params).toMatchObject({ point_radius: radius });
+    expect(poc.params).not.toHaveProperty("primitive");
+    expect(lastSent("scan").params).toMatchObject({ point_radius: radius });
+    const model = await expectCliAnswers("fixed-radius-discs");
+    expect(model).toMatchObject({ primitive: "disc", point_radius_auto: false });
+    // Auto again: nothing sent.
+    await controller("Auto radius").locator("input").check();
+    expect(await slider.getAttribute("class")).toContain("lil-disabled");
+    await title.click();
   });
 
   test("a viewpoint marker dragged before computing is where the job looks from", async () => {
