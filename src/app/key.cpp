@@ -1,5 +1,6 @@
 #include "occlusion/app/key.hpp"
 
+#include <charconv>
 #include <cmath>
 #include <sstream>
 
@@ -214,6 +215,13 @@ std::string default_text(const KeyInfo& info) {
           (text.empty() ? "" : ",") + (item.isString() ? item.asString() : item.toStyledString());
     }
     return text;
+  }
+  // A fraction as the shortest text that reads back as the same double (JSON's
+  // 17 digits print 0.99 as 0.98999999999999999); whole numbers keep JSON's
+  // "100.0", which says the key takes a number, not only integers.
+  if (d.isDouble() && std::isfinite(d.asDouble()) && d.asDouble() != std::floor(d.asDouble())) {
+    char digits[32];
+    return std::string(digits, std::to_chars(digits, digits + sizeof digits, d.asDouble()).ptr);
   }
   std::string text = d.toStyledString();
   while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) text.pop_back();
