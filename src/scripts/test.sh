@@ -6,34 +6,102 @@
 # (src/scripts/web.sh installs and builds it): prettier, tsc, the Vitest unit
 # tests, and the end-to-end tests in headless Chromium (Debian's chromium,
 # installed here if missing) against a real `occlusion serve`.
+#
+# Each stage's wall time is printed in a table at the end, whether the run
+# passed or failed, so a slow stage shows in CI's log (docs/ci.md has the
+# figures). No stage has a time budget: a slow machine only takes longer.
+# The few stages that could hang (tests, fuzzing, the browser) run under a
+# hang guard several times their cold duration, which says so when it fires.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
-bash "$root/src/scripts/setup.sh"
-bash "$root/src/scripts/check_format.sh"
-bash "$root/src/scripts/build.sh"
 build="${OCCLUSION_BUILD_DIR:-$root/build}"
-ctest --test-dir "$build" -j "$(nproc)" --output-on-failure
-# The whole C++ suite again with ASan + UBSan, in its own build-asan/
-# (src/scripts/sanitize.sh, docs/fuzzing.md: about 10 min on 2 cores with a
-# warm ccache); the limit keeps a stuck build or test from holding CI.
-timeout --kill-after=20 "${SANITIZE_SECONDS:-1500}" bash "$root/src/scripts/sanitize.sh"
-# Every reader under libFuzzer with ASan + UBSan, 15 s each (docs/fuzzing.md);
-# the outer limit keeps a stuck build or target from holding CI.
-FUZZ_SECONDS="${FUZZ_SECONDS:-15}" timeout --kill-after=20 1500 bash "$root/src/scripts/fuzz.sh"
 
+stage_names=()
+stage_seconds=()
+stage_now=""
+stage_start=0
+run_start=$SECONDS
+# Ends the running stage: its name and duration join the table.
+stage_end() {
+  if [[ -n "$stage_now" ]]; then
+    stage_names+=("$stage_now")
+    stage_seconds+=($((SECONDS - stage_start)))
+    stage_now=""
+  fi
+}
+stage() {
+  stage_end
+  stage_now="$1"
+  stage_start=$SECONDS
+  echo "test: == $1"
+}
+# On any exit: the table, with the stage that failed marked as such.
+report() {
+  local status=$? failed="$stage_now" i
+  stage_end
+  echo
+  echo "test: stage durations (wall clock)"
+  for i in "${!stage_names[@]}"; do
+    local mark=""
+    [[ "${stage_names[$i]}" == "$failed" ]] && mark="  <- FAILED (exit $status)"
+    printf 'test:   %-34s %5d s  %s%s\n' "${stage_names[$i]}" "${stage_seconds[$i]}" \
+      "$(printf '%d:%02d' $((stage_seconds[i] / 60)) $((stage_seconds[i] % 60)))" "$mark"
+  done
+  local total=$((SECONDS - run_start))
+  printf 'test:   %-34s %5d s  %d:%02d\n' "total" "$total" $((total / 60)) $((total % 60))
+  if ((status == 0)); then echo "test: all stages passed"; else echo "test: FAILED (exit $status)"; fi
+}
+trap report EXIT
+
+# guard SECONDS COMMAND...: runs COMMAND, stopping it only if it hangs. The
+# limit is far above the stage's normal time (several times its cold figure on
+# a loaded 2-core machine), so a slow machine never trips it; when it does
+# fire it says so, rather than failing like a test. GUARD_SCALE multiplies
+# every limit (GUARD_SCALE=0 turns them off).
+guard() {
+  local seconds=$(($1 * ${GUARD_SCALE:-1})) status=0
+  shift
+  if ((seconds == 0)); then "$@"; return; fi
+  timeout --kill-after=30 "$seconds" "$@" || status=$?
+  if ((status == 124 || status == 137)); then
+    echo "test: HANG GUARD: stage '$stage_now' still running after ${seconds} s" \
+      "(far above its normal time, see docs/ci.md); stopped as hung" >&2
+  fi
+  return "$status"
+}
+
+stage "setup (apt-get)"
+bash "$root/src/scripts/setup.sh"
+stage "C++ format"
+bash "$root/src/scripts/check_format.sh"
+stage "release build"
+bash "$root/src/scripts/build.sh"
+stage "release ctest"
+guard 3600 ctest --test-dir "$build" -j "$(nproc)" --output-on-failure
+# The whole C++ suite again with ASan + UBSan, in its own build-asan/
+# (src/scripts/sanitize.sh, docs/fuzzing.md). Each test has its own ctest
+# TIMEOUT; the guard is for a stuck build.
+stage "ASan+UBSan build and ctest"
+guard 10800 bash "$root/src/scripts/sanitize.sh"
+# Every reader under libFuzzer with ASan + UBSan, 15 s each (docs/fuzzing.md).
+stage "fuzz"
+FUZZ_SECONDS="${FUZZ_SECONDS:-15}" guard 10800 bash "$root/src/scripts/fuzz.sh"
+
+stage "pytest"
 # Debian's interpreter, the one the module is built for (not a pyenv shim).
 if [[ ! -f "$build/python/occlusion/__init__.py" ]]; then
   echo "test: the Python module was not built (is pybind11-dev installed?)" >&2
   exit 1
 fi
 pytest_status=0
-PYTHONPATH="$build/python" /usr/bin/python3 -m pytest -q -p no:cacheprovider "$root/tests/python" ||
-  pytest_status=$?
+PYTHONPATH="$build/python" guard 1800 /usr/bin/python3 -m pytest -q -p no:cacheprovider \
+  "$root/tests/python" || pytest_status=$?
 if ((pytest_status == 5)); then
   echo "test: pytest collected no tests in tests/python" >&2
 fi
 ((pytest_status == 0)) || exit "$pytest_status"
 
+stage "viewer install and build"
 bash "$root/src/scripts/web.sh"
 chromium="${CHROMIUM_PATH:-/usr/bin/chromium}"
 if [[ ! -x "$chromium" ]]; then
@@ -48,9 +116,12 @@ if [[ ! -x "$chromium" ]]; then
   "${sudo[@]}" apt-get install -y -qq chromium >/dev/null
 fi
 cd "$root/web"
+stage "viewer format, types, unit tests"
 npm run --silent format:check
 npm run --silent typecheck
-npm test --silent
-# Every wait inside is bounded; this is the outer limit (the tests stop their server).
+guard 1800 npm test --silent
+# Every wait inside is bounded (the tests stop their server); the guard is the outer one.
+stage "viewer end-to-end (chromium)"
 OCCLUSION_BIN="$build/occlusion" CHROMIUM_PATH="$chromium" \
-  timeout --kill-after=20 600 npm run --silent e2e
+  guard 2400 npm run --silent e2e
+stage_end
