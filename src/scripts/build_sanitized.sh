@@ -17,7 +17,12 @@ targets=("$@")
 # What sanitize.sh and fuzz.sh run, and nothing else (not the sample generators).
 ((${#targets[@]} > 0)) || targets=(test_suites fuzz_targets)
 launcher=()
-if command -v ccache >/dev/null; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi
+if command -v ccache >/dev/null; then
+  launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+  # Without these ccache compiles every file that uses a precompiled header
+  # (CMake's OCCLUSION_PCH) afresh (ccache's manual, "Precompiled headers").
+  export CCACHE_SLOPPINESS="${CCACHE_SLOPPINESS:-pch_defines,time_macros,include_file_mtime,include_file_ctime}"
+fi
 # Ninja for a new build directory (setup.sh installs it); an existing one keeps its generator.
 export CMAKE_GENERATOR="${CMAKE_GENERATOR:-Ninja}"
 cmake -S "$root" -B "$build" -DCMAKE_CXX_COMPILER=clang++-14 -DCMAKE_BUILD_TYPE=Debug \
