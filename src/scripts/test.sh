@@ -19,14 +19,31 @@ build="${OCCLUSION_BUILD_DIR:-$root/build}"
 
 stage_names=()
 stage_seconds=()
+stage_cpu=()
 stage_now=""
 stage_start=0
 run_start=$SECONDS
-# Ends the running stage: its name and duration join the table.
+# CPU seconds (user + system) of all finished child processes so far, from
+# bash's `times`: with other work on the same cores the wall clock says little
+# about a stage's cost, its CPU time does.
+times_file="$(mktemp)"
+children_cpu_now=0
+# Sets children_cpu_now; `times` must run in this shell (in $(...) it would
+# see only that subshell's children), so it goes through a file.
+children_cpu() {
+  times >"$times_file"
+  # Its last line, "0m12.345s 0m1.234s" -> 13
+  children_cpu_now="$(tail -n 1 "$times_file" | awk '{ split($1, u, /[ms]/); split($2, s, /[ms]/)
+    printf "%d\n", u[1] * 60 + u[2] + s[1] * 60 + s[2] }')"
+}
+stage_cpu_start=0
+# Ends the running stage: its name, duration and CPU time join the table.
 stage_end() {
   if [[ -n "$stage_now" ]]; then
+    children_cpu
     stage_names+=("$stage_now")
     stage_seconds+=($((SECONDS - stage_start)))
+    stage_cpu+=($((children_cpu_now - stage_cpu_start)))
     stage_now=""
   fi
 }
@@ -34,6 +51,8 @@ stage() {
   stage_end
   stage_now="$1"
   stage_start=$SECONDS
+  children_cpu
+  stage_cpu_start=$children_cpu_now
   echo "test: == $1"
 }
 # On any exit: the table, with the stage that failed marked as such.
@@ -41,15 +60,19 @@ report() {
   local status=$? failed="$stage_now" i
   stage_end
   echo
-  echo "test: stage durations (wall clock)"
+  echo "test: stage durations (wall clock; CPU = user + system of its processes)"
   for i in "${!stage_names[@]}"; do
     local mark=""
     [[ "${stage_names[$i]}" == "$failed" ]] && mark="  <- FAILED (exit $status)"
-    printf 'test:   %-34s %5d s  %s%s\n' "${stage_names[$i]}" "${stage_seconds[$i]}" \
+    printf 'test:   %-38s %5d s wall  %5d s CPU  %s%s\n' "${stage_names[$i]}" \
+      "${stage_seconds[$i]}" "${stage_cpu[$i]}" \
       "$(printf '%d:%02d' $((stage_seconds[i] / 60)) $((stage_seconds[i] % 60)))" "$mark"
   done
   local total=$((SECONDS - run_start))
-  printf 'test:   %-34s %5d s  %d:%02d\n' "total" "$total" $((total / 60)) $((total % 60))
+  children_cpu
+  rm -f "$times_file"
+  printf 'test:   %-38s %5d s wall  %5d s CPU  %d:%02d\n' "total" "$total" "$children_cpu_now" \
+    $((total / 60)) $((total % 60))
   if ((status == 0)); then echo "test: all stages passed"; else echo "test: FAILED (exit $status)"; fi
 }
 trap report EXIT
