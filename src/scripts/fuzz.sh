@@ -1,16 +1,17 @@
 #!/usr/bin/env bash
-# Builds the libFuzzer targets (clang-14, ASan + UBSan, into build-fuzz/) and
-# runs each for FUZZ_SECONDS (default 15) from its seed corpus in
-# tests/fuzz/corpus/<name>. New inputs go to build-fuzz/corpus/<name>, never
+# Runs each libFuzzer target (clang-14, ASan + UBSan: the build in build-clang/
+# that the sanitized test suite shares; src/scripts/build_sanitized.sh builds
+# it, or finds it built) for FUZZ_SECONDS (default 15) from its seed corpus in
+# tests/fuzz/corpus/<name>. New inputs go to build-clang/corpus/<name>, never
 # into the committed seeds. A finding stops that target, leaves its input in
-# build-fuzz/findings/ and makes this script fail. docs/fuzzing.md explains.
+# build-clang/findings/ and makes this script fail. docs/fuzzing.md explains.
 #
 #   bash src/scripts/fuzz.sh                       # the brief run of test.sh
 #   FUZZ_SECONDS=1800 bash src/scripts/fuzz.sh     # a long run, 30 min per target
 #   bash src/scripts/fuzz.sh fuzz_pcd_compressed   # only the named targets
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
-build="${OCCLUSION_FUZZ_BUILD_DIR:-$root/build-fuzz}"
+build="${OCCLUSION_SANITIZED_BUILD_DIR:-$root/build-clang}"
 seconds="${FUZZ_SECONDS:-15}"
 targets=("$@")
 if ((${#targets[@]} == 0)); then
@@ -18,9 +19,7 @@ if ((${#targets[@]} == 0)); then
            fuzz_s3dis fuzz_labels fuzz_openings fuzz_config fuzz_server_message fuzz_binary_frame)
 fi
 
-cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++-14 \
-  -DOCCLUSION_FUZZ=ON -DOCCLUSION_BUILD_TESTS=OFF >/dev/null
-cmake --build "$build" -j "$(nproc)" --target "${targets[@]}"
+bash "$root/src/scripts/build_sanitized.sh" "${targets[@]}"
 
 mkdir -p "$build/findings" "$build/logs"
 # Leaks are findings too; an input that takes over 10 s or 2 GB is a hang or a bomb.

@@ -1,30 +1,25 @@
 #!/usr/bin/env bash
-# Builds the tool and every C++ test suite with AddressSanitizer and
-# UndefinedBehaviorSanitizer (gcc -O1 -g1: line tables are enough for reports and build faster, into build-asan/, through ccache when
-# it is installed) and runs the whole ctest suite on them, in parallel; any
-# sanitizer report or leak fails its test. Tests labelled <layer>_no_sanitizer
-# are left out (tests/CMakeLists.txt, docs/fuzzing.md say which and why). test.sh runs
-# it under a time limit.
+# Runs the whole ctest suite on the tool and every C++ test suite built with
+# AddressSanitizer and UndefinedBehaviorSanitizer: clang-14's build in
+# build-clang/, which the fuzz targets share (src/scripts/build_sanitized.sh
+# builds it, or finds it built), in parallel; any sanitizer report or leak
+# fails its test. Tests labelled <layer>_no_sanitizer are left out
+# (tests/CMakeLists.txt, docs/fuzzing.md say which and why).
 #
 #   bash src/scripts/sanitize.sh            # the whole suite (what test.sh runs)
 #   bash src/scripts/sanitize.sh core io    # some layers' suites only
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
-build="${OCCLUSION_ASAN_BUILD_DIR:-$root/build-asan}"
+build="${OCCLUSION_SANITIZED_BUILD_DIR:-$root/build-clang}"
 jobs="${OCCLUSION_JOBS:-$(nproc)}"
-launcher=()
-if command -v ccache >/dev/null; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi
-cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g1" \
-  -DOCCLUSION_SANITIZE=ON -DOCCLUSION_WERROR=ON -DOCCLUSION_BUILD_TESTS=ON \
-  -DOCCLUSION_BUILD_PYTHON=OFF "${launcher[@]}" >/dev/null
 select=(-LE no_sanitizer)
 if (($# == 0)); then
   # Everything: the study's script tests and the CLI and server suites run the tool.
-  cmake --build "$build" -j "$jobs"
+  bash "$root/src/scripts/build_sanitized.sh" test_suites
 else
   targets=()
   for layer in "$@"; do targets+=("test_$layer"); done
-  cmake --build "$build" -j "$jobs" --target "${targets[@]}"
+  bash "$root/src/scripts/build_sanitized.sh" "${targets[@]}"
   select+=(-L "^($(IFS='|'; echo "$*"))\$")
 fi
 export ASAN_OPTIONS="${ASAN_OPTIONS:-abort_on_error=1:detect_leaks=1}"

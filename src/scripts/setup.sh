@@ -6,7 +6,7 @@
 set -euo pipefail
 
 packages=(
-  build-essential cmake pkg-config git clang-format
+  build-essential cmake ninja-build pkg-config git clang-format
   libeigen3-dev libjsoncpp-dev libgtest-dev
   libpcl-dev libflann-dev
   libwebsocketpp-dev libboost-dev libboost-system-dev
