@@ -47,7 +47,8 @@ TEST(FileBytes, FifoIsRefusedWithoutBlocking) {
     for (const auto& [reader, read] : readers()) {
       if (reader == "read_cloud" && name.substr(name.size() - 4) == ".obj") continue;
       SCOPED_TRACE(reader + " " + name);
-      testing::expect_input_error([&] { read(path); }, name, 0,
+      // A structured binding is captured by name (C++17 cannot capture it).
+      testing::expect_input_error([&, &read = read] { read(path); }, name, 0,
                                   "is a FIFO (named pipe), not a regular file");
     }
   }
@@ -62,7 +63,7 @@ TEST(FileBytes, DeviceIsRefusedNotReadForever) {
     for (const auto& [reader, read] : readers()) {
       if (reader == "read_cloud" && name.substr(name.size() - 4) == ".obj") continue;
       SCOPED_TRACE(reader + " " + name);
-      testing::expect_input_error([&] { read(path); }, name, 0,
+      testing::expect_input_error([&, &read = read] { read(path); }, name, 0,
                                   "is a character device, not a regular file");
     }
   }
