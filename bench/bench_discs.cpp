@@ -1,0 +1,274 @@
+// bench_discs [--points N] [--triangles N] [--rays-per-vp N] [--threads T] [--seed S]
+//             [--repeat N]
+//
+// Times the point-cloud hot paths traced as surfels (the default point model:
+// -poc closest hits, -fscan shadow rays) on a sampled furnished room against
+// Intel Embree's oriented disc points, on the same discs and rays. See README.md.
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "bench_args.hpp"
+#include "bench_common.hpp"
+#include "cloud_replay.hpp"
+#include "embree_points.hpp"
+#include "occlusion/analysis/cloud_occlusion.hpp"
+#include "occlusion/analysis/scan.hpp"
+#include "occlusion/analysis/surfel_estimation.hpp"
+#include "occlusion/analysis/viewpoints.hpp"
+#include "occlusion/core/surfel_octree.hpp"
+#include "room_generator.hpp"
+#include "trace_compare.hpp"
+
+namespace {
+
+using namespace occlusion;
+using namespace occlusion::bench;
+
+constexpr std::size_t kGridViewpoints = 9;
+constexpr int kPattern = 7;
+// Hit parameters of both tracers agree if within this, relative.
+constexpr double kTTolerance = 1e-4;
+// A crossing this close to a disc's rim (relative to its radius), or a ray this
+// close to its plane (|d.n| / |d|), is one float rounding may put either side.
+constexpr double kRimTolerance = 1e-4;
+constexpr double kGrazing = 1e-3;
+constexpr const char* kUsage =
+    "usage: bench_discs [--points N] [--triangles N] [--rays-per-vp N] [--threads T] [--seed S]\n"
+    "                   [--repeat N]\n";
+
+using Options = PointBenchOptions;
+
+Options parse(int argc, char** argv) {
+  Options o;
+  o.repeat = 5;  // traces of ours and Embree's, alternating
+  for (int i = 1; i < argc; ++i) {
+    if (!parse_point_bench_flag(o, argc, argv, i)) {
+      throw UsageError("unknown argument '" + std::string(argv[i]) + "'");
+    }
+  }
+  check_point_bench_options(o);
+  return o;
+}
+
+// Why two tracers can disagree on a ray: where it meets the surfel one of
+// them hit, recomputed in double.
+struct Diagnosis {
+  std::size_t spheres = 0;  // the surfel is a sphere
+  std::size_t rim = 0;      // crossing within kRimTolerance of the rim
+  std::size_t grazing = 0;  // ray within kGrazing of the disc's plane
+  std::size_t target = 0;   // the shadow ray's own target (Embree cannot skip it)
+  std::size_t other = 0;
+  double worst_rim = 0.0;  // of the others: largest | |crossing - centre| / r - 1 |
+  void add(const Ray& ray, const Surfel& surfel, bool is_target) {
+    if (is_target) {
+      ++target;
+      return;
+    }
+    if (!surfel.oriented()) {
+      ++spheres;
+      return;
+    }
+    const Eigen::Vector3d o = ray.origin.cast<double>(), d = ray.direction.cast<double>();
+    const Eigen::Vector3d c = surfel.center.cast<double>(), n = surfel.normal.cast<double>();
+    const double facing = d.dot(n);
+    if (std::abs(facing) <= kGrazing * d.norm()) {
+      ++grazing;
+      return;
+    }
+    const double t = (c - o).dot(n) / facing;
+    const double off_rim = std::abs((o + t * d - c).norm() / surfel.radius - 1.0);
+    if (off_rim <= kRimTolerance) {
+      ++rim;
+    } else {
+      ++other;
+      worst_rim = std::max(worst_rim, off_rim);
+    }
+  }
+  void print(const char* label) const {
+    std::printf(
+        "%-8s disagreements: %zu at a disc's rim (within %g r), %zu grazing (|d.n| <= %g |d|), "
+        "%zu on spheres, %zu on the target itself, %zu other",
+        label, rim, kRimTolerance, grazing, kGrazing, spheres, target, other);
+    if (other > 0) std::printf(" (farthest from a rim: %.2g r)", worst_rim);
+    std::printf("\n");
+  }
+};
+
+// "what ours MIN / MEDIAN s (R M rays/s), embree ...; ours/embree throughput
+// MIN-RATIO (min), MEDIAN-RATIO (median)"; no rays/s when rays is 0.
+void print_ratio(const char* what, const Samples& ours, const Samples& theirs, std::size_t rays) {
+  const auto side = [rays](const char* who, const Samples& samples) {
+    std::printf("%s %.4f / %.4f s", who, samples.min(), samples.median());
+    if (rays > 0) std::printf(" (%.2f M rays/s)", static_cast<double>(rays) / samples.min() / 1e6);
+  };
+  std::printf("%-6s ", what);
+  side("ours", ours);
+  side(", embree", theirs);
+  std::printf(" [min / median of %zu]; ours/embree %.2f (min), %.2f (median)\n",
+              ours.seconds.size(), theirs.min() / ours.min(), theirs.median() / ours.median());
+}
+
+int run(const Options& o) {
+  auto start = std::chrono::steady_clock::now();
+  PointCloud cloud;
+  std::size_t triangles = 0;
+  {
+    const GeneratedRoom room = generate_room(o.triangles, o.seed);
+    cloud = sample_point_cloud(room.mesh, o.points, o.seed);
+    triangles = room.mesh.face_count();
+  }
+  const double generate_seconds = seconds_since(start);
+  Eigen::Vector3f lo_f, hi_f;
+  cloud.bounds(lo_f, hi_f);
+  const Eigen::Vector3d lo = lo_f.cast<double>(), hi = hi_f.cast<double>();
+
+  std::fprintf(stderr, "bench_discs: estimate_surfels ...\n");
+  SurfelOptions surfel_options;  // the defaults, as the CLI's
+  surfel_options.threads = o.threads;
+  const SurfelEstimate estimate = estimate_surfels(cloud, surfel_options);
+  const LargeVector<Surfel>& surfels = estimate.surfels;
+
+  CloudOcclusionOptions poc;  // the analysis' defaults, as the CLI passes them
+  poc.num_rays_per_vp = o.rays_per_vp;
+  poc.seed = o.seed;
+  poc.threads = o.threads;
+  poc.surfels = &estimate;
+  const std::vector<Eigen::Vector3d> grid = grid_viewpoints(kGridViewpoints, lo, hi);
+  const std::vector<Ray> poc_rays = make_poc_rays(grid, poc);
+  ScanOptions scan;
+  scan.threads = o.threads;
+  scan.surfels = &estimate;
+  const std::vector<Eigen::Vector3d> pattern = pattern_viewpoints(kPattern, lo, hi);
+  const ScanRays scan_rays = make_scan_surfel_rays(estimate, pattern, scan);
+  const std::size_t np = poc_rays.size(), ns = scan_rays.rays.size();
+
+  std::fprintf(stderr, "bench_discs: builds ...\n");
+  std::optional<SurfelOctree> tree;
+  EmbreeDiscs embree(o.threads);
+  const auto [our_builds, embree_builds] = alternating_samples(
+      o.repeat,
+      [&] {
+        tree.reset();
+        const auto t0 = std::chrono::steady_clock::now();
+        tree.emplace(LargeVector<Surfel>(surfels), surfel_octree_options());
+        return seconds_since(t0);
+      },
+      [&] { return embree.build(surfels); });
+
+  std::fprintf(stderr, "bench_discs: poc rays ...\n");
+  std::vector<std::optional<Hit>> our_hits(np), their_hits(np);
+  const auto [our_poc, embree_poc] = alternating_samples(
+      o.repeat,
+      [&] {
+        const auto t0 = std::chrono::steady_clock::now();
+        tree->intersect_batch(poc_rays.data(), np, nullptr, our_hits.data(), o.threads);
+        return seconds_since(t0);
+      },
+      [&] {
+        const auto t0 = std::chrono::steady_clock::now();
+        embree.intersect(poc_rays.data(), np, their_hits.data(), o.threads);
+        return seconds_since(t0);
+      });
+  std::fprintf(stderr, "bench_discs: fscan rays ...\n");
+  std::vector<std::uint8_t> our_blocked(ns), their_blocked(ns);
+  const auto [our_scan, embree_scan] = alternating_samples(
+      o.repeat,
+      [&] {
+        const auto t0 = std::chrono::steady_clock::now();
+        tree->occluded_batch(scan_rays.rays.data(), ns, scan_rays.ignore.data(), our_blocked.data(),
+                             o.threads);
+        return seconds_since(t0);
+      },
+      [&] {
+        const auto t0 = std::chrono::steady_clock::now();
+        embree.occluded(scan_rays.rays.data(), ns, their_blocked.data(), o.threads);
+        return seconds_since(t0);
+      });
+
+  std::fprintf(stderr, "bench_discs: compute_cloud_occlusion and scan_cloud in process ...\n");
+  const CloudOcclusionResult poc_library = compute_cloud_occlusion(cloud, grid, {}, poc);
+  const ScanResult scan_library = scan_cloud(cloud, pattern, scan);
+
+  const HitAgreement poc_agreement =
+      compare_hits(our_hits.data(), their_hits.data(), np, kTTolerance);
+  const FlagAgreement scan_agreement = compare_flags(our_blocked.data(), their_blocked.data(), ns);
+  Diagnosis poc_why, scan_why;
+  for (const std::size_t i : poc_agreement.disagreeing) {
+    const Hit& hit = our_hits[i] ? *our_hits[i] : *their_hits[i];
+    poc_why.add(poc_rays[i], surfels[hit.primitive_id], false);
+  }
+  for (const std::size_t i : scan_agreement.disagreeing) {
+    // The blocker, as the closest hit of the tracer that found one.
+    const Ray& ray = scan_rays.rays[i];
+    std::optional<Hit> hit;
+    if (our_blocked[i]) {
+      hit = tree->intersect(ray, scan_rays.ignore[i]);
+    } else {
+      embree.intersect(&ray, 1, &hit, 1);
+    }
+    if (hit)
+      scan_why.add(ray, surfels[hit->primitive_id], hit->primitive_id == scan_rays.ignore[i]);
+  }
+  std::vector<std::uint8_t> ours_hit(np), theirs_hit(np);
+  for (std::size_t i = 0; i < np; ++i) {
+    ours_hit[i] = our_hits[i].has_value();
+    theirs_hit[i] = their_hits[i].has_value();
+  }
+
+  const SurfelStats& st = estimate.stats;
+  std::printf("bench_discs: furnished room sampled as surfels, seed %llu, %u thread(s), %d runs\n",
+              static_cast<unsigned long long>(o.seed), o.threads, o.repeat);
+  std::printf(
+      "cloud    %s points of %s triangles (generated in %.3f s); estimate_surfels %.3f s: %s "
+      "discs, %s spheres, radius median %.4g (10%% %.4g, 90%% %.4g)\n",
+      grouped(cloud.size()).c_str(), grouped(triangles).c_str(), generate_seconds, st.seconds,
+      grouped(st.oriented).c_str(), grouped(st.unoriented).c_str(), st.radius_median,
+      st.radius_quantile_10, st.radius_quantile_90);
+  std::printf("poc      %zu grid viewpoints x %s rays = %s rays, closest hit\n", grid.size(),
+              grouped(o.rays_per_vp).c_str(), grouped(np).c_str());
+  std::printf("fscan    pattern %d: %zu viewpoints x %s points = %s shadow rays, any hit\n\n",
+              kPattern, pattern.size(), grouped(cloud.size()).c_str(), grouped(ns).c_str());
+  const std::string embree_name = "embree " + EmbreeTracer::version() + " DISC+SPHERE";
+  print_trace_header();
+  print_trace_row("poc   ours   SurfelOctree intersect_batch", our_builds.min(), our_poc.min(), np,
+                  percent(poc_agreement.ours, np));
+  print_trace_row("poc   " + embree_name + " rtcIntersect1", embree_builds.min(), embree_poc.min(),
+                  np, percent(poc_agreement.theirs, np));
+  print_trace_row("fscan ours   SurfelOctree occluded_batch", our_builds.min(), our_scan.min(), ns,
+                  percent(scan_agreement.ours, ns));
+  print_trace_row("fscan " + embree_name + " rtcOccluded1", embree_builds.min(), embree_scan.min(),
+                  ns, percent(scan_agreement.theirs, ns));
+
+  const OctreeStats& s = tree->stats();
+  std::printf("\noctree   %s inner nodes, %s leaves, depth %d, largest leaf %zu, %.1f MiB\n",
+              grouped(s.inner_nodes).c_str(), grouped(s.leaves).c_str(), s.depth, s.largest_leaf,
+              mib(s.memory_bytes));
+  print_hit_agreement("poc", poc_agreement, kTTolerance);
+  poc_why.print("poc");
+  print_flag_agreement("fscan", scan_agreement);
+  scan_why.print("fscan");
+  std::printf(
+      "level    poc occlusion level: ours %.6f, embree %.6f, compute_cloud_occlusion %.6f\n",
+      poc_level_from_hits(ours_hit.data(), np), poc_level_from_hits(theirs_hit.data(), np),
+      poc_library.occlusion_level);
+  std::printf("         fscan visible fraction: ours %.6f, embree %.6f, scan_cloud %.6f\n\n",
+              visible_fraction_from_flags(scan_rays, our_blocked.data()),
+              visible_fraction_from_flags(scan_rays, their_blocked.data()),
+              scan_library.visible_fraction);
+  print_ratio("build", our_builds, embree_builds, 0);
+  print_ratio("poc", our_poc, embree_poc, np);
+  print_ratio("fscan", our_scan, embree_scan, ns);
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return occlusion::bench::run_tool("bench_discs", kUsage, argc, argv, parse, run);
+}
