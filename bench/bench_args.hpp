@@ -45,6 +45,7 @@ struct PointBenchOptions {
   std::size_t points = 1'000'000;
   std::size_t triangles = 100'000;
   std::size_t rays_per_vp = 30'000;
+  std::size_t num_vp = 9;  // -poc's grid viewpoints
   unsigned threads = 2;
   std::uint64_t seed = 1;
   int repeat = 3;
@@ -60,6 +61,8 @@ inline bool parse_point_bench_flag(PointBenchOptions& o, int argc, char** argv, 
     o.triangles = parse_unsigned(arg, flag_value(argc, argv, i));
   } else if (arg == "--rays-per-vp") {
     o.rays_per_vp = parse_unsigned(arg, flag_value(argc, argv, i));
+  } else if (arg == "--num-vp") {
+    o.num_vp = parse_unsigned(arg, flag_value(argc, argv, i));
   } else if (arg == "--threads") {
     o.threads = parse_threads(arg, flag_value(argc, argv, i));
   } else if (arg == "--seed") {
@@ -75,8 +78,10 @@ inline bool parse_point_bench_flag(PointBenchOptions& o, int argc, char** argv, 
 
 // UsageError for counts of 0 or more than 100M points.
 inline void check_point_bench_options(const PointBenchOptions& o) {
-  if (o.points == 0 || o.triangles == 0 || o.rays_per_vp == 0 || o.threads == 0 || o.repeat == 0) {
-    throw UsageError("--points, --triangles, --rays-per-vp, --threads and --repeat must be > 0");
+  if (o.points == 0 || o.triangles == 0 || o.rays_per_vp == 0 || o.num_vp == 0 || o.threads == 0 ||
+      o.repeat == 0) {
+    throw UsageError(
+        "--points, --triangles, --rays-per-vp, --num-vp, --threads and --repeat must be > 0");
   }
   if (o.points > 100'000'000) throw UsageError("--points must be at most 100000000");
 }

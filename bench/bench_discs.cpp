@@ -1,5 +1,5 @@
-// bench_discs [--points N] [--triangles N] [--rays-per-vp N] [--threads T] [--seed S]
-//             [--repeat N]
+// bench_discs [--points N] [--triangles N] [--rays-per-vp N] [--num-vp N] [--threads T]
+//             [--seed S] [--repeat N]
 //
 // Times the point-cloud hot paths traced as surfels (the default point model:
 // -poc closest hits, -fscan shadow rays) on a sampled furnished room against
@@ -30,17 +30,17 @@ namespace {
 using namespace occlusion;
 using namespace occlusion::bench;
 
-constexpr std::size_t kGridViewpoints = 9;
 constexpr int kPattern = 7;
 // Hit parameters of both tracers agree if within this, relative.
 constexpr double kTTolerance = 1e-4;
-// A crossing this close to a disc's rim (relative to its radius), or a ray this
+// A crossing this close to a disc's rim (relative to its radius) or to an end of the
+// ray's interval (relative to t), or a ray this
 // close to its plane (|d.n| / |d|), is one float rounding may put either side.
 constexpr double kRimTolerance = 1e-4;
 constexpr double kGrazing = 1e-3;
 constexpr const char* kUsage =
-    "usage: bench_discs [--points N] [--triangles N] [--rays-per-vp N] [--threads T] [--seed S]\n"
-    "                   [--repeat N]\n";
+    "usage: bench_discs [--points N] [--triangles N] [--rays-per-vp N] [--num-vp N] [--threads T]\n"
+    "                   [--seed S] [--repeat N]\n";
 
 using Options = PointBenchOptions;
 
@@ -62,6 +62,7 @@ struct Diagnosis {
   std::size_t spheres = 0;  // the surfel is a sphere
   std::size_t rim = 0;      // crossing within kRimTolerance of the rim
   std::size_t grazing = 0;  // ray within kGrazing of the disc's plane
+  std::size_t end = 0;      // crossing within kRimTolerance (relative) of t_min or t_max
   std::size_t target = 0;   // the shadow ray's own target (Embree cannot skip it)
   std::size_t other = 0;
   double worst_rim = 0.0;  // of the others: largest | |crossing - centre| / r - 1 |
@@ -82,6 +83,12 @@ struct Diagnosis {
       return;
     }
     const double t = (c - o).dot(n) / facing;
+    const double t_min = ray.t_min, t_max = ray.t_max;
+    if (std::abs(t - t_min) <= kRimTolerance * std::abs(t) ||
+        std::abs(t - t_max) <= kRimTolerance * std::abs(t)) {
+      ++end;
+      return;
+    }
     const double off_rim = std::abs((o + t * d - c).norm() / surfel.radius - 1.0);
     if (off_rim <= kRimTolerance) {
       ++rim;
@@ -93,8 +100,10 @@ struct Diagnosis {
   void print(const char* label) const {
     std::printf(
         "%-8s disagreements: %zu at a disc's rim (within %g r), %zu grazing (|d.n| <= %g |d|), "
-        "%zu on spheres, %zu on the target itself, %zu other",
-        label, rim, kRimTolerance, grazing, kGrazing, spheres, target, other);
+        "%zu at an end of the ray's interval (within %g t), %zu on spheres, %zu on the target "
+        "itself, "
+        "%zu other",
+        label, rim, kRimTolerance, grazing, kGrazing, end, kRimTolerance, spheres, target, other);
     if (other > 0) std::printf(" (farthest from a rim: %.2g r)", worst_rim);
     std::printf("\n");
   }
@@ -139,7 +148,7 @@ int run(const Options& o) {
   poc.seed = o.seed;
   poc.threads = o.threads;
   poc.surfels = &estimate;
-  const std::vector<Eigen::Vector3d> grid = grid_viewpoints(kGridViewpoints, lo, hi);
+  const std::vector<Eigen::Vector3d> grid = grid_viewpoints(o.num_vp, lo, hi);
   const std::vector<Ray> poc_rays = make_poc_rays(grid, poc);
   ScanOptions scan;
   scan.threads = o.threads;

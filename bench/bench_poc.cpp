@@ -1,5 +1,5 @@
-// bench_poc [--points N] [--triangles N] [--rays-per-vp N] [--threads T] [--seed S] [--cli PATH]
-//           [--repeat N]
+// bench_poc [--points N] [--triangles N] [--rays-per-vp N] [--num-vp N] [--threads T]
+//           [--seed S] [--cli PATH] [--repeat N]
 //
 // Times the point-cloud hot paths (-poc closest hits, -fscan shadow rays) on a
 // sampled furnished room against Intel Embree's sphere points, and the
@@ -36,14 +36,13 @@ using namespace occlusion;
 using namespace occlusion::bench;
 namespace fs = std::filesystem;
 
-constexpr std::size_t kGridViewpoints = 9;
 constexpr int kPattern = 7;
 constexpr double kPointRadius = 0.01;
 // Hit parameters of both tracers agree if within this, relative.
 constexpr double kTTolerance = 1e-4;
 constexpr const char* kUsage =
-    "usage: bench_poc [--points N] [--triangles N] [--rays-per-vp N] [--threads T] [--seed S]\n"
-    "                 [--cli PATH] [--repeat N]\n";
+    "usage: bench_poc [--points N] [--triangles N] [--rays-per-vp N] [--num-vp N] [--threads T]\n"
+    "                 [--seed S] [--cli PATH] [--repeat N]\n";
 
 struct Options : PointBenchOptions {
   std::string cli;  // empty: <build dir>/occlusion
@@ -107,12 +106,11 @@ int run(const Options& o) {
   const std::string radius = exact(kPointRadius);
   std::fprintf(stderr, "bench_poc: running %s -poc on %s and embree_job -poc, in turn ...\n",
                cli.c_str(), cloud_path.c_str());
-  const auto [poc_cli, poc_embree] =
-      run_job_and_embree_job(bench_dir, cli, "poc", cloud_path,
-                             {"--num-vp", std::to_string(kGridViewpoints), "--num-rays-per-vp",
-                              std::to_string(o.rays_per_vp), "--point-radius", radius, "--threads",
-                              threads, "--seed", std::to_string(o.seed)},
-                             o.repeat);
+  const auto [poc_cli, poc_embree] = run_job_and_embree_job(
+      bench_dir, cli, "poc", cloud_path,
+      {"--num-vp", std::to_string(o.num_vp), "--num-rays-per-vp", std::to_string(o.rays_per_vp),
+       "--point-radius", radius, "--threads", threads, "--seed", std::to_string(o.seed)},
+      o.repeat);
   std::fprintf(stderr, "bench_poc: running %s -fscan and embree_job -fscan, in turn ...\n",
                cli.c_str());
   const auto [scan_cli, scan_embree] = run_job_and_embree_job(
@@ -132,7 +130,7 @@ int run(const Options& o) {
   poc.num_rays_per_vp = o.rays_per_vp;
   poc.seed = o.seed;
   poc.threads = o.threads;
-  const std::vector<Eigen::Vector3d> grid = grid_viewpoints(kGridViewpoints, lo, hi);
+  const std::vector<Eigen::Vector3d> grid = grid_viewpoints(o.num_vp, lo, hi);
   const std::vector<Ray> poc_rays = make_poc_rays(grid, poc);
   ScanOptions scan;
   scan.point_radius = kPointRadius;
