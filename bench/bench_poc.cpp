@@ -38,6 +38,8 @@ namespace fs = std::filesystem;
 
 constexpr int kPattern = 7;
 constexpr double kPointRadius = 0.01;
+// The CLI traces discs unless told otherwise; embree_job's points are spheres.
+const std::vector<std::string> kSpheres = {"--primitive", "sphere"};
 // Hit parameters of both tracers agree if within this, relative.
 constexpr double kTTolerance = 1e-4;
 constexpr const char* kUsage =
@@ -110,13 +112,13 @@ int run(const Options& o) {
       bench_dir, cli, "poc", cloud_path,
       {"--num-vp", std::to_string(o.num_vp), "--num-rays-per-vp", std::to_string(o.rays_per_vp),
        "--point-radius", radius, "--threads", threads, "--seed", std::to_string(o.seed)},
-      o.repeat);
+      o.repeat, kSpheres);
   std::fprintf(stderr, "bench_poc: running %s -fscan and embree_job -fscan, in turn ...\n",
                cli.c_str());
   const auto [scan_cli, scan_embree] = run_job_and_embree_job(
       bench_dir, cli, "fscan", cloud_path,
       {"--pattern", std::to_string(kPattern), "--point-radius", radius, "--threads", threads},
-      o.repeat);
+      o.repeat, kSpheres);
 
   auto start = std::chrono::steady_clock::now();
   const PointCloud cloud = read_cloud(cloud_path);
