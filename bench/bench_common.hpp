@@ -139,18 +139,15 @@ inline CliRun run_cli(const std::vector<std::string>& argv, const std::string& c
 // --out DIR/embree SETTINGS` (embree_job.cpp: the same job on Embree), in turn
 // as above; DIR is bench_JOB_out and the captures bench_JOB_cli and
 // bench_JOB_embree_job, all in bench_dir, where embree_job is too.
-// cli_settings go to the CLI only.
 inline std::pair<CliRun, CliRun> run_job_and_embree_job(
     const std::filesystem::path& bench_dir, const std::string& cli, const std::string& job,
-    const std::string& input, const std::vector<std::string>& settings, int repetitions,
-    const std::vector<std::string>& cli_settings = {}) {
+    const std::string& input, const std::vector<std::string>& settings, int repetitions) {
   const std::string name = "bench_" + job;
   const std::string out = (bench_dir / (name + "_out")).string();
   std::vector<std::string> ours = {cli, "-" + job, input, "--json", "--out", out + "/ours"};
   std::vector<std::string> theirs = {(bench_dir / "embree_job").string(), "-" + job, input, "--out",
                                      out + "/embree"};
   ours.insert(ours.end(), settings.begin(), settings.end());
-  ours.insert(ours.end(), cli_settings.begin(), cli_settings.end());
   theirs.insert(theirs.end(), settings.begin(), settings.end());
   return run_clis_alternating(ours, (bench_dir / (name + "_cli")).string(), theirs,
                               (bench_dir / (name + "_embree_job")).string(), repetitions);
@@ -161,7 +158,7 @@ inline std::pair<CliRun, CliRun> run_job_and_embree_job(
 inline std::string stage_timings(const Json::Value& json) {
   std::string text;
   const Json::Value& timings = json["timings"];
-  for (const char* stage : {"load", "sampling", "build", "trace", "write", "total"}) {
+  for (const char* stage : {"load", "sampling", "surfel", "build", "trace", "write", "total"}) {
     const std::string key = std::string(stage) + "_seconds";
     if (!timings.isMember(key)) continue;
     char figure[48];

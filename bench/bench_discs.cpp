@@ -1,16 +1,23 @@
 // bench_discs [--points N] [--triangles N] [--rays-per-vp N] [--num-vp N] [--threads T]
-//             [--seed S] [--repeat N]
+//             [--seed S] [--repeat N] [--leaf N] [--whole N]
 //
 // Times the point-cloud hot paths traced as surfels (the default point model:
 // -poc closest hits, -fscan shadow rays) on a sampled furnished room against
-// Intel Embree's oriented disc points, on the same discs and rays. See README.md.
+// Intel Embree's oriented disc points, on the same discs and rays, and the
+// `occlusion -poc` and `-fscan` commands against embree_job's, whole process.
+// See README.md.
+
+#include <malloc.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <optional>
 #include <string>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include "bench_args.hpp"
@@ -22,6 +29,7 @@
 #include "occlusion/analysis/surfel_estimation.hpp"
 #include "occlusion/analysis/viewpoints.hpp"
 #include "occlusion/core/surfel_octree.hpp"
+#include "occlusion/io/cloud_io.hpp"
 #include "room_generator.hpp"
 #include "trace_compare.hpp"
 
@@ -29,6 +37,7 @@ namespace {
 
 using namespace occlusion;
 using namespace occlusion::bench;
+namespace fs = std::filesystem;
 
 constexpr int kPattern = 7;
 // Hit parameters of both tracers agree if within this, relative.
@@ -40,16 +49,26 @@ constexpr double kRimTolerance = 1e-4;
 constexpr double kGrazing = 1e-3;
 constexpr const char* kUsage =
     "usage: bench_discs [--points N] [--triangles N] [--rays-per-vp N] [--num-vp N] [--threads T]\n"
-    "                   [--seed S] [--repeat N]\n";
+    "                   [--seed S] [--repeat N] [--leaf N] [--whole N]\n";
 
-using Options = PointBenchOptions;
+struct Options : PointBenchOptions {
+  std::size_t leaf = 0;  // our octree's max_leaf_size; 0: surfel_octree_options()'s
+  int whole = 3;         // whole processes of the CLI and embree_job each, alternating
+};
 
 Options parse(int argc, char** argv) {
   Options o;
   o.repeat = 5;  // traces of ours and Embree's, alternating
   for (int i = 1; i < argc; ++i) {
-    if (!parse_point_bench_flag(o, argc, argv, i)) {
-      throw UsageError("unknown argument '" + std::string(argv[i]) + "'");
+    if (parse_point_bench_flag(o, argc, argv, i)) continue;
+    const std::string arg = argv[i];
+    if (arg == "--leaf") {
+      o.leaf = parse_unsigned(arg, flag_value(argc, argv, i));
+    } else if (arg == "--whole") {
+      o.whole = static_cast<int>(
+          std::min<std::uint64_t>(100, parse_unsigned(arg, flag_value(argc, argv, i))));
+    } else {
+      throw UsageError("unknown argument '" + arg + "'");
     }
   }
   check_point_bench_options(o);
@@ -124,15 +143,38 @@ void print_ratio(const char* what, const Samples& ours, const Samples& theirs, s
 }
 
 int run(const Options& o) {
+  const fs::path bench_dir = fs::read_symlink("/proc/self/exe").parent_path();
+  const std::string cli = (bench_dir.parent_path() / "occlusion").string();
+  const std::string cloud_path = (bench_dir / "bench_discs_cloud.pcd").string();
   auto start = std::chrono::steady_clock::now();
-  PointCloud cloud;
   std::size_t triangles = 0;
   {
     const GeneratedRoom room = generate_room(o.triangles, o.seed);
-    cloud = sample_point_cloud(room.mesh, o.points, o.seed);
+    const PointCloud sampled = sample_point_cloud(room.mesh, o.points, o.seed);
     triangles = room.mesh.face_count();
+    write_cloud(cloud_path, sampled, {}, CloudFormat::kPcdBinary);
   }
   const double generate_seconds = seconds_since(start);
+
+  // The CLI and embree_job (discs, estimate_surfels' defaults), while this
+  // process is small: see child_process.hpp on ru_maxrss.
+  malloc_trim(0);
+  const std::string threads = std::to_string(o.threads);
+  std::pair<CliRun, CliRun> poc_whole, scan_whole;
+  if (o.whole > 0) {
+    std::fprintf(stderr, "bench_discs: %s -poc and embree_job -poc, in turn ...\n", cli.c_str());
+    poc_whole = run_job_and_embree_job(
+        bench_dir, cli, "poc", cloud_path,
+        {"--num-vp", std::to_string(o.num_vp), "--num-rays-per-vp", std::to_string(o.rays_per_vp),
+         "--threads", threads, "--seed", std::to_string(o.seed)},
+        o.whole);
+    std::fprintf(stderr, "bench_discs: %s -fscan and embree_job -fscan, in turn ...\n",
+                 cli.c_str());
+    scan_whole = run_job_and_embree_job(
+        bench_dir, cli, "fscan", cloud_path,
+        {"--pattern", std::to_string(kPattern), "--threads", threads}, o.whole);
+  }
+  const PointCloud cloud = read_cloud(cloud_path);
   Eigen::Vector3f lo_f, hi_f;
   cloud.bounds(lo_f, hi_f);
   const Eigen::Vector3d lo = lo_f.cast<double>(), hi = hi_f.cast<double>();
@@ -159,13 +201,15 @@ int run(const Options& o) {
 
   std::fprintf(stderr, "bench_discs: builds ...\n");
   std::optional<SurfelOctree> tree;
+  OctreeOptions octree = surfel_octree_options();
+  if (o.leaf > 0) octree.max_leaf_size = o.leaf;
   EmbreeDiscs embree(o.threads);
   const auto [our_builds, embree_builds] = alternating_samples(
       o.repeat,
       [&] {
         tree.reset();
         const auto t0 = std::chrono::steady_clock::now();
-        tree.emplace(LargeVector<Surfel>(surfels), surfel_octree_options());
+        tree.emplace(LargeVector<Surfel>(surfels), octree);
         return seconds_since(t0);
       },
       [&] { return embree.build(surfels); });
@@ -255,9 +299,11 @@ int run(const Options& o) {
                   ns, percent(scan_agreement.theirs, ns));
 
   const OctreeStats& s = tree->stats();
-  std::printf("\noctree   %s inner nodes, %s leaves, depth %d, largest leaf %zu, %.1f MiB\n",
-              grouped(s.inner_nodes).c_str(), grouped(s.leaves).c_str(), s.depth, s.largest_leaf,
-              mib(s.memory_bytes));
+  std::printf(
+      "\noctree   leaves of up to %zu, %s inner nodes, %s leaves, depth %d, largest leaf %zu, %.1f "
+      "MiB\n",
+      octree.max_leaf_size, grouped(s.inner_nodes).c_str(), grouped(s.leaves).c_str(), s.depth,
+      s.largest_leaf, mib(s.memory_bytes));
   print_hit_agreement("poc", poc_agreement, kTTolerance);
   poc_why.print("poc");
   print_flag_agreement("fscan", scan_agreement);
@@ -273,7 +319,15 @@ int run(const Options& o) {
   print_ratio("build", our_builds, embree_builds, 0);
   print_ratio("poc", our_poc, embree_poc, np);
   print_ratio("fscan", our_scan, embree_scan, ns);
-  return 0;
+  if (o.whole == 0) return 0;
+  for (const auto& [job, runs, key] : {std::tuple("poc", &poc_whole, "occlusion_level"),
+                                       std::tuple("fscan", &scan_whole, "visible_fraction")}) {
+    std::printf("%-6s CLI %s %.6f, Embree program %.6f\n", job, key,
+                runs->first.json[key].asDouble(), runs->second.json[key].asDouble());
+  }
+  const bool poc_ok = print_whole_process("poc", poc_whole.first, poc_whole.second);
+  const bool scan_ok = print_whole_process("fscan", scan_whole.first, scan_whole.second);
+  return poc_ok && scan_ok ? 0 : 1;
 }
 
 }  // namespace

@@ -38,8 +38,6 @@ namespace fs = std::filesystem;
 
 constexpr int kPattern = 7;
 constexpr double kPointRadius = 0.01;
-// The CLI traces discs unless told otherwise; embree_job's points are spheres.
-const std::vector<std::string> kSpheres = {"--primitive", "sphere"};
 // Hit parameters of both tracers agree if within this, relative.
 constexpr double kTTolerance = 1e-4;
 constexpr const char* kUsage =
@@ -111,14 +109,16 @@ int run(const Options& o) {
   const auto [poc_cli, poc_embree] = run_job_and_embree_job(
       bench_dir, cli, "poc", cloud_path,
       {"--num-vp", std::to_string(o.num_vp), "--num-rays-per-vp", std::to_string(o.rays_per_vp),
-       "--point-radius", radius, "--threads", threads, "--seed", std::to_string(o.seed)},
-      o.repeat, kSpheres);
+       "--primitive", "sphere", "--point-radius", radius, "--threads", threads, "--seed",
+       std::to_string(o.seed)},
+      o.repeat);
   std::fprintf(stderr, "bench_poc: running %s -fscan and embree_job -fscan, in turn ...\n",
                cli.c_str());
-  const auto [scan_cli, scan_embree] = run_job_and_embree_job(
-      bench_dir, cli, "fscan", cloud_path,
-      {"--pattern", std::to_string(kPattern), "--point-radius", radius, "--threads", threads},
-      o.repeat, kSpheres);
+  const auto [scan_cli, scan_embree] =
+      run_job_and_embree_job(bench_dir, cli, "fscan", cloud_path,
+                             {"--pattern", std::to_string(kPattern), "--primitive", "sphere",
+                              "--point-radius", radius, "--threads", threads},
+                             o.repeat);
 
   auto start = std::chrono::steady_clock::now();
   const PointCloud cloud = read_cloud(cloud_path);
