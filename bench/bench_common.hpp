@@ -25,6 +25,14 @@ inline double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+// The seconds run() takes.
+template <class F>
+double timed(F&& run) {
+  const auto start = std::chrono::steady_clock::now();
+  run();
+  return seconds_since(start);
+}
+
 // The smallest of kRepetitions results of run() (seconds).
 template <class F>
 double best_of(F&& run) {

@@ -128,20 +128,6 @@ struct Diagnosis {
   }
 };
 
-// "what ours MIN / MEDIAN s (R M rays/s), embree ...; ours/embree throughput
-// MIN-RATIO (min), MEDIAN-RATIO (median)"; no rays/s when rays is 0.
-void print_ratio(const char* what, const Samples& ours, const Samples& theirs, std::size_t rays) {
-  const auto side = [rays](const char* who, const Samples& samples) {
-    std::printf("%s %.4f / %.4f s", who, samples.min(), samples.median());
-    if (rays > 0) std::printf(" (%.2f M rays/s)", static_cast<double>(rays) / samples.min() / 1e6);
-  };
-  std::printf("%-6s ", what);
-  side("ours", ours);
-  side(", embree", theirs);
-  std::printf(" [min / median of %zu]; ours/embree %.2f (min), %.2f (median)\n",
-              ours.seconds.size(), theirs.min() / ours.min(), theirs.median() / ours.median());
-}
-
 int run(const Options& o) {
   const fs::path bench_dir = fs::read_symlink("/proc/self/exe").parent_path();
   const std::string cli = (bench_dir.parent_path() / "occlusion").string();
@@ -208,41 +194,13 @@ int run(const Options& o) {
       o.repeat,
       [&] {
         tree.reset();
-        const auto t0 = std::chrono::steady_clock::now();
-        tree.emplace(LargeVector<Surfel>(surfels), octree);
-        return seconds_since(t0);
+        return timed([&] { tree.emplace(LargeVector<Surfel>(surfels), octree); });
       },
       [&] { return embree.build(surfels); });
 
-  std::fprintf(stderr, "bench_discs: poc rays ...\n");
-  std::vector<std::optional<Hit>> our_hits(np), their_hits(np);
-  const auto [our_poc, embree_poc] = alternating_samples(
-      o.repeat,
-      [&] {
-        const auto t0 = std::chrono::steady_clock::now();
-        tree->intersect_batch(poc_rays.data(), np, nullptr, our_hits.data(), o.threads);
-        return seconds_since(t0);
-      },
-      [&] {
-        const auto t0 = std::chrono::steady_clock::now();
-        embree.intersect(poc_rays.data(), np, their_hits.data(), o.threads);
-        return seconds_since(t0);
-      });
-  std::fprintf(stderr, "bench_discs: fscan rays ...\n");
-  std::vector<std::uint8_t> our_blocked(ns), their_blocked(ns);
-  const auto [our_scan, embree_scan] = alternating_samples(
-      o.repeat,
-      [&] {
-        const auto t0 = std::chrono::steady_clock::now();
-        tree->occluded_batch(scan_rays.rays.data(), ns, scan_rays.ignore.data(), our_blocked.data(),
-                             o.threads);
-        return seconds_since(t0);
-      },
-      [&] {
-        const auto t0 = std::chrono::steady_clock::now();
-        embree.occluded(scan_rays.rays.data(), ns, their_blocked.data(), o.threads);
-        return seconds_since(t0);
-      });
+  std::fprintf(stderr, "bench_discs: traces ...\n");
+  const auto& [our_poc, embree_poc, our_scan, embree_scan, our_hits, their_hits, our_blocked,
+               their_blocked] = trace_both(*tree, embree, poc_rays, scan_rays, o.threads, o.repeat);
 
   std::fprintf(stderr, "bench_discs: compute_cloud_occlusion and scan_cloud in process ...\n");
   const CloudOcclusionResult poc_library = compute_cloud_occlusion(cloud, grid, {}, poc);

@@ -141,45 +141,24 @@ int run(const Options& o) {
   const ScanRays scan_rays = make_scan_rays(cloud, pattern, scan);
   const std::size_t np = poc_rays.size(), ns = scan_rays.rays.size();
 
-  std::fprintf(stderr, "bench_poc: our octree ...\n");
+  std::fprintf(stderr, "bench_poc: builds ...\n");
   std::optional<SphereOctree> tree;
-  const double our_build = best_of([&] {
-    tree.reset();
-    const auto t0 = std::chrono::steady_clock::now();
-    tree.emplace(make_spheres(cloud.positions, static_cast<float>(kPointRadius)), poc.octree);
-    return seconds_since(t0);
-  });
-  std::vector<std::optional<Hit>> our_hits(np);
-  const double our_poc = best_of([&] {
-    const auto t0 = std::chrono::steady_clock::now();
-    tree->intersect_batch(poc_rays.data(), np, nullptr, our_hits.data(), o.threads);
-    return seconds_since(t0);
-  });
-  std::vector<std::uint8_t> our_blocked(ns);
-  const double our_scan = best_of([&] {
-    const auto t0 = std::chrono::steady_clock::now();
-    tree->occluded_batch(scan_rays.rays.data(), ns, scan_rays.ignore.data(), our_blocked.data(),
-                         o.threads);
-    return seconds_since(t0);
-  });
-
-  std::fprintf(stderr, "bench_poc: embree ...\n");
   EmbreePoints embree(o.threads);
   const LargeVector<Sphere> spheres =
       make_spheres(cloud.positions, static_cast<float>(kPointRadius));
-  const double embree_build = best_of([&] { return embree.build(spheres); });
-  std::vector<std::optional<Hit>> their_hits(np);
-  const double embree_poc = best_of([&] {
-    const auto t0 = std::chrono::steady_clock::now();
-    embree.intersect(poc_rays.data(), np, their_hits.data(), o.threads);
-    return seconds_since(t0);
-  });
-  std::vector<std::uint8_t> their_blocked(ns);
-  const double embree_scan = best_of([&] {
-    const auto t0 = std::chrono::steady_clock::now();
-    embree.occluded(scan_rays.rays.data(), ns, their_blocked.data(), o.threads);
-    return seconds_since(t0);
-  });
+  const int traces = std::max(o.repeat, kRepetitions);
+  const auto [our_build, embree_build] = alternating_samples(
+      traces,
+      [&] {
+        tree.reset();
+        return timed([&] {
+          tree.emplace(make_spheres(cloud.positions, static_cast<float>(kPointRadius)), poc.octree);
+        });
+      },
+      [&] { return embree.build(spheres); });
+  std::fprintf(stderr, "bench_poc: traces ...\n");
+  const auto& [our_poc, embree_poc, our_scan, embree_scan, our_hits, their_hits, our_blocked,
+               their_blocked] = trace_both(*tree, embree, poc_rays, scan_rays, o.threads, traces);
 
   std::fprintf(stderr, "bench_poc: compute_cloud_occlusion and scan_cloud in process ...\n");
   start = std::chrono::steady_clock::now();
@@ -198,8 +177,10 @@ int run(const Options& o) {
     theirs_hit[i] = their_hits[i].has_value();
   }
 
-  std::printf("bench_poc: furnished room sampled as points, seed %llu, %u thread(s), best of %d\n",
-              static_cast<unsigned long long>(o.seed), o.threads, kRepetitions);
+  std::printf(
+      "bench_poc: furnished room sampled as points, seed %llu, %u thread(s), best of %d "
+      "(builds and traces, alternating)\n",
+      static_cast<unsigned long long>(o.seed), o.threads, traces);
   std::printf(
       "cloud    %s points of %s triangles (generated in %.3f s), radius %g; binary PCD %.1f MiB, "
       "read in %.3f s\n",
@@ -212,13 +193,13 @@ int run(const Options& o) {
   const std::string embree_name = "embree " + EmbreePoints::version() + " SPHERE_POINT";
   print_trace_header();
   const auto row = print_trace_row;
-  row("poc   ours   SphereOctree intersect_batch", our_build, our_poc, np,
+  row("poc   ours   SphereOctree intersect_batch", our_build.min(), our_poc.min(), np,
       percent(poc_agreement.ours, np));
-  row("poc   " + embree_name + " rtcIntersect1", embree_build, embree_poc, np,
+  row("poc   " + embree_name + " rtcIntersect1", embree_build.min(), embree_poc.min(), np,
       percent(poc_agreement.theirs, np));
-  row("fscan ours   SphereOctree occluded_batch", our_build, our_scan, ns,
+  row("fscan ours   SphereOctree occluded_batch", our_build.min(), our_scan.min(), ns,
       percent(scan_agreement.ours, ns));
-  row("fscan " + embree_name + " rtcOccluded1", embree_build, embree_scan, ns,
+  row("fscan " + embree_name + " rtcOccluded1", embree_build.min(), embree_scan.min(), ns,
       percent(scan_agreement.theirs, ns));
 
   const OctreeStats& s = tree->stats();
@@ -258,8 +239,12 @@ int run(const Options& o) {
     std::printf("CLI      -fscan %s\n", stage_timings(scan_cli.json).c_str());
   }
 
-  std::printf("\npoc ours/embree throughput: %.2f\n", embree_poc / our_poc);
-  std::printf("fscan ours/embree throughput: %.2f\n", embree_scan / our_scan);
+  std::printf("\n");
+  print_ratio("build", our_build, embree_build, 0);
+  print_ratio("poc", our_poc, embree_poc, np);
+  print_ratio("fscan", our_scan, embree_scan, ns);
+  std::printf("poc ours/embree throughput: %.2f\n", embree_poc.min() / our_poc.min());
+  std::printf("fscan ours/embree throughput: %.2f\n", embree_scan.min() / our_scan.min());
   const bool poc_ok = print_end_to_end("poc", poc_cli, true);
   const bool scan_ok = print_end_to_end("fscan", scan_cli, false);
   const bool poc_whole = print_whole_process("poc", poc_cli, poc_embree);

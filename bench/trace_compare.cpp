@@ -22,6 +22,18 @@ void print_trace_row(const std::string& what, double build, double trace, std::s
               static_cast<double>(rays) / trace / 1e6, hit_percent);
 }
 
+void print_ratio(const char* what, const Samples& ours, const Samples& theirs, std::size_t rays) {
+  const auto side = [rays](const char* who, const Samples& samples) {
+    std::printf("%s %.4f / %.4f s", who, samples.min(), samples.median());
+    if (rays > 0) std::printf(" (%.2f M rays/s)", static_cast<double>(rays) / samples.min() / 1e6);
+  };
+  std::printf("%-6s ", what);
+  side("ours", ours);
+  side(", embree", theirs);
+  std::printf(" [min / median of %zu]; ours/embree %.2f (min), %.2f (median)\n",
+              ours.seconds.size(), theirs.min() / ours.min(), theirs.median() / ours.median());
+}
+
 HitAgreement compare_hits(const std::optional<Hit>* ours, const std::optional<Hit>* theirs,
                           std::size_t count, double t_tolerance) {
   HitAgreement a;
