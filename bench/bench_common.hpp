@@ -25,6 +25,14 @@ inline double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+// The seconds run() takes.
+template <class F>
+double timed(F&& run) {
+  const auto start = std::chrono::steady_clock::now();
+  run();
+  return seconds_since(start);
+}
+
 // The smallest of kRepetitions results of run() (seconds).
 template <class F>
 double best_of(F&& run) {
@@ -33,18 +41,42 @@ double best_of(F&& run) {
   return best;
 }
 
-// The smallest of `repetitions` results of ours() and of theirs(), run in
-// turn (ours, theirs, ours, ...), so that a busy machine slows both alike and
-// the ratio of the two minima holds when the absolute figures drift.
+// Timings of one measurement repeated: the smallest and the median.
+struct Samples {
+  std::vector<double> seconds;
+
+  double min() const {
+    return seconds.empty() ? std::numeric_limits<double>::infinity()
+                           : *std::min_element(seconds.begin(), seconds.end());
+  }
+  double median() const {
+    if (seconds.empty()) return std::numeric_limits<double>::infinity();
+    std::vector<double> sorted = seconds;
+    std::sort(sorted.begin(), sorted.end());
+    const std::size_t n = sorted.size();
+    return n % 2 == 1 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]);
+  }
+};
+
+// `repetitions` results each of ours() and of theirs() (seconds), run in turn
+// (ours, theirs, ours, ...), so that a busy machine slows both alike and the
+// ratio of the two minima (or medians) holds when the absolute figures drift.
+template <class F, class G>
+std::pair<Samples, Samples> alternating_samples(int repetitions, F&& ours, G&& theirs) {
+  std::pair<Samples, Samples> samples;
+  for (int k = 0; k < repetitions; ++k) {
+    samples.first.seconds.push_back(ours());
+    samples.second.seconds.push_back(theirs());
+  }
+  return samples;
+}
+
+// The smallest of `repetitions` results of ours() and of theirs(), run in turn
+// as above.
 template <class F, class G>
 std::pair<double, double> best_of_alternating(int repetitions, F&& ours, G&& theirs) {
-  std::pair<double, double> best(std::numeric_limits<double>::infinity(),
-                                 std::numeric_limits<double>::infinity());
-  for (int k = 0; k < repetitions; ++k) {
-    best.first = std::min(best.first, ours());
-    best.second = std::min(best.second, theirs());
-  }
-  return best;
+  const auto [a, b] = alternating_samples(repetitions, ours, theirs);
+  return {a.min(), b.min()};
 }
 
 // 1234567 -> "1,234,567"
@@ -134,7 +166,7 @@ inline std::pair<CliRun, CliRun> run_job_and_embree_job(
 inline std::string stage_timings(const Json::Value& json) {
   std::string text;
   const Json::Value& timings = json["timings"];
-  for (const char* stage : {"load", "sampling", "build", "trace", "write", "total"}) {
+  for (const char* stage : {"load", "sampling", "surfel", "build", "trace", "write", "total"}) {
     const std::string key = std::string(stage) + "_seconds";
     if (!timings.isMember(key)) continue;
     char figure[48];

@@ -1,5 +1,5 @@
-// bench_poc [--points N] [--triangles N] [--rays-per-vp N] [--threads T] [--seed S] [--cli PATH]
-//           [--repeat N]
+// bench_poc [--points N] [--triangles N] [--rays-per-vp N] [--num-vp N] [--threads T]
+//           [--seed S] [--cli PATH] [--repeat N]
 //
 // Times the point-cloud hot paths (-poc closest hits, -fscan shadow rays) on a
 // sampled furnished room against Intel Embree's sphere points, and the
@@ -28,6 +28,7 @@
 #include "occlusion/core/sphere_octree.hpp"
 #include "occlusion/io/cloud_io.hpp"
 #include "room_generator.hpp"
+#include "trace_compare.hpp"
 
 namespace {
 
@@ -35,52 +36,31 @@ using namespace occlusion;
 using namespace occlusion::bench;
 namespace fs = std::filesystem;
 
-constexpr std::size_t kGridViewpoints = 9;
 constexpr int kPattern = 7;
 constexpr double kPointRadius = 0.01;
 // Hit parameters of both tracers agree if within this, relative.
 constexpr double kTTolerance = 1e-4;
 constexpr const char* kUsage =
-    "usage: bench_poc [--points N] [--triangles N] [--rays-per-vp N] [--threads T] [--seed S]\n"
-    "                 [--cli PATH] [--repeat N]\n";
+    "usage: bench_poc [--points N] [--triangles N] [--rays-per-vp N] [--num-vp N] [--threads T]\n"
+    "                 [--seed S] [--cli PATH] [--repeat N]\n";
 
-struct Options {
-  std::size_t points = 1'000'000;
-  std::size_t triangles = 100'000;
-  std::size_t rays_per_vp = 30'000;
-  unsigned threads = 2;
-  std::uint64_t seed = 1;
-  std::string cli;            // empty: <build dir>/occlusion
-  int repeat = kRepetitions;  // whole processes of the CLI and embree_job, alternating
+struct Options : PointBenchOptions {
+  std::string cli;  // empty: <build dir>/occlusion
 };
 
 Options parse(int argc, char** argv) {
   Options o;
+  o.repeat = kRepetitions;  // whole processes of the CLI and embree_job, alternating
   for (int i = 1; i < argc; ++i) {
+    if (parse_point_bench_flag(o, argc, argv, i)) continue;
     const std::string arg = argv[i];
-    if (arg == "--points") {
-      o.points = parse_unsigned(arg, flag_value(argc, argv, i));
-    } else if (arg == "--triangles") {
-      o.triangles = parse_unsigned(arg, flag_value(argc, argv, i));
-    } else if (arg == "--rays-per-vp") {
-      o.rays_per_vp = parse_unsigned(arg, flag_value(argc, argv, i));
-    } else if (arg == "--threads") {
-      o.threads = parse_threads(arg, flag_value(argc, argv, i));
-    } else if (arg == "--seed") {
-      o.seed = parse_unsigned(arg, flag_value(argc, argv, i));
-    } else if (arg == "--repeat") {
-      o.repeat = static_cast<int>(
-          std::min<std::size_t>(1000, parse_unsigned(arg, flag_value(argc, argv, i))));
-    } else if (arg == "--cli") {
+    if (arg == "--cli") {
       o.cli = flag_value(argc, argv, i);
     } else {
       throw UsageError("unknown argument '" + arg + "'");
     }
   }
-  if (o.points == 0 || o.triangles == 0 || o.rays_per_vp == 0 || o.threads == 0 || o.repeat == 0) {
-    throw UsageError("--points, --triangles, --rays-per-vp, --threads and --repeat must be > 0");
-  }
-  if (o.points > 100'000'000) throw UsageError("--points must be at most 100000000");
+  check_point_bench_options(o);
   return o;
 }
 
@@ -126,18 +106,19 @@ int run(const Options& o) {
   const std::string radius = exact(kPointRadius);
   std::fprintf(stderr, "bench_poc: running %s -poc on %s and embree_job -poc, in turn ...\n",
                cli.c_str(), cloud_path.c_str());
-  const auto [poc_cli, poc_embree] =
-      run_job_and_embree_job(bench_dir, cli, "poc", cloud_path,
-                             {"--num-vp", std::to_string(kGridViewpoints), "--num-rays-per-vp",
-                              std::to_string(o.rays_per_vp), "--point-radius", radius, "--threads",
-                              threads, "--seed", std::to_string(o.seed)},
-                             o.repeat);
+  const auto [poc_cli, poc_embree] = run_job_and_embree_job(
+      bench_dir, cli, "poc", cloud_path,
+      {"--num-vp", std::to_string(o.num_vp), "--num-rays-per-vp", std::to_string(o.rays_per_vp),
+       "--primitive", "sphere", "--point-radius", radius, "--threads", threads, "--seed",
+       std::to_string(o.seed)},
+      o.repeat);
   std::fprintf(stderr, "bench_poc: running %s -fscan and embree_job -fscan, in turn ...\n",
                cli.c_str());
-  const auto [scan_cli, scan_embree] = run_job_and_embree_job(
-      bench_dir, cli, "fscan", cloud_path,
-      {"--pattern", std::to_string(kPattern), "--point-radius", radius, "--threads", threads},
-      o.repeat);
+  const auto [scan_cli, scan_embree] =
+      run_job_and_embree_job(bench_dir, cli, "fscan", cloud_path,
+                             {"--pattern", std::to_string(kPattern), "--primitive", "sphere",
+                              "--point-radius", radius, "--threads", threads},
+                             o.repeat);
 
   auto start = std::chrono::steady_clock::now();
   const PointCloud cloud = read_cloud(cloud_path);
@@ -151,7 +132,7 @@ int run(const Options& o) {
   poc.num_rays_per_vp = o.rays_per_vp;
   poc.seed = o.seed;
   poc.threads = o.threads;
-  const std::vector<Eigen::Vector3d> grid = grid_viewpoints(kGridViewpoints, lo, hi);
+  const std::vector<Eigen::Vector3d> grid = grid_viewpoints(o.num_vp, lo, hi);
   const std::vector<Ray> poc_rays = make_poc_rays(grid, poc);
   ScanOptions scan;
   scan.point_radius = kPointRadius;
@@ -160,45 +141,24 @@ int run(const Options& o) {
   const ScanRays scan_rays = make_scan_rays(cloud, pattern, scan);
   const std::size_t np = poc_rays.size(), ns = scan_rays.rays.size();
 
-  std::fprintf(stderr, "bench_poc: our octree ...\n");
+  std::fprintf(stderr, "bench_poc: builds ...\n");
   std::optional<SphereOctree> tree;
-  const double our_build = best_of([&] {
-    tree.reset();
-    const auto t0 = std::chrono::steady_clock::now();
-    tree.emplace(make_spheres(cloud.positions, static_cast<float>(kPointRadius)), poc.octree);
-    return seconds_since(t0);
-  });
-  std::vector<std::optional<Hit>> our_hits(np);
-  const double our_poc = best_of([&] {
-    const auto t0 = std::chrono::steady_clock::now();
-    tree->intersect_batch(poc_rays.data(), np, nullptr, our_hits.data(), o.threads);
-    return seconds_since(t0);
-  });
-  std::vector<std::uint8_t> our_blocked(ns);
-  const double our_scan = best_of([&] {
-    const auto t0 = std::chrono::steady_clock::now();
-    tree->occluded_batch(scan_rays.rays.data(), ns, scan_rays.ignore.data(), our_blocked.data(),
-                         o.threads);
-    return seconds_since(t0);
-  });
-
-  std::fprintf(stderr, "bench_poc: embree ...\n");
   EmbreePoints embree(o.threads);
   const LargeVector<Sphere> spheres =
       make_spheres(cloud.positions, static_cast<float>(kPointRadius));
-  const double embree_build = best_of([&] { return embree.build(spheres); });
-  std::vector<std::optional<Hit>> their_hits(np);
-  const double embree_poc = best_of([&] {
-    const auto t0 = std::chrono::steady_clock::now();
-    embree.intersect(poc_rays.data(), np, their_hits.data(), o.threads);
-    return seconds_since(t0);
-  });
-  std::vector<std::uint8_t> their_blocked(ns);
-  const double embree_scan = best_of([&] {
-    const auto t0 = std::chrono::steady_clock::now();
-    embree.occluded(scan_rays.rays.data(), ns, their_blocked.data(), o.threads);
-    return seconds_since(t0);
-  });
+  const int traces = std::max(o.repeat, kRepetitions);
+  const auto [our_build, embree_build] = alternating_samples(
+      traces,
+      [&] {
+        tree.reset();
+        return timed([&] {
+          tree.emplace(make_spheres(cloud.positions, static_cast<float>(kPointRadius)), poc.octree);
+        });
+      },
+      [&] { return embree.build(spheres); });
+  std::fprintf(stderr, "bench_poc: traces ...\n");
+  const auto& [our_poc, embree_poc, our_scan, embree_scan, our_hits, their_hits, our_blocked,
+               their_blocked] = trace_both(*tree, embree, poc_rays, scan_rays, o.threads, traces);
 
   std::fprintf(stderr, "bench_poc: compute_cloud_occlusion and scan_cloud in process ...\n");
   start = std::chrono::steady_clock::now();
@@ -208,42 +168,19 @@ int run(const Options& o) {
   const ScanResult scan_library = scan_cloud(cloud, pattern, scan);
   const double scan_library_seconds = seconds_since(start);
 
-  // -poc: hit or miss, and where.
+  const HitAgreement poc_agreement =
+      compare_hits(our_hits.data(), their_hits.data(), np, kTTolerance);
+  const FlagAgreement scan_agreement = compare_flags(our_blocked.data(), their_blocked.data(), ns);
   std::vector<std::uint8_t> ours_hit(np), theirs_hit(np);
-  std::size_t only_ours = 0, only_theirs = 0, both = 0, same_t = 0, same_point = 0;
-  double worst_t = 0.0;
   for (std::size_t i = 0; i < np; ++i) {
     ours_hit[i] = our_hits[i].has_value();
     theirs_hit[i] = their_hits[i].has_value();
-    only_ours += ours_hit[i] && !theirs_hit[i];
-    only_theirs += theirs_hit[i] && !ours_hit[i];
-    if (!ours_hit[i] || !theirs_hit[i]) continue;
-    ++both;
-    const double a = our_hits[i]->t_hit, b = their_hits[i]->t_hit;
-    const double relative = std::abs(a - b) / std::max({std::abs(a), std::abs(b), 1e-30});
-    worst_t = std::max(worst_t, relative);
-    same_t += relative <= kTTolerance;
-    same_point += our_hits[i]->primitive_id == their_hits[i]->primitive_id;
-  }
-  // -fscan: blocked or not.
-  std::size_t scan_ours = 0, scan_theirs = 0, scan_only_ours = 0, scan_only_theirs = 0;
-  for (std::size_t i = 0; i < ns; ++i) {
-    scan_ours += our_blocked[i];
-    scan_theirs += their_blocked[i];
-    scan_only_ours += our_blocked[i] && !their_blocked[i];
-    scan_only_theirs += their_blocked[i] && !our_blocked[i];
-  }
-  const auto percent = [](std::size_t k, std::size_t n) {
-    return n > 0 ? 100.0 * static_cast<double>(k) / static_cast<double>(n) : 100.0;
-  };
-  std::size_t ours_hits = 0, theirs_hits = 0;
-  for (std::size_t i = 0; i < np; ++i) {
-    ours_hits += ours_hit[i];
-    theirs_hits += theirs_hit[i];
   }
 
-  std::printf("bench_poc: furnished room sampled as points, seed %llu, %u thread(s), best of %d\n",
-              static_cast<unsigned long long>(o.seed), o.threads, kRepetitions);
+  std::printf(
+      "bench_poc: furnished room sampled as points, seed %llu, %u thread(s), best of %d "
+      "(builds and traces, alternating)\n",
+      static_cast<unsigned long long>(o.seed), o.threads, traces);
   std::printf(
       "cloud    %s points of %s triangles (generated in %.3f s), radius %g; binary PCD %.1f MiB, "
       "read in %.3f s\n",
@@ -254,32 +191,23 @@ int run(const Options& o) {
   std::printf("fscan    pattern %d: %zu viewpoints x %s points = %s shadow rays, any hit\n\n",
               kPattern, pattern.size(), grouped(cloud.size()).c_str(), grouped(ns).c_str());
   const std::string embree_name = "embree " + EmbreePoints::version() + " SPHERE_POINT";
-  std::printf("%-48s %10s %10s %12s %10s\n", "", "build (s)", "trace (s)", "rays/s", "hit");
-  const auto row = [](const std::string& what, double build, double trace, std::size_t rays,
-                      double hit_percent) {
-    std::printf("%-48s %10.4f %10.4f %10.2f M %9.3f%%\n", what.c_str(), build, trace,
-                static_cast<double>(rays) / trace / 1e6, hit_percent);
-  };
-  row("poc   ours   SphereOctree intersect_batch", our_build, our_poc, np, percent(ours_hits, np));
-  row("poc   " + embree_name + " rtcIntersect1", embree_build, embree_poc, np,
-      percent(theirs_hits, np));
-  row("fscan ours   SphereOctree occluded_batch", our_build, our_scan, ns, percent(scan_ours, ns));
-  row("fscan " + embree_name + " rtcOccluded1", embree_build, embree_scan, ns,
-      percent(scan_theirs, ns));
+  print_trace_header();
+  const auto row = print_trace_row;
+  row("poc   ours   SphereOctree intersect_batch", our_build.min(), our_poc.min(), np,
+      percent(poc_agreement.ours, np));
+  row("poc   " + embree_name + " rtcIntersect1", embree_build.min(), embree_poc.min(), np,
+      percent(poc_agreement.theirs, np));
+  row("fscan ours   SphereOctree occluded_batch", our_build.min(), our_scan.min(), ns,
+      percent(scan_agreement.ours, ns));
+  row("fscan " + embree_name + " rtcOccluded1", embree_build.min(), embree_scan.min(), ns,
+      percent(scan_agreement.theirs, ns));
 
   const OctreeStats& s = tree->stats();
   std::printf("\noctree   %s inner nodes, %s leaves, depth %d, largest leaf %zu, %.1f MiB\n",
               grouped(s.inner_nodes).c_str(), grouped(s.leaves).c_str(), s.depth, s.largest_leaf,
               mib(s.memory_bytes));
-  std::printf(
-      "poc      hit/miss agree on %.4f%% of rays (%zu hit only for us, %zu only for Embree); of "
-      "%s common hits, t within %g relative on %.4f%% (largest difference %.2g), same point on "
-      "%.4f%%\n",
-      percent(np - only_ours - only_theirs, np), only_ours, only_theirs, grouped(both).c_str(),
-      kTTolerance, percent(same_t, both), worst_t, percent(same_point, both));
-  std::printf(
-      "fscan    flags agree on %.4f%% of rays: %zu blocked only for us, %zu only for Embree\n",
-      percent(ns - scan_only_ours - scan_only_theirs, ns), scan_only_ours, scan_only_theirs);
+  print_hit_agreement("poc", poc_agreement, kTTolerance);
+  print_flag_agreement("fscan", scan_agreement);
   std::printf("level    poc occlusion level: ours %.6f, embree %.6f, compute_cloud_occlusion %.6f",
               poc_level_from_hits(ours_hit.data(), np), poc_level_from_hits(theirs_hit.data(), np),
               poc_library.occlusion_level);
@@ -311,8 +239,12 @@ int run(const Options& o) {
     std::printf("CLI      -fscan %s\n", stage_timings(scan_cli.json).c_str());
   }
 
-  std::printf("\npoc ours/embree throughput: %.2f\n", embree_poc / our_poc);
-  std::printf("fscan ours/embree throughput: %.2f\n", embree_scan / our_scan);
+  std::printf("\n");
+  print_ratio("build", our_build, embree_build, 0);
+  print_ratio("poc", our_poc, embree_poc, np);
+  print_ratio("fscan", our_scan, embree_scan, ns);
+  std::printf("poc ours/embree throughput: %.2f\n", embree_poc.min() / our_poc.min());
+  std::printf("fscan ours/embree throughput: %.2f\n", embree_scan.min() / our_scan.min());
   const bool poc_ok = print_end_to_end("poc", poc_cli, true);
   const bool scan_ok = print_end_to_end("fscan", scan_cli, false);
   const bool poc_whole = print_whole_process("poc", poc_cli, poc_embree);

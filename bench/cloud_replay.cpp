@@ -33,20 +33,44 @@ double poc_level_from_hits(const std::uint8_t* hit, std::size_t count) {
   return count > 0 ? static_cast<double>(misses) / static_cast<double>(count) : 0.0;
 }
 
-ScanRays make_scan_rays(const PointCloud& cloud, const std::vector<Eigen::Vector3d>& viewpoints,
-                        const ScanOptions& options) {
+namespace {
+
+// ScanRays of `points` points, ray v * points + i = make_ray(viewpoints[v], i).
+template <class MakeRay>
+ScanRays make_rays(std::size_t points, const std::vector<Eigen::Vector3d>& viewpoints,
+                   const MakeRay& make_ray) {
   ScanRays out;
-  out.points = cloud.size();
+  out.points = points;
   out.viewpoints = viewpoints.size();
   out.rays.resize(out.points * out.viewpoints);
   out.ignore.resize(out.rays.size());
   for (std::size_t v = 0; v < out.viewpoints; ++v) {
     for (std::size_t i = 0; i < out.points; ++i) {
-      out.rays[v * out.points + i] = scan_shadow_ray(viewpoints[v], cloud.positions[i], options);
+      out.rays[v * out.points + i] = make_ray(viewpoints[v], i);
       out.ignore[v * out.points + i] = static_cast<PrimitiveId>(i);
     }
   }
   return out;
+}
+
+}  // namespace
+
+ScanRays make_scan_rays(const PointCloud& cloud, const std::vector<Eigen::Vector3d>& viewpoints,
+                        const ScanOptions& options) {
+  return make_rays(cloud.size(), viewpoints, [&](const Eigen::Vector3d& viewpoint, std::size_t i) {
+    return scan_shadow_ray(viewpoint, cloud.positions[i], options);
+  });
+}
+
+ScanRays make_scan_surfel_rays(const SurfelEstimate& surfels,
+                               const std::vector<Eigen::Vector3d>& viewpoints,
+                               const ScanOptions& options) {
+  const double near_viewpoint = 2.0 * surfels.stats.radius_median;
+  return make_rays(surfels.surfels.size(), viewpoints,
+                   [&](const Eigen::Vector3d& viewpoint, std::size_t i) {
+                     return scan_surfel_ray(viewpoint, surfels.surfels[i], surfels.thickness[i],
+                                            near_viewpoint, options.self_tolerance);
+                   });
 }
 
 double visible_fraction_from_flags(const ScanRays& scan, const std::uint8_t* blocked) {

@@ -45,6 +45,12 @@ struct ScanRays {
 ScanRays make_scan_rays(const PointCloud& cloud, const std::vector<Eigen::Vector3d>& viewpoints,
                         const ScanOptions& options);
 
+// The shadow rays of scan_cloud with options.surfels = &surfels, each the
+// analysis' own scan_surfel_ray (near the viewpoint: twice the median radius).
+ScanRays make_scan_surfel_rays(const SurfelEstimate& surfels,
+                               const std::vector<Eigen::Vector3d>& viewpoints,
+                               const ScanOptions& options);
+
 // The analysis' visible fraction: the share of points that some viewpoint sees.
 double visible_fraction_from_flags(const ScanRays& scan, const std::uint8_t* blocked);
 

@@ -30,10 +30,15 @@ void EmbreeTracer::release_scene() {
   }
 }
 
-void EmbreeTracer::commit(RTCGeometry geometry) {
+unsigned EmbreeTracer::attach(RTCGeometry geometry) {
   rtcCommitGeometry(geometry);
-  rtcAttachGeometry(scene_, geometry);
+  const unsigned id = rtcAttachGeometry(scene_, geometry);
   rtcReleaseGeometry(geometry);
+  check("rtcAttachGeometry");
+  return id;
+}
+
+void EmbreeTracer::commit_scene() {
   rtcCommitScene(scene_);
   check("rtcCommitScene");
 }

@@ -12,11 +12,13 @@
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <thread>
 #include <vector>
 
+#include "occlusion/core/hit.hpp"
 #include "occlusion/core/ray.hpp"
 
 namespace occlusion::bench {
@@ -108,13 +110,46 @@ class EmbreeTracer {
   // sets. Returns the seconds from empty scene to committed BVH.
   template <class Fill>
   double build_scene(RTCGeometryType type, const Fill& fill) {
+    return build_geometries([&](const auto& add) { add(type, fill); });
+  }
+
+  // Replaces the scene with the geometries add_all(add) adds: add(type, fill)
+  // makes a geometry of `type`, lets fill(geometry) set its buffers, attaches
+  // it and returns its geomID. Returns the seconds from empty scene to
+  // committed BVH.
+  template <class AddAll>
+  double build_geometries(const AddAll& add_all) {
     release_scene();
     const auto start = std::chrono::steady_clock::now();
     scene_ = rtcNewScene(device_);
-    RTCGeometry geometry = rtcNewGeometry(device_, type);
-    fill(geometry);
-    commit(geometry);
+    add_all([this](RTCGeometryType type, const auto& fill) {
+      RTCGeometry geometry = rtcNewGeometry(device_, type);
+      fill(geometry);
+      return attach(geometry);
+    });
+    commit_scene();
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+
+  // hits[i] = rtcIntersect1's closest hit on rays[i], its t and the primitive
+  // id(geomID, primID) gives, or none. Throws std::logic_error before the
+  // first build.
+  template <class Id>
+  void intersect_with_ids(const Ray* rays, std::size_t count, std::optional<Hit>* hits,
+                          unsigned threads, const Id& id) const {
+    if (!scene_) throw std::logic_error("embree: intersect before build");
+    for_each_ray(count, threads, [&](RTCIntersectContext& context, std::size_t i) {
+      RTCRayHit query;
+      query.ray = to_embree(rays[i]);
+      query.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+      query.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+      rtcIntersect1(scene_, &context, &query);
+      if (query.hit.geomID == RTC_INVALID_GEOMETRY_ID) {
+        hits[i].reset();
+      } else {
+        hits[i] = Hit{query.ray.tfar, id(query.hit.geomID, query.hit.primID)};
+      }
+    });
   }
 
   // Throws std::runtime_error naming `what` if the device has recorded an error.
@@ -122,8 +157,9 @@ class EmbreeTracer {
 
  private:
   void release_scene();
-  // Commits the geometry, attaches it to the scene and commits the scene.
-  void commit(RTCGeometry geometry);
+  // Commits the geometry and attaches it to the scene; returns its geomID.
+  unsigned attach(RTCGeometry geometry);
+  void commit_scene();
 
   RTCDevice device_ = nullptr;
   RTCScene scene_ = nullptr;

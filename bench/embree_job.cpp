@@ -1,11 +1,13 @@
 // embree_job -moc MESH [--pattern N] [--samples-per-unit-area X] [--seed S] [--threads T]
 //            [--out DIR]
-// embree_job -poc CLOUD [--num-vp N] [--num-rays-per-vp N] [--point-radius R] [--seed S]
+// embree_job -poc CLOUD [--num-vp N] [--num-rays-per-vp N] [--primitive disc|sphere]
+//            [--point-radius R] [--seed S] [--threads T] [--out DIR]
+// embree_job -fscan CLOUD [--pattern N] [--primitive disc|sphere] [--point-radius R]
 //            [--threads T] [--out DIR]
-// embree_job -fscan CLOUD [--pattern N] [--point-radius R] [--threads T] [--out DIR]
 //
 // `occlusion -moc`, `-poc` and `-fscan` as a program built on Intel Embree
-// would do them: the same readers, viewpoints, samples and rays, Embree's BVH
+// would do them: the same readers, viewpoints, samples, surfels (points are discs
+// unless --primitive sphere, as for the CLI) and rays, Embree's BVH
 // and rtcOccluded1 / rtcIntersect1 in place of our octree, the same results
 // written to DIR. bench_moc and bench_poc time it against the CLI, whole
 // process against whole process (issue 17). Prints one JSON object on stdout:
@@ -34,6 +36,7 @@
 #include "occlusion/analysis/mesh_occlusion.hpp"
 #include "occlusion/analysis/mesh_sampling.hpp"
 #include "occlusion/analysis/scan.hpp"
+#include "occlusion/analysis/surfel_estimation.hpp"
 #include "occlusion/analysis/viewpoints.hpp"
 #include "occlusion/io/atomic_file.hpp"
 #include "occlusion/io/cloud_io.hpp"
@@ -51,9 +54,10 @@ using Clock = std::chrono::steady_clock;
 constexpr const char* kUsage =
     "usage: embree_job -moc MESH [--pattern N] [--samples-per-unit-area X] [--seed S]\n"
     "                  [--threads T] [--out DIR]\n"
-    "       embree_job -poc CLOUD [--num-vp N] [--num-rays-per-vp N] [--point-radius R]\n"
-    "                  [--seed S] [--threads T] [--out DIR]\n"
-    "       embree_job -fscan CLOUD [--pattern N] [--point-radius R] [--threads T] [--out DIR]\n";
+    "       embree_job -poc CLOUD [--num-vp N] [--num-rays-per-vp N] [--primitive disc|sphere]\n"
+    "                  [--point-radius R] [--seed S] [--threads T] [--out DIR]\n"
+    "       embree_job -fscan CLOUD [--pattern N] [--primitive disc|sphere] [--point-radius R]\n"
+    "                  [--threads T] [--out DIR]\n";
 
 // The CLI's defaults for the settings the benches pass.
 struct Options {
@@ -64,6 +68,8 @@ struct Options {
   std::size_t num_vp = 9;
   std::size_t num_rays_per_vp = 30'000;
   double point_radius = 0.01;
+  bool point_radius_given = false;  // discs: a fixed radius instead of estimate_surfels'
+  std::string primitive = "disc";   // or sphere
   std::uint64_t seed = 0;
   unsigned threads = 2;
   std::string out;  // empty: write nothing
@@ -105,6 +111,12 @@ Options parse(int argc, char** argv) {
       o.num_rays_per_vp = parse_unsigned(arg, flag_value(argc, argv, i));
     } else if (arg == "--point-radius" && o.job != "moc") {
       o.point_radius = parse_positive(arg, flag_value(argc, argv, i));
+      o.point_radius_given = true;
+    } else if (arg == "--primitive" && o.job != "moc") {
+      o.primitive = flag_value(argc, argv, i);
+      if (o.primitive != "disc" && o.primitive != "sphere") {
+        throw UsageError("--primitive must be disc or sphere, got '" + o.primitive + "'");
+      }
     } else if (arg == "--seed" && o.job != "fscan") {
       o.seed = parse_unsigned(arg, flag_value(argc, argv, i));
     } else if (arg == "--threads") {
@@ -205,19 +217,45 @@ Json::Value run_moc(const Options& o, Stages& stages) {
 }
 
 // What -poc and -fscan start with: the cloud read, its points as Embree
-// spheres, and its box, which the viewpoints are placed in.
+// spheres or as surfels (estimate_surfels with the CLI's defaults, or its fixed
+// radius when --point-radius is given) in Embree discs, and its box, which the
+// viewpoints are placed in.
 struct CloudScene {
   PointCloud cloud;
-  std::unique_ptr<EmbreePoints> embree;
+  std::unique_ptr<EmbreePoints> spheres;
+  std::unique_ptr<EmbreeDiscs> discs;
+  SurfelEstimate surfels;  // discs only
   Eigen::Vector3d lo, hi;
+
+  void intersect(const std::vector<Ray>& rays, std::vector<std::optional<Hit>>& hits,
+                 unsigned threads) const {
+    if (discs) {
+      discs->intersect(rays.data(), rays.size(), hits.data(), threads);
+    } else {
+      spheres->intersect(rays.data(), rays.size(), hits.data(), threads);
+    }
+  }
+  const EmbreeTracer& tracer() const {
+    return discs ? static_cast<const EmbreeTracer&>(*discs) : *spheres;
+  }
 };
 
 CloudScene load_cloud_scene(const Options& o, Stages& stages) {
   CloudScene scene;
   scene.cloud = read_cloud(o.input);
   stages.mark("load");
-  scene.embree = std::make_unique<EmbreePoints>(o.threads);
-  scene.embree->build(make_spheres(scene.cloud.positions, static_cast<float>(o.point_radius)));
+  if (o.primitive == "disc") {
+    SurfelOptions options;
+    options.fixed_radius = o.point_radius_given ? o.point_radius : 0.0;
+    options.threads = o.threads;
+    scene.surfels = estimate_surfels(scene.cloud, options);
+    stages.mark("surfel");  // the CLI's name for the stage
+    scene.discs = std::make_unique<EmbreeDiscs>(o.threads);
+    scene.discs->build(scene.surfels.surfels);
+  } else {
+    scene.spheres = std::make_unique<EmbreePoints>(o.threads);
+    scene.spheres->build(make_spheres(scene.cloud.positions, static_cast<float>(o.point_radius)));
+  }
   stages.mark("build");
   Eigen::Vector3f lo, hi;
   scene.cloud.bounds(lo, hi);
@@ -231,14 +269,13 @@ CloudScene load_cloud_scene(const Options& o, Stages& stages) {
 Json::Value run_poc(const Options& o, Stages& stages) {
   const CloudScene scene = load_cloud_scene(o, stages);
   const PointCloud& cloud = scene.cloud;
-  const EmbreePoints& embree = *scene.embree;
   const std::vector<Eigen::Vector3d> viewpoints = grid_viewpoints(o.num_vp, scene.lo, scene.hi);
   CloudOcclusionOptions options;
   options.num_rays_per_vp = o.num_rays_per_vp;
   options.seed = o.seed;
   const std::vector<Ray> rays = make_poc_rays(viewpoints, options);
   std::vector<std::optional<Hit>> hits(rays.size());
-  embree.intersect(rays.data(), rays.size(), hits.data(), o.threads);
+  scene.intersect(rays, hits, o.threads);
   std::vector<std::uint8_t> hit(rays.size());
   for (std::size_t i = 0; i < rays.size(); ++i) hit[i] = hits[i].has_value();
   Json::Value json(Json::objectValue);
@@ -272,16 +309,20 @@ Json::Value run_poc(const Options& o, Stages& stages) {
 Json::Value run_fscan(const Options& o, Stages& stages) {
   const CloudScene scene = load_cloud_scene(o, stages);
   const PointCloud& cloud = scene.cloud;
-  const EmbreePoints& embree = *scene.embree;
   const std::vector<Eigen::Vector3d> viewpoints = pattern_viewpoints(o.pattern, scene.lo, scene.hi);
   ScanOptions options;
   options.point_radius = o.point_radius;
   const std::size_t points = cloud.size();
   std::vector<std::uint8_t> blocked(points * viewpoints.size());
-  embree.occluded_made(
+  const SurfelEstimate& model = scene.surfels;
+  const double near_viewpoint = 2.0 * model.stats.radius_median;
+  scene.tracer().occluded_made(
       blocked.size(),
       [&](std::size_t i, Ray& ray) {
-        ray = scan_shadow_ray(viewpoints[i / points], cloud.positions[i % points], options);
+        const std::size_t v = i / points, p = i % points;
+        ray = scene.discs ? scan_surfel_ray(viewpoints[v], model.surfels[p], model.thickness[p],
+                                            near_viewpoint)
+                          : scan_shadow_ray(viewpoints[v], cloud.positions[p], options);
         return true;
       },
       blocked.data(), o.threads);
