@@ -68,16 +68,17 @@ double own_surface_reach(const Surfel& surfel, float thickness, const Eigen::Vec
   return std::clamp(reach, kMinReachPerRadius * radius, 2.0 * radius);
 }
 
-Ray scan_surfel_ray(const Eigen::Vector3d& viewpoint, const Surfel& surfel, float thickness,
-                    double near_viewpoint, double fixed_reach) {
-  const Eigen::Vector3d direction = surfel.center.cast<double>() - viewpoint;
-  const double length = direction.norm();
+namespace {
+
+// The segment from the viewpoint to `direction` (t = 1 at the point) without
+// its first `near_viewpoint` and its last `reach`; the empty interval [1, 0]
+// (which the octree answers with "not occluded" at once) for a point too close
+// to the viewpoint to be hidden.
+Ray shortened_segment(const Eigen::Vector3d& viewpoint, const Eigen::Vector3d& direction,
+                      double length, double near_viewpoint, double reach) {
   Ray ray;
   ray.origin = viewpoint.cast<float>();
   ray.direction = direction.cast<float>();
-  const double reach = fixed_reach >= 0.0 ? fixed_reach
-                       : length > 0.0     ? own_surface_reach(surfel, thickness, direction / length)
-                                          : 0.0;
   if (length > near_viewpoint + reach) {
     ray.t_min = static_cast<float>(near_viewpoint / length);
     ray.t_max = static_cast<float>(1.0 - reach / length);
@@ -88,27 +89,26 @@ Ray scan_surfel_ray(const Eigen::Vector3d& viewpoint, const Surfel& surfel, floa
   return ray;
 }
 
+}  // namespace
+
+Ray scan_surfel_ray(const Eigen::Vector3d& viewpoint, const Surfel& surfel, float thickness,
+                    double near_viewpoint, double fixed_reach) {
+  const Eigen::Vector3d direction = surfel.center.cast<double>() - viewpoint;
+  const double length = direction.norm();
+  const double reach = fixed_reach >= 0.0 ? fixed_reach
+                       : length > 0.0     ? own_surface_reach(surfel, thickness, direction / length)
+                                          : 0.0;
+  return shortened_segment(viewpoint, direction, length, near_viewpoint, reach);
+}
+
 Ray scan_shadow_ray(const Eigen::Vector3d& viewpoint, const Eigen::Vector3f& point,
                     const ScanOptions& options) {
   const double radius = options.point_radius;
   const double tolerance = options.self_tolerance < 0.0 ? 2.0 * radius : options.self_tolerance;
   // Any sphere holding the viewpoint ends within 2 r of it, so ignoring that
   // much of each ray lets a viewpoint placed inside (or on) a point see out.
-  const double near_viewpoint = 2.0 * radius;
   const Eigen::Vector3d direction = point.cast<double>() - viewpoint;
-  const double length = direction.norm();
-  Ray ray;
-  ray.origin = viewpoint.cast<float>();
-  ray.direction = direction.cast<float>();
-  if (length > near_viewpoint + tolerance) {
-    ray.t_min = static_cast<float>(near_viewpoint / length);
-    ray.t_max = static_cast<float>(1.0 - tolerance / length);
-  } else {
-    // Too close to the viewpoint to be hidden: an empty interval.
-    ray.t_min = 1.0f;
-    ray.t_max = 0.0f;
-  }
-  return ray;
+  return shortened_segment(viewpoint, direction, direction.norm(), 2.0 * radius, tolerance);
 }
 
 namespace {

@@ -181,11 +181,8 @@ CloudOcclusionReport run_cloud_occlusion_on(const PointCloud& cloud,
                              request.escape_directions || !request.out.empty(),
                              request.primitive == "disc"),
       request.max_memory_mb);
-  const job::PointModel model =
-      job::choose_point_model(cloud,
-                              {request.primitive, request.point_radius, request.disc_coverage,
-                               request.normal_neighbours, request.threads},
-                              "-poc", report.warnings, progress);
+  const job::PointModel model = job::choose_point_model(cloud, job::point_settings(request), "-poc",
+                                                        report.warnings, progress);
   report.point_model = model.report;
 
   CloudOcclusionOptions options;

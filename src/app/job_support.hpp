@@ -81,6 +81,12 @@ struct PointModel {
 PointModel choose_point_model(const PointCloud& cloud, const PointSettings& settings,
                               const std::string& job, std::vector<std::string>& warnings,
                               const Progress& progress);
+// The point settings of a cloud job's request (-poc's and -fscan's hold the same keys).
+template <class Request>
+PointSettings point_settings(const Request& request) {
+  return {request.primitive, request.point_radius, request.disc_coverage, request.normal_neighbours,
+          request.threads};
+}
 Json::Value point_model_json(const PointModelReport& model);
 
 // [{"name": ..., "position": [x, y, z], <figures>...}, ...] built by the caller.

@@ -67,11 +67,8 @@ ScanReport run_scan_on(const PointCloud& cloud, const ViewpointChoice::Resolved&
   check_memory_budget(
       scan_memory(cloud.size(), viewpoints.positions.size(), request.primitive == "disc"),
       request.max_memory_mb);
-  const job::PointModel model =
-      job::choose_point_model(cloud,
-                              {request.primitive, request.point_radius, request.disc_coverage,
-                               request.normal_neighbours, request.threads},
-                              "-fscan", report.warnings, progress);
+  const job::PointModel model = job::choose_point_model(cloud, job::point_settings(request),
+                                                        "-fscan", report.warnings, progress);
   report.point_model = model.report;
 
   ScanOptions options;
