@@ -10,6 +10,9 @@
 #include <string>
 #include <vector>
 
+#include "occlusion/analysis/surfel_estimation.hpp"
+#include "occlusion/core/point_cloud.hpp"
+
 namespace occlusion::analysis_support {
 
 using Clock = std::chrono::steady_clock;
@@ -72,6 +75,27 @@ inline void check_float_precision(const Eigen::Vector3f& cloud_lo, const Eigen::
              "place viewpoints near the cloud, in the cloud file's own coordinates");
     }
   }
+}
+
+// The point model's checks, for both cloud analyses: surfels (when given)
+// hold one disc and one thickness per point, and the radius traced with (the
+// spheres', or the surfels' 10th percentile) is positive and fine enough for
+// float at the cloud's and viewpoints' distances (check_float_precision).
+inline void check_point_model(const PointCloud& cloud,
+                              const std::vector<Eigen::Vector3d>& viewpoints, double point_radius,
+                              const SurfelEstimate* surfels, const std::string& analysis) {
+  double radius = point_radius;
+  if (surfels) {
+    if (surfels->surfels.size() != cloud.size() || surfels->thickness.size() != cloud.size()) {
+      throw std::invalid_argument(analysis + ": " + std::to_string(surfels->surfels.size()) +
+                                  " surfels for " + std::to_string(cloud.size()) + " points");
+    }
+    radius = surfels->stats.radius_quantile_10;
+  }
+  check_positive(radius, "point_radius", analysis);
+  Eigen::Vector3f lo, hi;
+  cloud.bounds(lo, hi);
+  check_float_precision(lo, hi, viewpoints, radius, analysis);
 }
 
 }  // namespace occlusion::analysis_support

@@ -32,19 +32,8 @@ void check_inputs(const PointCloud& cloud, const std::vector<Eigen::Vector3d>& v
   cloud.validate();
   if (cloud.size() == 0) throw std::invalid_argument("cloud occlusion: the cloud has no points");
   analysis_support::check_viewpoints(viewpoints, "cloud occlusion");
-  double radius = options.point_radius;
-  if (options.surfels) {
-    if (options.surfels->surfels.size() != cloud.size()) {
-      throw std::invalid_argument(
-          "cloud occlusion: " + std::to_string(options.surfels->surfels.size()) + " surfels for " +
-          std::to_string(cloud.size()) + " points");
-    }
-    radius = options.surfels->stats.radius_quantile_10;
-  }
-  analysis_support::check_positive(radius, "point_radius", "cloud occlusion");
-  Eigen::Vector3f lo, hi;
-  cloud.bounds(lo, hi);
-  analysis_support::check_float_precision(lo, hi, viewpoints, radius, "cloud occlusion");
+  analysis_support::check_point_model(cloud, viewpoints, options.point_radius, options.surfels,
+                                      "cloud occlusion");
   if (options.num_rays_per_vp == 0) {
     throw std::invalid_argument("cloud occlusion: num_rays_per_vp must be > 0");
   }

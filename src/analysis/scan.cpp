@@ -31,19 +31,8 @@ void check_inputs(const PointCloud& cloud, const std::vector<Eigen::Vector3d>& v
                                 std::to_string(viewpoints.size()));
   }
   analysis_support::check_viewpoints(viewpoints, "scan");
-  double radius = options.point_radius;
-  if (options.surfels) {
-    if (options.surfels->surfels.size() != cloud.size() ||
-        options.surfels->thickness.size() != cloud.size()) {
-      throw std::invalid_argument("scan: " + std::to_string(options.surfels->surfels.size()) +
-                                  " surfels for " + std::to_string(cloud.size()) + " points");
-    }
-    radius = options.surfels->stats.radius_quantile_10;
-  }
-  analysis_support::check_positive(radius, "point_radius", "scan");
-  Eigen::Vector3f lo, hi;
-  cloud.bounds(lo, hi);
-  analysis_support::check_float_precision(lo, hi, viewpoints, radius, "scan");
+  analysis_support::check_point_model(cloud, viewpoints, options.point_radius, options.surfels,
+                                      "scan");
   if (std::isnan(options.self_tolerance) || std::isinf(options.self_tolerance)) {
     throw std::invalid_argument("scan: self_tolerance must be a finite number");
   }
