@@ -22,7 +22,13 @@ const Keys<EvaluateRequest>& evaluate_keys() {
            .doc("the prediction for each ground truth, in the same order: a label file or a "
                 "labelled cloud")},
       scoring_keys<R>(),
-      {skip_bad_lines_key(&R::skip_bad_lines), threads_key(&R::threads),
+      {key("max_distance", &R::max_distance)
+           .range(0, 1e6)
+           .unit("scene units")
+           .metavar("D")
+           .doc("a prediction on other points is transferred from its nearest point within D; "
+                "0: the points must be the ground truth's"),
+       skip_bad_lines_key(&R::skip_bad_lines), threads_key(&R::threads),
        out_key(&R::out,
                "write GT.eval.json, .csv (per class) and .md (a table); with several scenes "
                "eval.json, eval.csv, eval.md")},

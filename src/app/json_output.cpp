@@ -57,6 +57,27 @@ std::string valid_utf8(std::string_view text) {
   return out;
 }
 
+std::string printable_text(std::string_view text) {
+  const std::string valid = valid_utf8(text);
+  std::string out;
+  out.reserve(valid.size());
+  for (std::size_t i = 0; i < valid.size(); ++i) {
+    const auto byte = static_cast<std::uint8_t>(valid[i]);
+    // C1 controls (U+0080 to U+009F) are 0xC2 0x80 to 0xC2 0x9F in UTF-8.
+    const bool c1 =
+        byte == 0xC2 && i + 1 < valid.size() && static_cast<std::uint8_t>(valid[i + 1]) <= 0x9F;
+    if ((byte < 0x20 && byte != '\t') || byte == 0x7F) {
+      out += kReplacement;
+    } else if (c1) {
+      out += kReplacement;
+      ++i;
+    } else {
+      out += valid[i];
+    }
+  }
+  return out;
+}
+
 Json::Value with_valid_utf8(const Json::Value& value) {
   if (value.isString()) {
     const char* begin = nullptr;

@@ -81,8 +81,9 @@ const Keys<StudyRequest>& study_keys() {
        key("segmenter", &R::segmenter)
            .metavar("CMD")
            .doc("'baseline' (a geometric baseline on the region-growing planes, not a network) "
-                "or a command with {input} (the scanned cloud) and {output} (its prediction, "
-                "evaluation ids), e.g. 'python infer.py {input} {output}'"),
+                "or a command with {input} (the scanned cloud) and {output} (its prediction in "
+                "evaluation ids, as segmenter_output says), e.g. 'python infer.py {input} "
+                "{output}'"),
        key("segmenter_timeout", &R::segmenter_timeout)
            .range(0, 1e9)
            .unit("seconds")
@@ -95,8 +96,12 @@ const Keys<StudyRequest>& study_keys() {
            .doc("start the study again in OUT, dropping its rows, instead of resuming (needed "
                 "when parameters changed)"),
        key("segmenter_output", &R::segmenter_output)
-           .choices({"labels", "label", "ply", "pcd", "txt"})
-           .doc("extension of {output}"),
+           .choices({"ply", "pcd", "txt", "labels", "label"})
+           .doc("what the command writes to {output} (its extension): a cloud with x y z and "
+                "a label per point (ply, pcd, txt), paired with {input}'s points by position "
+                "(every point once, no other: else the run fails); labels: a bare label file, "
+                "one id per line in {input}'s order, which nothing can check (a file off by "
+                "one line scores as a slightly worse segmentation)"),
        cloud_format_key(&R::format, "format of the scanned clouds in OUT/runs"),
        key("shard", &R::shard).metavar("I/N").doc("make only the runs k with k mod N = I"),
        out_key(&R::out, "study.csv, study.md, study.svg, study.json, runs/")},

@@ -7,6 +7,7 @@
 #include "evaluation_support.hpp"
 #include "job_support.hpp"
 #include "occlusion/app/errors.hpp"
+#include "occlusion/app/json_output.hpp"
 #include "occlusion/io/cloud_io.hpp"
 #include "occlusion/io/input_error.hpp"
 #include "study_support.hpp"
@@ -131,9 +132,12 @@ StudyRow run_study_once(const StudyContext& context, const StudyRunInput& run,
     start = Clock::now();
     scene.ground_truth_name = scanned_path;
     scene.ground_truth = std::move(scanned);
-    const SceneEvaluation evaluation = evaluate_scene(scene, context.mapping, request.max_distance,
-                                                      request.tracing.threads, inner);
-    add_scene_warnings(evaluation, request.max_distance, warnings);
+    // The prediction is on the scanned points (a label file, or a cloud
+    // paired with them by position): nothing is transferred.
+    const double no_transfer = 0.0;
+    const SceneEvaluation evaluation =
+        evaluate_scene(scene, context.mapping, no_transfer, request.tracing.threads, inner);
+    add_scene_warnings(evaluation, no_transfer, warnings);
     row.metrics = compute_metrics(evaluation.confusion, request.mean_over);
     row.evaluation_seconds = seconds_since(start);
   } catch (const RunFailure& e) {
@@ -144,6 +148,9 @@ StudyRow run_study_once(const StudyContext& context, const StudyRunInput& run,
   }
   if (!row.failure.empty()) {
     if (!output_tail.empty()) row.failure += "; segmenter output ends: " + output_tail;
+    // The segmenter's output (and a prediction file quoted in a message) may
+    // be any bytes; study.csv and study.md must stay text.
+    row.failure = printable_text(row.failure);
     warnings.push_back(row.scene + " " + row.configuration + ": run failed: " + row.failure);
   }
   return row;

@@ -5,7 +5,10 @@
 #include "evaluation_support.hpp"
 #include "occlusion/analysis/baseline_segmenter.hpp"
 #include "occlusion/app/errors.hpp"
+#include "occlusion/core/exact_match.hpp"
+#include "occlusion/io/input_error.hpp"
 #include "occlusion/io/label_file.hpp"
+#include "report_format.hpp"
 #include "shell_command.hpp"
 #include "study_support.hpp"
 
@@ -79,6 +82,49 @@ std::string one_line(std::string text) {
   return text;
 }
 
+std::string coordinates(const PointCloud& cloud, const Eigen::Vector3f& position) {
+  const Eigen::Vector3d p = cloud.to_original(position.cast<double>());
+  return "(" + format_number("%.9g", p.x()) + ", " + format_number("%.9g", p.y()) + ", " +
+         format_number("%.9g", p.z()) + ")";
+}
+
+// A cloud prediction must hold the scanned cloud's points, each once, at the
+// coordinates the segmenter read: then every label is paired with its point
+// by position, whatever order the segmenter wrote them in. Anything else
+// (points missing, added or moved) fails the run: a label paired with a point
+// it was not predicted for would score as a slightly worse segmentation.
+// On return the labels follow the scanned cloud's order.
+void pair_with_scan(Prediction& prediction, const PointCloud& scanned,
+                    const std::string& output_tail) {
+  const ExactMatch match = match_exact_points(prediction.positions, scanned.positions);
+  if (!match.complete()) {
+    std::string reason = "its prediction holds " + std::to_string(prediction.positions.size()) +
+                         " points for the " + std::to_string(scanned.size()) +
+                         " points of {input}, and ";
+    if (match.unmatched_targets > 0) {
+      reason += std::to_string(match.unmatched_targets) +
+                " points of {input} have no predicted point at their coordinates (the first: "
+                "point " +
+                std::to_string(match.first_unmatched_target) + " at " +
+                coordinates(scanned, scanned.positions[match.first_unmatched_target]) + ")";
+    }
+    if (match.unmatched_sources > 0) {
+      reason += std::string(match.unmatched_targets > 0 ? ", and " : "") +
+                std::to_string(match.unmatched_sources) + " predicted points are none of {input}'s";
+    }
+    throw RunFailure(reason +
+                         ". A prediction cloud is paired with {input} by position: write every "
+                         "point of {input} once, with x y z as read (float32 as in the PLY, or "
+                         "at least 9 significant digits in text), and its label",
+                     output_tail);
+  }
+  std::vector<std::int32_t> labels(match.source_of.size());
+  for (std::size_t i = 0; i < labels.size(); ++i) labels[i] = prediction.labels[match.source_of[i]];
+  prediction.labels = std::move(labels);
+  // Paired: the labels now stand for the scanned points, in their order.
+  prediction.positions.clear();
+}
+
 Prediction external(const StudyContext& context, const PointCloud& scanned,
                     const std::string& scanned_path, const std::string& stem,
                     const Progress& progress, std::string& prediction_path,
@@ -107,7 +153,22 @@ Prediction external(const StudyContext& context, const PointCloud& scanned,
     throw RunFailure("the segmenter wrote nothing to {output} (" + prediction_path + ")",
                      output_tail);
   }
-  return load_prediction(prediction_path, request.tracing.skip_bad_lines, scanned.shift);
+  if (is_label_file(prediction_path)) {
+    return load_prediction(prediction_path, request.tracing.skip_bad_lines, scanned.shift);
+  }
+  Prediction prediction;
+  try {
+    prediction = load_prediction(prediction_path, request.tracing.skip_bad_lines, scanned.shift);
+  } catch (const InputError& e) {
+    // Most often a segmenter that writes bare labels where a cloud is expected.
+    throw RunFailure(std::string("its prediction cannot be scored: ") + e.what() +
+                         " (segmenter_output is " + request.segmenter_output +
+                         ": {output} must be a cloud with x y z and a label per point; a bare "
+                         "label file needs segmenter_output labels)",
+                     output_tail);
+  }
+  pair_with_scan(prediction, scanned, output_tail);
+  return prediction;
 }
 
 }  // namespace

@@ -31,6 +31,18 @@ TEST(ValidUtf8, ReplacesEachInvalidByte) {
   EXPECT_EQ(valid_utf8("x\xE2\x82"), "x" + kReplacement + kReplacement);
 }
 
+TEST(PrintableText, ReplacesInvalidUtf8AndControlCharacters) {
+  const std::string text = "r\xC3\xA9sum\xC3\xA9 \xE2\x80\x94 tab\tkept | 25 %";
+  EXPECT_EQ(printable_text(text), text);
+  // A segmenter's binary output: invalid bytes, NUL, an escape sequence, DEL,
+  // and U+009B (the C1 control sequence introducer), each one replacement.
+  EXPECT_EQ(printable_text(std::string("a\xFF") + '\0' + "b\x1B[31mc\x7F\xC2\x9B"),
+            "a" + kReplacement + kReplacement + "b" + kReplacement + "[31mc" + kReplacement +
+                kReplacement);
+  EXPECT_EQ(printable_text("line\nbreak\r"), "line" + kReplacement + "break" + kReplacement);
+  EXPECT_EQ(printable_text("\xC2\xA0nbsp"), "\xC2\xA0nbsp");  // U+00A0 is text
+}
+
 TEST(FormatJson, NonUtf8StringsAndKeysStillParse) {
   Json::Value report(Json::objectValue);
   report["input"] = "/data/r\xE9union/scan.pcd";

@@ -25,12 +25,12 @@ const std::string kConfig =
 TEST(StudyCli, ASegmenterCommandLeavesStdoutToTheJson) {
   const TempDir dir;
   // The "network" hands back the scanned cloud itself, labels and class names
-  // included: a perfect segmentation, read as a labelled cloud. Its chatter on
-  // stdout must not reach ours.
+  // included: a perfect segmentation, read as a labelled cloud (the default
+  // segmenter_output, ply) and paired by position. Its chatter on stdout must
+  // not reach ours.
   const CliRun run =
       run_cli(kConfig + " --pattern 1 --num-rays-per-vp 300 --out '" + dir.file("study") +
-              "' --segmenter 'echo chatter; cp {input} {output}' "
-              "--segmenter-output ply --json -q");
+              "' --segmenter 'echo chatter; cp {input} {output}' --json -q");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const Json::Value json = parse_json(run.out);
   EXPECT_EQ(json["job"].asString(), "study");
@@ -65,7 +65,8 @@ TEST(StudyCli, ExitCodesFollowTheContract) {
   EXPECT_NE(help.out.find("--shard I/N"), std::string::npos);
 }
 
-// As many labels as the scanned PLY has points, all wall (id 0).
+// As many labels as the scanned PLY has points, all wall (id 0): a bare label
+// file, so the studies that use it ask for one (--segmenter-output labels).
 const std::string kAllWall =
     "n=$(head -c 2000 {input} | sed -n \"s/^element vertex //p\"); "
     "awk -v n=$n \"BEGIN { for (i = 0; i < n; i++) print 0 }\" > {output}";
@@ -75,7 +76,7 @@ TEST(StudyCli, AFailedRunIsARowAndExitOneAfterTheWholeStudy) {
   const std::string study = kConfig + " --num-rays-per-vp 300 --out '" + dir.file("study") +
                             "' --segmenter 'case {input} in *pattern_4*) echo no GPU >&2; "
                             "exit 9;; esac; " +
-                            kAllWall + "' --json -q";
+                            kAllWall + "' --segmenter-output labels --json -q";
   const CliRun run = run_cli(study);
   EXPECT_EQ(run.exit_code, 1) << run.err;
   EXPECT_NE(run.err.find("1 runs failed"), std::string::npos) << run.err;
@@ -97,11 +98,11 @@ TEST(StudyCli, SigtermKeepsTheFinishedRowsAndStopsTheSegmenter) {
   const TempDir dir;
   const std::string started = dir.file("started");
   // pattern_7 is made; pattern_4's segmenter hangs until the signal.
-  const std::string study = "'" + std::string(OCCLUSION_CLI_PATH) + "' " + kConfig +
-                            " --pattern 7 --pattern 4 --num-rays-per-vp 300 --out '" +
-                            dir.file("study") +
-                            "' --segmenter 'case {input} in *pattern_4*) touch " + started +
-                            "; exec sleep 31.25;; esac; " + kAllWall + "' -q";
+  const std::string study =
+      "'" + std::string(OCCLUSION_CLI_PATH) + "' " + kConfig +
+      " --pattern 7 --pattern 4 --num-rays-per-vp 300 --out '" + dir.file("study") +
+      "' --segmenter 'case {input} in *pattern_4*) touch " + started +
+      "; exec sleep 31.25;; esac; " + kAllWall + "' --segmenter-output labels -q";
   const std::string script =
       study + " >'" + dir.file("out") + "' 2>'" + dir.file("err") +
       "' & pid=$!; for i in $(seq 1 600); do [ -e '" + started +

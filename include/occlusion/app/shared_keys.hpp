@@ -165,7 +165,9 @@ KeyBuilder<R> cloud_format_key(std::string R::*field, std::string doc) {
   return key("format", field).choices({"ply", "pcd"}).doc(std::move(doc));
 }
 
-// How a segmentation is scored: -eval and the study.
+// How a segmentation is scored: -eval and the study. (-eval's max_distance,
+// which transfers labels from other points, is its own: the study pairs a
+// prediction with its scan point by point, evaluate_keys.cpp.)
 template <class R>
 Keys<R> scoring_keys() {
   return {
@@ -177,12 +179,6 @@ Keys<R> scoring_keys() {
       key("ignored_classes", &R::ignored_classes)
           .metavar("A,B,...")
           .doc("classes left out of the scores, on top of the mapping's"),
-      key("max_distance", &R::max_distance)
-          .range(0, 1e6)
-          .unit("scene units")
-          .metavar("D")
-          .doc("a prediction on other points is transferred from its nearest point within D; "
-               "0: the points must be the ground truth's"),
       custom_key<R>(
           "mean_over", ValueType::kString,
           [](R& r, const Json::Value& v) { r.mean_over = *parse_mean_over(v.asString()); },

@@ -59,14 +59,17 @@ struct StudyRequest {
   // "baseline", or a shell command with {input} (the scanned cloud) and
   // {output} (where it must write its prediction) in it.
   std::string segmenter = kBaselineSegmenter;
-  std::string segmenter_output = "labels";  // extension of {output}: labels, ply, pcd or txt
+  // What the command writes to {output} (its extension): a cloud with
+  // coordinates and labels (ply, pcd, txt), paired with {input} point by
+  // point by position, so that every pairing is checked; or, when asked for,
+  // a bare label file (labels), whose order nothing can check.
+  std::string segmenter_output = "ply";
   // Seconds one segmenter command may run before it is killed and its run
   // marked failed; 0: no limit.
   double segmenter_timeout = 0.0;
   RegionGrowingOptions estimation = default_study_estimation();  // the baseline's planes
   std::string mapping_path;  // as -eval; "" = the seed's table 3.1
   std::vector<std::string> ignored_classes;
-  double max_distance = 0.05;              // as -eval, for predictions on other points
   MeanOver mean_over = MeanOver::support;  // as -eval: which classes mIoU averages
   std::string shard = "0/1";               // "i/n"
   std::string out;                         // required

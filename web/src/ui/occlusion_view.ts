@@ -131,7 +131,9 @@ export function occlusionCard(report: JobReport, names: string[] = []): HTMLElem
             testid: "openings-used",
           })
         : null,
-      h("div", { class: "mt-3" }, [table(head, rows, "viewpoint-table", true)]),
+      // -poc's five columns are wider than the panel at 1280 px unless the
+      // viewpoint's name and position may wrap.
+      h("div", { class: "mt-3" }, [table(head, rows, "viewpoint-table", true, [0, 1])]),
       groups,
       warnings(report.warnings),
     ],

@@ -178,15 +178,19 @@ export type Heading = string | { label: string; title: string };
 
 /**
  * A table of figures. `dense` (tighter cells, a smaller font, no wrapping) is for
- * tables with many numeric columns that must fit the panel's width.
+ * tables with many numeric columns that must fit the panel's width; the columns
+ * listed in `wrap` (names, coordinates) may still wrap, so that the table
+ * narrows to the panel instead of pushing its last columns out of view.
  */
 export function table(
   head: Heading[],
   rows: (string | HTMLElement)[][],
   testid?: string,
   dense = false,
+  wrap: readonly number[] = [],
 ): HTMLElement {
-  const pad = dense ? "whitespace-nowrap px-1 py-1" : "px-1.5 py-1";
+  const cell = (i: number) =>
+    !dense ? "px-1.5 py-1" : wrap.includes(i) ? "px-1 py-1" : "whitespace-nowrap px-1 py-1";
   return h("div", { class: "overflow-x-auto" }, [
     h(
       "table",
@@ -202,7 +206,7 @@ export function table(
             head.map((c, i) => {
               const { label, title } = typeof c === "string" ? { label: c, title: "" } : c;
               return h("th", {
-                class: `${pad} font-medium ${i ? "text-right" : ""} ${title ? "cursor-help" : ""}`,
+                class: `${cell(i)} font-medium ${i ? "text-right" : ""} ${title ? "cursor-help" : ""}`,
                 text: label,
                 title,
               });
@@ -217,7 +221,7 @@ export function table(
               "tr",
               { class: "border-t border-slate-800" },
               row.map((c, i) =>
-                h("td", { class: `${pad} ${i ? "text-right" : "text-slate-200"}` }, [c]),
+                h("td", { class: `${cell(i)} ${i ? "text-right" : "text-slate-200"}` }, [c]),
               ),
             ),
           ),

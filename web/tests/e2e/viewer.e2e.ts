@@ -166,6 +166,48 @@ describe("viewer (e2e)", () => {
     await screenshot(page, "03-occlusion");
   });
 
+  test("at 1280 × 800 the -poc per-viewpoint table keeps its last column inside the panel", async () => {
+    // Issue 29: at this size the table was wider than the results panel and
+    // its last column ("open.") lay beyond the panel's visible area.
+    await page.setViewportSize({ width: 1280, height: 800 });
+    try {
+      await page.locator("[data-testid=occlusion-card] [data-testid=viewpoint-table]").waitFor();
+      const overflow = await page.evaluate(() => {
+        const table = document.querySelector(
+          "[data-testid=occlusion-card] [data-testid=viewpoint-table]",
+        )!;
+        // What the user can see: the panel, cut by every ancestor that clips
+        // (its client area, scroll bars excluded).
+        let left = -Infinity;
+        let right = Infinity;
+        for (let e = table.parentElement; e; e = e.parentElement) {
+          const style = getComputedStyle(e);
+          if (style.overflowX === "visible" && e.id !== "results") continue;
+          const box = e.getBoundingClientRect();
+          left = Math.max(left, box.left + e.clientLeft);
+          right = Math.min(right, box.left + e.clientLeft + e.clientWidth);
+        }
+        const lastCells = [...table.querySelectorAll("tr")].map((row) => {
+          const box = row.lastElementChild!.getBoundingClientRect();
+          return { text: row.lastElementChild!.textContent, left: box.left, right: box.right };
+        });
+        return { left, right, lastCells };
+      });
+      await screenshot(page, "03-occlusion-1280x800");
+      expect(overflow.lastCells.length).toBe(4); // the heading and three viewpoints
+      for (const cell of overflow.lastCells) {
+        expect(cell.left, JSON.stringify({ cell, overflow })).toBeGreaterThanOrEqual(
+          overflow.left - 0.5,
+        );
+        expect(cell.right, JSON.stringify({ cell, overflow })).toBeLessThanOrEqual(
+          overflow.right + 0.5,
+        );
+      }
+    } finally {
+      await page.setViewportSize({ width: 1400, height: 860 });
+    }
+  });
+
   test("with the defaults, -poc and -fscan send no point model and give the CLI's answers", async () => {
     // Nothing the user left alone is sent: the server's defaults apply (discs, point_radius auto).
     const poc = lastSent("cloud_occlusion");
