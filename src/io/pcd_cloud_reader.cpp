@@ -531,7 +531,7 @@ class PcdCloudReader {
       }
     }
     for (ScalarField& field : extra) report_.extra_fields.push_back(std::move(field));
-    cloud.shift = shifted_.shift();
+    cloud.shift = shifted_.checked_shift(path_);
     cloud.sensor.origin = cloud.to_local(cloud.sensor.origin);
     return cloud;
   }
