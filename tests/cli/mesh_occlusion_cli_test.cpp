@@ -114,6 +114,25 @@ TEST(Cli, VertexLinesWithJunkExitThreeAndLoneCrEndsALine) {
   EXPECT_NEAR(json["total_area"].asDouble(), 1.0, 1e-12);
 }
 
+// Samples are counted before any is drawn: legs of 1e10 gave 0 samples and a
+// null level with exit 0, legs of 1e9 an internal length error. Refused
+// (usage, exit 2) with the count and the key to lower, budget or none.
+TEST(Cli, SampleCountBeyondMemoryIsRefusedUpFront) {
+  const TempDir dir;
+  for (const std::string leg : {"1e10", "1e9", "1e5"}) {
+    dir.write("huge.obj", "v 0 0 0\nv " + leg + " 0 0\nv 0 " + leg + " 0\nf 1 2 3\n");
+    const CliRun run = run_cli("-moc '" + dir.file("huge.obj") + "' --pattern 1 -q");
+    EXPECT_EQ(run.exit_code, 2) << leg << ": " << run.err;
+    EXPECT_NE(run.err.find(" samples x 1 viewpoints"), std::string::npos) << leg << run.err;
+    EXPECT_NE(run.err.find("lower samples_per_unit_area"), std::string::npos) << leg << run.err;
+  }
+  const CliRun budget = run_cli("-moc '" + dir.file("huge.obj") +
+                                "' --pattern 1 -q --samples-per-unit-area 0.01 --max-memory-mb 1");
+  EXPECT_EQ(budget.exit_code, 2) << budget.err;
+  EXPECT_NE(budget.err.find("50,000,000 samples"), std::string::npos) << budget.err;
+  EXPECT_NE(budget.err.find("max_memory_mb = 1"), std::string::npos) << budget.err;
+}
+
 TEST(Cli, UsageErrorsExitTwo) {
   for (const std::string args :
        {"-moc", "-moc x.obj --pattern 9", "-moc x.obj --pattern", "-moc x.obj --seed abc",
