@@ -39,40 +39,53 @@ inline void check_positive(double value, const std::string& name, const std::str
   }
 }
 
-// Clouds are traced in float, in their local frame (the readers subtract a
-// global shift from clouds far from the origin, PointCloud::shift): at a
-// distance d from that frame's origin, neighbouring floats are d * 2^-23
-// apart. Throws std::invalid_argument when a point or viewpoint is so far out
-// that this spacing exceeds a quarter of point_radius, where rays pass between
+// What check_float_precision measures against: the length rays must
+// resolve (a cloud's point radius, a mesh's diagonal), the point distances
+// are measured from, and the scene's name.
+struct PrecisionFrame {
+  double length = 0.0;
+  std::string length_name;  // "point_radius"
+  std::string origin;       // "the origin of the cloud's local frame (...)"
+  std::string scene;        // "cloud", "mesh"
+};
+
+// Scenes are traced in float, in a local frame (the readers subtract a global
+// shift from clouds far from the origin, PointCloud::shift; mesh occlusion
+// traces around the mesh's centre): at a distance d from that frame's origin,
+// neighbouring floats are d * 2^-23 apart. Throws std::invalid_argument when
+// the scene or a viewpoint is so far out that this spacing exceeds a quarter
+// of frame.length. For a cloud that length is point_radius: rays pass between
 // the spheres they should hit (a viewpoint at 1e20 saw through closed walls).
-// After the shift this is a cloud whose own extent is too large for float at
-// its radius, or a viewpoint far from the cloud.
-inline void check_float_precision(const Eigen::Vector3f& cloud_lo, const Eigen::Vector3f& cloud_hi,
+// For a mesh it is its diagonal: from there the whole mesh lies within a few
+// float steps of one direction, and rays that graze a face decide by rounding
+// whether they hit (a viewpoint 1e10 from a box answered 0.8171, not 0.8837).
+// After the shift this is a scene whose own extent is too large for float, or
+// a viewpoint far from the scene.
+inline void check_float_precision(const Eigen::Vector3f& scene_lo, const Eigen::Vector3f& scene_hi,
                                   const std::vector<Eigen::Vector3d>& viewpoints,
-                                  double point_radius, const std::string& analysis) {
+                                  const PrecisionFrame& frame, const std::string& analysis) {
   constexpr double kFloatSpacing = 1.0 / (1 << 23);
-  const double limit = 0.25 * point_radius / kFloatSpacing;
+  const double limit = 0.25 * frame.length / kFloatSpacing;
   const auto refuse = [&](const std::string& what, double distance, const std::string& fix) {
     throw std::invalid_argument(
-        analysis + ": " + what + " " + std::to_string(distance) +
-        " units from the origin of the cloud's local frame (its coordinates minus its global "
-        "shift), where float coordinates are " +
-        std::to_string(distance * kFloatSpacing) + " units apart, too coarse for point_radius " +
-        std::to_string(point_radius) + "; everything must lie within " + std::to_string(limit) +
-        " units of it: " + fix);
+        analysis + ": " + what + " " + std::to_string(distance) + " units from " + frame.origin +
+        ", where float coordinates are " + std::to_string(distance * kFloatSpacing) +
+        " units apart, too coarse for " + frame.length_name + " " + std::to_string(frame.length) +
+        "; everything must lie within " + std::to_string(limit) + " units of it: " + fix);
   };
-  const double cloud_extent = std::max(cloud_lo.cast<double>().cwiseAbs().maxCoeff(),
-                                       cloud_hi.cast<double>().cwiseAbs().maxCoeff());
-  if (cloud_extent > limit) {
-    refuse("the cloud reaches", cloud_extent,
-           "split the cloud into smaller tiles, or shift its coordinates so it starts near the "
-           "origin");
+  const double scene_extent = std::max(scene_lo.cast<double>().cwiseAbs().maxCoeff(),
+                                       scene_hi.cast<double>().cwiseAbs().maxCoeff());
+  if (scene_extent > limit) {
+    refuse("the " + frame.scene + " reaches", scene_extent,
+           "split the " + frame.scene +
+               " into smaller tiles, or shift its coordinates so it starts near the origin");
   }
   for (const auto& viewpoint : viewpoints) {
     const double distance = viewpoint.cwiseAbs().maxCoeff();
     if (distance > limit) {
       refuse("a viewpoint lies", distance,
-             "place viewpoints near the cloud, in the cloud file's own coordinates");
+             "place viewpoints near the " + frame.scene + ", in the " + frame.scene +
+                 " file's own coordinates");
     }
   }
 }
@@ -95,7 +108,12 @@ inline void check_point_model(const PointCloud& cloud,
   check_positive(radius, "point_radius", analysis);
   Eigen::Vector3f lo, hi;
   cloud.bounds(lo, hi);
-  check_float_precision(lo, hi, viewpoints, radius, analysis);
+  check_float_precision(lo, hi, viewpoints,
+                        {radius, "point_radius",
+                         "the origin of the cloud's local frame (its coordinates minus its global "
+                         "shift)",
+                         "cloud"},
+                        analysis);
 }
 
 }  // namespace occlusion::analysis_support

@@ -40,6 +40,18 @@ void check_inputs(const TriangleMesh& mesh, const std::vector<Eigen::Vector3d>& 
   if (mesh.faces.empty()) throw std::invalid_argument("mesh occlusion: the mesh has no faces");
   analysis_support::check_viewpoints(viewpoints, "mesh occlusion");
   analysis_support::check_positive(options.epsilon_scale, "epsilon_scale", "mesh occlusion");
+  // Viewpoints as far as float can trace from, by the cloud analyses' rule,
+  // in the frame the rays are traced in (around the mesh's centre).
+  Eigen::Vector3d lo, hi;
+  mesh.bounds(lo, hi);
+  const Eigen::Vector3d centre = 0.5 * (lo + hi);
+  const double diagonal = (hi - lo).norm();
+  if (!(diagonal > 0.0)) return;  // only degenerate faces: refused once their area is summed
+  std::vector<Eigen::Vector3d> local_viewpoints;
+  for (const auto& viewpoint : viewpoints) local_viewpoints.push_back(viewpoint - centre);
+  analysis_support::check_float_precision(
+      (lo - centre).cast<float>(), (hi - centre).cast<float>(), local_viewpoints,
+      {diagonal, "the mesh's diagonal", "the mesh's centre", "mesh"}, "mesh occlusion");
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "occlusion/core/random.hpp"
@@ -9,9 +10,24 @@
 
 namespace occlusion {
 
+namespace {
+
+constexpr std::size_t kCountLimit = std::numeric_limits<std::size_t>::max();
+
+// a + b, saturating at kCountLimit.
+std::size_t plus(std::size_t a, std::size_t b) {
+  return a > kCountLimit - b ? kCountLimit : a + b;
+}
+
+}  // namespace
+
 std::size_t samples_for_area(double area, double samples_per_unit_area) {
   const double wanted = std::round(area * samples_per_unit_area);
-  return wanted < 1.0 ? 1 : static_cast<std::size_t>(wanted);
+  if (wanted < 1.0) return 1;
+  // 2^64 and beyond (and NaN) saturate: converted, they were undefined and
+  // came out as 0 samples or a length error.
+  if (!(wanted < 18446744073709551616.0)) return kCountLimit;
+  return static_cast<std::size_t>(wanted);
 }
 
 namespace {
@@ -30,7 +46,7 @@ void check_density(double samples_per_unit_area) {
 std::size_t total_samples(const TriangleMesh& mesh, double samples_per_unit_area) {
   std::size_t total = 0;
   for (std::size_t f = 0; f < mesh.face_count(); ++f) {
-    total += samples_for_area(mesh.face_area(f), samples_per_unit_area);
+    total = plus(total, samples_for_area(mesh.face_area(f), samples_per_unit_area));
   }
   return total;
 }
@@ -65,9 +81,15 @@ MeshSamples sample_mesh(const TriangleMesh& mesh, double samples_per_unit_area, 
   samples.first[0] = 0;
   for (std::size_t f = 0; f < face_count; ++f) {
     samples.first[f + 1] =
-        samples.first[f] + samples_for_area(mesh.face_area(f), samples_per_unit_area);
+        plus(samples.first[f], samples_for_area(mesh.face_area(f), samples_per_unit_area));
   }
   const std::size_t total = samples.first[face_count];
+  if (total > samples.points.max_size()) {
+    throw std::invalid_argument(
+        "mesh sampling: samples_per_unit_area " + std::to_string(samples_per_unit_area) +
+        " gives " + (total == kCountLimit ? "more than " : "") + std::to_string(total) +
+        " samples on this mesh, more than can be held; lower samples_per_unit_area");
+  }
   samples.points.resize(total);
   samples.face.resize(total);
   std::size_t next_check = kSamplesPerBlock;

@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <limits>
 
+#include <unistd.h>
+
 #include "occlusion/analysis/mesh_sampling.hpp"
 #include "occlusion/app/errors.hpp"
 #include "occlusion/core/parallel.hpp"
@@ -33,6 +35,11 @@ std::string count(std::uint64_t n) {
   return digits;
 }
 
+// A saturated count is a bound, not a count.
+std::string at_least(std::uint64_t n) {
+  return n == kMax ? "more than " + count(n) : count(n);
+}
+
 std::string megabytes(std::uint64_t bytes) {
   char text[64];
   std::snprintf(text, sizeof text, "%.0f MB", static_cast<double>(bytes) / kMegabyte);
@@ -49,23 +56,40 @@ constexpr std::uint64_t kDiscModelBytes = 96;
 
 }  // namespace
 
+std::uint64_t machine_memory_mb() {
+  const long pages = ::sysconf(_SC_PHYS_PAGES);
+  const long page_size = ::sysconf(_SC_PAGE_SIZE);
+  if (pages <= 0 || page_size <= 0) return 0;
+  return times(static_cast<std::uint64_t>(pages), static_cast<std::uint64_t>(page_size)) /
+         kMegabyte;
+}
+
 void check_memory_budget(const MemoryEstimate& estimate, std::uint64_t max_memory_mb) {
-  if (max_memory_mb == 0 || estimate.bytes <= times(max_memory_mb, kMegabyte)) return;
-  throw UsageError("this work needs about " + megabytes(estimate.bytes) + " (" + estimate.made_of +
-                   "), more than max_memory_mb = " + count(max_memory_mb) +
-                   ": ask for less, or raise max_memory_mb where the machine has the memory");
+  const std::string needs = std::string("this work needs ") +
+                            (estimate.bytes == kMax ? "more than " : "about ") +
+                            megabytes(estimate.bytes) + " (" + estimate.made_of + "), ";
+  const std::string ask = estimate.lower.empty() ? "ask for less" : "lower " + estimate.lower;
+  if (max_memory_mb == 0) {
+    // No budget still cannot mean more than the machine has: such work would
+    // end in an allocation failure (or the kernel's OOM killer) after its
+    // other stages had run.
+    const std::uint64_t machine = machine_memory_mb();
+    if (machine == 0 || estimate.bytes <= times(machine, kMegabyte)) return;
+    throw UsageError(needs + "more than this machine's memory (" + count(machine) + " MB): " + ask);
+  }
+  if (estimate.bytes <= times(max_memory_mb, kMegabyte)) return;
+  throw UsageError(needs + "more than max_memory_mb = " + count(max_memory_mb) + ": " + ask +
+                   ", or raise max_memory_mb where the machine has the memory");
 }
 
 MemoryEstimate mesh_occlusion_memory(const TriangleMesh& mesh, double samples_per_unit_area,
                                      std::size_t viewpoints) {
-  std::uint64_t samples = 0;
-  for (std::size_t f = 0; f < mesh.face_count(); ++f) {
-    samples = plus(samples, samples_for_area(mesh.face_area(f), samples_per_unit_area));
-  }
+  const std::uint64_t samples = total_samples(mesh, samples_per_unit_area);
   // Per sample: its point (24 bytes) and face (4), and one byte per viewpoint.
   std::uint64_t bytes = times(samples, 28 + static_cast<std::uint64_t>(viewpoints));
   bytes = plus(bytes, times(mesh.face_count(), kTriangleOctreeBytes));
-  return {bytes, count(samples) + " samples x " + count(viewpoints) + " viewpoints"};
+  return {bytes, at_least(samples) + " samples x " + count(viewpoints) + " viewpoints",
+          "samples_per_unit_area"};
 }
 
 MemoryEstimate cloud_occlusion_memory(std::size_t points, std::size_t viewpoints,
@@ -79,15 +103,17 @@ MemoryEstimate cloud_occlusion_memory(std::size_t points, std::size_t viewpoints
     made_of += ", " + count(rays_per_viewpoint) + " rays x " + count(viewpoints) +
                " viewpoints of escape directions";
   }
-  return {bytes, made_of};
+  return {bytes, made_of, keep_escapes ? "num_rays_per_vp" : ""};
 }
 
 MemoryEstimate scan_memory(std::size_t points, std::size_t viewpoints, bool discs) {
   // The octree, the counts, and the written subset (a copy of the cloud at most).
   const std::uint64_t bytes =
       times(points, kSphereOctreeBytes + 4 + 32 + (discs ? kDiscModelBytes : 0));
-  return {bytes, count(points) + (discs ? " points as discs, " : " points, ") + count(viewpoints) +
-                     " viewpoints"};
+  return {bytes,
+          count(points) + (discs ? " points as discs, " : " points, ") + count(viewpoints) +
+              " viewpoints",
+          ""};
 }
 
 MemoryEstimate region_growing_memory(std::size_t points, const RegionGrowingOptions& options) {
@@ -99,8 +125,10 @@ MemoryEstimate region_growing_memory(std::size_t points, const RegionGrowingOpti
   // the search gives at most every point.
   const std::uint64_t k = std::min<std::uint64_t>(options.normal_k, points);
   bytes = plus(bytes, times(times(resolve_thread_count(options.threads), k), 8));
-  return {bytes, count(points) + " points, " + count(options.neighbours) +
-                     " neighbours each, normal_k " + count(options.normal_k)};
+  return {bytes,
+          count(points) + " points, " + count(options.neighbours) + " neighbours each, normal_k " +
+              count(options.normal_k),
+          "neighbours"};
 }
 
 }  // namespace occlusion

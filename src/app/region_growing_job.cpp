@@ -72,12 +72,14 @@ RegionGrowingReport run_region_growing_occlusion(const RegionGrowingRequest& req
   // Viewpoints on the cloud's box, as -poc and -fscan place them.
   const ViewpointChoice::Resolved viewpoints = job::resolve_for_cloud(request.viewpoints, cloud);
   report.viewpoint_names = viewpoints.names;
-  check_memory_budget(mesh_occlusion_memory(report.estimate.mesh, request.samples_per_unit_area,
-                                            viewpoints.positions.size()),
-                      request.max_memory_mb);
-  MeshOcclusionOptions options;
   report.samples_per_unit_area = density_for_min_samples(
       report.estimate.mesh, request.samples_per_unit_area, request.min_samples);
+  // The budget holds the samples min_samples asks for, not only the density's.
+  MemoryEstimate memory = mesh_occlusion_memory(report.estimate.mesh, report.samples_per_unit_area,
+                                                viewpoints.positions.size());
+  if (report.samples_per_unit_area > request.samples_per_unit_area) memory.lower = "min_samples";
+  check_memory_budget(memory, request.max_memory_mb);
+  MeshOcclusionOptions options;
   options.samples_per_unit_area = report.samples_per_unit_area;
   options.octree.min_cell_size = static_cast<float>(request.octree_resolution);
   options.octree.enable_acceleration = request.enable_acceleration;

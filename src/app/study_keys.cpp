@@ -104,6 +104,7 @@ const Keys<StudyRequest>& study_keys() {
                 "one line scores as a slightly worse segmentation)"),
        cloud_format_key(&R::format, "format of the scanned clouds in OUT/runs"),
        key("shard", &R::shard).metavar("I/N").doc("make only the runs k with k mod N = I"),
+       max_memory_key(&R::max_memory_mb),
        out_key(&R::out, "study.csv, study.md, study.svg, study.json, runs/")},
       mount(cloud_tracing_keys(), &R::tracing),
       {self_tolerance_key(&R::self_tolerance)},

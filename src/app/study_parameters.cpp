@@ -75,7 +75,7 @@ Json::Value row_parameters(const StudyRequest& q) {
   Json::Value p = parameters_json(study_keys(), q);
   for (const char* key :
        {"scenes", "configurations", "patterns", "shard", "out", "threads", "skip_failed", "fresh",
-        "segmenter_timeout", "polygon_path", "mapping_path"}) {
+        "segmenter_timeout", "polygon_path", "mapping_path", "max_memory_mb"}) {
     p.removeMember(key);
   }
   p["segmenter"] = segmenter_name(q.segmenter);

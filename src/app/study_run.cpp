@@ -56,6 +56,7 @@ ScanRequest study_scan_request(const StudyRequest& request, const std::string& s
   scan.format = request.format;
   scan.skip_bad_lines = request.tracing.skip_bad_lines;
   scan.threads = request.tracing.threads;
+  scan.max_memory_mb = request.max_memory_mb;
   return scan;
 }
 
@@ -105,6 +106,7 @@ StudyRow run_study_once(const StudyContext& context, const StudyRunInput& run,
   tracing.path = run.scene_path;  // names the scene in messages
   tracing.out.clear();
   tracing.escape_directions = false;
+  tracing.max_memory_mb = request.max_memory_mb;
   const CloudOcclusionReport occlusion = run_cloud_occlusion_on(
       scanned, measuring_viewpoints(request, cloud, viewpoints), context.openings, tracing, inner);
   row.occlusion_level = occlusion.result.occlusion_level;

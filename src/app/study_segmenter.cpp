@@ -5,6 +5,7 @@
 #include "evaluation_support.hpp"
 #include "occlusion/analysis/baseline_segmenter.hpp"
 #include "occlusion/app/errors.hpp"
+#include "occlusion/app/memory_budget.hpp"
 #include "occlusion/core/exact_match.hpp"
 #include "occlusion/io/input_error.hpp"
 #include "occlusion/io/label_file.hpp"
@@ -52,6 +53,7 @@ Prediction baseline(const StudyContext& context, const PointCloud& scanned, cons
   if (scanned.size() >= 3) {
     RegionGrowingOptions options = request.estimation;
     options.threads = request.tracing.threads;
+    check_memory_budget(region_growing_memory(scanned.size(), options), request.max_memory_mb);
     try {
       estimate = estimate_mesh(scanned, options, progress);
     } catch (const NoPlaneFound& e) {

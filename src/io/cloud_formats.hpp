@@ -22,20 +22,34 @@ class ShiftedPositions {
  public:
   explicit ShiftedPositions(const std::optional<Eigen::Vector3d>& preset)
       : shift_(preset.value_or(Eigen::Vector3d::Zero())), chosen_(preset.has_value()) {}
-  // Not finite where a coordinate is not (the readers drop such points).
+  // Not finite where a coordinate is not (the readers drop such points), nor
+  // where a finite point lies beyond float's range once shifted (counted, and
+  // refused by checked_shift).
   Eigen::Vector3f local(const double xyz[3]) {
     const Eigen::Vector3d p(xyz[0], xyz[1], xyz[2]);
     if (!chosen_ && p.cast<float>().allFinite()) {
       shift_ = choose_global_shift(p);
       chosen_ = true;
     }
-    return (p - shift_).cast<float>();
+    const Eigen::Vector3f position = (p - shift_).cast<float>();
+    ++points_;
+    if (!position.allFinite() && p.allFinite()) {
+      if (overflowed_++ == 0) first_overflow_ = p;
+    }
+    return position;
   }
-  const Eigen::Vector3d& shift() const { return shift_; }
+  // The shift, once every point has been read. Throws InputError (file-wide,
+  // for `source`) when a finite point did not fit in float: dropping it as if
+  // it were NaN would answer quietly for another cloud (corners of a ±2e38
+  // cube, shifted by the first one, left 25 of 200 points).
+  const Eigen::Vector3d& checked_shift(const std::string& source) const;
 
  private:
   Eigen::Vector3d shift_;
   bool chosen_;
+  std::size_t points_ = 0;
+  std::size_t overflowed_ = 0;
+  Eigen::Vector3d first_overflow_ = Eigen::Vector3d::Zero();
 };
 
 PointCloud read_pcd(const std::string& path, const CloudReadOptions& options,

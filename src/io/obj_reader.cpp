@@ -120,7 +120,30 @@ class ObjParser {
         fail(line_number, "vertex coordinate '" + std::string(token) + "' is not finite");
       }
     }
+    check_vertex_extras(tokens, line_number);
     mesh_.vertices.emplace_back(xyz[0], xyz[1], xyz[2]);
+  }
+
+  // After x y z a vertex may carry a weight (w) or a colour (r g b, r g b a:
+  // MeshLab's and others' extension), which are not used. Anything else is
+  // refused: text there is the sign of a broken file (statements run
+  // together), not something to skip.
+  void check_vertex_extras(Tokens& tokens, std::size_t line_number) {
+    int extras = 0;
+    for (std::string_view token = tokens.next(); !token.empty(); token = tokens.next()) {
+      double value = 0;
+      if (!detail::parse_double(token, value)) {
+        fail(line_number, "vertex has " + detail::quoted(token) +
+                              " after its coordinates, where only numbers may follow (x y z "
+                              "[w] or x y z r g b [a])");
+      }
+      ++extras;
+    }
+    if (extras == 2 || extras > 4) {
+      fail(line_number, "vertex has " + std::to_string(3 + extras) +
+                            " numbers, expected 3 (x y z), 4 (x y z w), 6 or 7 (x y z r g b "
+                            "[a])");
+    }
   }
 
   void face(Tokens& tokens, std::size_t line_number) {

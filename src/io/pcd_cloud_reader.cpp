@@ -100,7 +100,7 @@ class PcdCloudReader {
     std::vector<std::uint64_t> points;
     std::string_view data;
     std::size_t data_end = 0;
-    Lines lines(bytes_);
+    Lines lines(bytes_, 1, LineEnds::kLfOnly);  // counts bytes to the data
     std::string_view line;
     while (lines.next(line)) {
       data_end += line.size() + 1;
@@ -236,7 +236,7 @@ class PcdCloudReader {
 
     // Class names ride in comments, which PCL skips.
     ClassNameList names;
-    Lines lines(std::string_view(bytes_).substr(0, data_index_));
+    Lines lines(std::string_view(bytes_).substr(0, data_index_), 1, LineEnds::kLfOnly);
     std::string_view line;
     while (lines.next(line)) {
       if (line.empty() || line[0] != '#') continue;
@@ -531,7 +531,7 @@ class PcdCloudReader {
       }
     }
     for (ScalarField& field : extra) report_.extra_fields.push_back(std::move(field));
-    cloud.shift = shifted_.shift();
+    cloud.shift = shifted_.checked_shift(path_);
     cloud.sensor.origin = cloud.to_local(cloud.sensor.origin);
     return cloud;
   }

@@ -80,7 +80,7 @@ class PlyCloudReader : public PlySink {
     for (std::size_t f = 0; f < extra_.size(); ++f) {
       report_.extra_fields.push_back(std::move(extra_[f]));
     }
-    cloud_.shift = shifted_.shift();
+    cloud_.shift = shifted_.checked_shift(path_);
     return std::move(cloud_);
   }
 

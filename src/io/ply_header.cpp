@@ -69,7 +69,7 @@ PlyHeader parse_header(std::string_view bytes, const std::string& path) {
   ClassNameList class_names;
   bool have_format = false;
   bool ended = false;
-  Lines lines(bytes);
+  Lines lines(bytes, 1, LineEnds::kLfOnly);  // counts bytes to the body
   std::string_view line;
   std::size_t consumed = 0;
   while (!ended && lines.next(line)) {

@@ -60,7 +60,7 @@ class TextCloudParser {
       }
       add(point);
     }
-    cloud_.shift = shifted_.shift();
+    cloud_.shift = shifted_.checked_shift(source_);
     return std::move(cloud_);
   }
 

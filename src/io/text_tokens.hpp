@@ -47,18 +47,32 @@ class Tokens {
   std::string_view rest_;
 };
 
+// Where lines end. Text ends a line at LF, CR LF or a lone CR (old Mac
+// files, and files whose tools mixed the conventions): read as one line, a
+// CR-separated file ran its statements together, and readers that ignored
+// trailing fields lost the later ones. Headers followed by binary data (PLY,
+// PCD) end lines at LF only, keeping a CR in the line: their byte counts
+// find where the data starts, and its first byte may be an LF.
+enum class LineEnds { kAny, kLfOnly };
+
 // Steps through text line by line, counting from 1, with or without a final newline.
 class Lines {
  public:
-  explicit Lines(std::string_view text, std::size_t first_number = 1)
-      : text_(text), next_number_(first_number) {}
+  explicit Lines(std::string_view text, std::size_t first_number = 1,
+                 LineEnds ends = LineEnds::kAny)
+      : text_(text), next_number_(first_number), ends_(ends) {}
 
   bool next(std::string_view& line) {
     if (position_ >= text_.size()) return false;
-    std::size_t end = text_.find('\n', position_);
+    std::size_t end = ends_ == LineEnds::kAny ? text_.find_first_of("\r\n", position_)
+                                              : text_.find('\n', position_);
     if (end == std::string_view::npos) end = text_.size();
     line = text_.substr(position_, end - position_);
     position_ = end + 1;
+    if (end < text_.size() && text_[end] == '\r' && position_ < text_.size() &&
+        text_[position_] == '\n') {
+      ++position_;
+    }
     number_ = next_number_++;
     return true;
   }
@@ -68,6 +82,7 @@ class Lines {
   std::string_view text_;
   std::size_t position_ = 0;
   std::size_t next_number_;
+  LineEnds ends_;
   std::size_t number_ = 0;
 };
 

@@ -9,13 +9,12 @@
 #include <websocketpp/config/asio_no_tls.hpp>
 #include <websocketpp/server.hpp>
 
-#include <unistd.h>
-
 #include <atomic>
 #include <cstdio>
 #include <map>
 #include <stdexcept>
 
+#include "occlusion/app/memory_budget.hpp"
 #include "occlusion/server/static_files.hpp"
 #include "outbox.hpp"
 #include "server_context.hpp"
@@ -142,10 +141,8 @@ namespace {
 // Half the physical memory: room for two jobs and the scene cache. 4 GB when
 // the system does not say.
 std::uint64_t half_of_memory_mb() {
-  const long pages = ::sysconf(_SC_PHYS_PAGES);
-  const long page_size = ::sysconf(_SC_PAGE_SIZE);
-  if (pages <= 0 || page_size <= 0) return 4096;
-  return static_cast<std::uint64_t>(pages) / 2 * static_cast<std::uint64_t>(page_size) >> 20;
+  const std::uint64_t machine = machine_memory_mb();
+  return machine == 0 ? 4096 : machine / 2;
 }
 
 Limits limits_of(const ServerOptions& options) {

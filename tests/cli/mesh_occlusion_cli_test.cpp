@@ -99,6 +99,40 @@ TEST(Cli, InputErrorsExitThree) {
   EXPECT_NE(bad.err.find("bad.obj:4"), std::string::npos) << bad.err;
 }
 
+// A vertex line with text after its numbers, or statements separated by a
+// lone CR, answered for another mesh with exit 0.
+TEST(Cli, VertexLinesWithJunkExitThreeAndLoneCrEndsALine) {
+  const TempDir dir;
+  dir.write("junk.obj", "v 0 0 0\nv 1 0 0 hello world\nv 0 1 0\nf 1 2 3\n");
+  const CliRun junk = run_cli("-moc '" + dir.file("junk.obj") + "' -q");
+  EXPECT_EQ(junk.exit_code, 3);
+  EXPECT_NE(junk.err.find("junk.obj:2: vertex has 'hello'"), std::string::npos) << junk.err;
+  // Two triangles of a unit square; the second's vertices follow CRs.
+  dir.write("mac.obj", "v 0 0 0\nv 1 0 0\rv 1 1 0\rv 0 1 0\nf 1 2 3\nf 1 3 4\n");
+  const Json::Value json = run_json("-moc '" + dir.file("mac.obj") + "' --viewpoint 0.5,0.5,1");
+  EXPECT_EQ(json["faces"].asUInt64(), 2u);
+  EXPECT_NEAR(json["total_area"].asDouble(), 1.0, 1e-12);
+}
+
+// Samples are counted before any is drawn: legs of 1e10 gave 0 samples and a
+// null level with exit 0, legs of 1e9 an internal length error. Refused
+// (usage, exit 2) with the count and the key to lower, budget or none.
+TEST(Cli, SampleCountBeyondMemoryIsRefusedUpFront) {
+  const TempDir dir;
+  for (const std::string leg : {"1e10", "1e9", "1e5"}) {
+    dir.write("huge.obj", "v 0 0 0\nv " + leg + " 0 0\nv 0 " + leg + " 0\nf 1 2 3\n");
+    const CliRun run = run_cli("-moc '" + dir.file("huge.obj") + "' --pattern 1 -q");
+    EXPECT_EQ(run.exit_code, 2) << leg << ": " << run.err;
+    EXPECT_NE(run.err.find(" samples x 1 viewpoints"), std::string::npos) << leg << run.err;
+    EXPECT_NE(run.err.find("lower samples_per_unit_area"), std::string::npos) << leg << run.err;
+  }
+  const CliRun budget = run_cli("-moc '" + dir.file("huge.obj") +
+                                "' --pattern 1 -q --samples-per-unit-area 0.01 --max-memory-mb 1");
+  EXPECT_EQ(budget.exit_code, 2) << budget.err;
+  EXPECT_NE(budget.err.find("50,000,000 samples"), std::string::npos) << budget.err;
+  EXPECT_NE(budget.err.find("max_memory_mb = 1"), std::string::npos) << budget.err;
+}
+
 TEST(Cli, UsageErrorsExitTwo) {
   for (const std::string args :
        {"-moc", "-moc x.obj --pattern 9", "-moc x.obj --pattern", "-moc x.obj --seed abc",

@@ -186,6 +186,25 @@ TEST(RegionGrowingCli, SmallSceneGetsTheMinimumSampleBudget) {
   EXPECT_NEAR(moc["occlusion_level"].asDouble(), json["occlusion_level"].asDouble(), 1e-12);
 }
 
+// min_samples sizes the work as much as the density does: 3e7 samples ran
+// (about 0.9 GB) under a 50 MB budget, because the estimate took the density
+// before min_samples raised it. Refused up front, naming min_samples.
+TEST(RegionGrowingCli, MinSamplesIsInTheMemoryBudget) {
+  const TempDir dir;
+  dir.write("box.txt", box_room_text(0.1));
+  const std::string box = "-rgoc '" + dir.file("box.txt") + "' -q";
+  const CliRun run = run_cli(box + " --min-samples 30000000 --max-memory-mb 50");
+  EXPECT_EQ(run.exit_code, 2) << run.err;
+  EXPECT_NE(run.err.find("30,000,"), std::string::npos) << run.err;  // the sample count
+  EXPECT_NE(run.err.find("lower min_samples"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("max_memory_mb = 50"), std::string::npos) << run.err;
+  // With no budget, more than any machine holds is refused the same way.
+  const CliRun absurd = run_cli(box + " --min-samples 1000000000000");
+  EXPECT_EQ(absurd.exit_code, 2) << absurd.err;
+  EXPECT_NE(absurd.err.find("lower min_samples"), std::string::npos) << absurd.err;
+  EXPECT_EQ(run_cli(box + " --min-samples 20000 --max-memory-mb 50").exit_code, 0);
+}
+
 TEST(RegionGrowingCli, ExampleConfigRuns) {
   const TempDir dir;
   const Json::Value json =

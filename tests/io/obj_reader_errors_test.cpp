@@ -97,6 +97,16 @@ TEST(ObjReaderErrors, NumberWithTrailingGarbage) {
   expect_error("v 0 0 0\nv 1 2 3x\n", 2, "'3x' is not a number");
 }
 
+// Text after a vertex's numbers was ignored, so statements run together on
+// one line (a lone CR read as no line end) lost their vertices silently.
+TEST(ObjReaderErrors, TextAfterAVertexsNumbers) {
+  expect_error("v 0 0 0\nv 1 0 0 hello world\n", 2,
+               "vertex has 'hello' after its coordinates, where only numbers may follow");
+  expect_error("v 0 0 0 1 v 1 0 0\n", 1, "'v' after its coordinates");
+  expect_error("v 0 0 0 0.5 0.5\n", 1, "vertex has 5 numbers");
+  expect_error("v 0 0 0 1 2 3 4 5\n", 1, "vertex has 8 numbers");
+}
+
 TEST(ObjReaderErrors, MissingCoordinate) {
   expect_error("v 0 0 0\n\nv 1 2\n", 3, "2 coordinates, expected 3");
   expect_error("v\n", 1, "0 coordinates");
@@ -153,6 +163,11 @@ TEST(ObjReaderErrors, LineNumbersCountContinuedAndCrlfLines) {
   expect_error("v 0 0 0\r\nv 1 0 0\r\nv 0 1 0\r\nf 1 2 \\\r\n3\r\nf 1 2 7\r\n", 6, "out of range");
   // An error inside a continued statement names the line it starts on.
   expect_error("v 0 0 0\nv 1 \\\n x 0\n", 2, "'x' is not a number");
+}
+
+TEST(ObjReaderErrors, LineNumbersCountLoneCrLines) {
+  // Lines 1-3 end in CR alone, line 4 in CR LF, line 5 in LF.
+  expect_error("v 0 0 0\rv 1 0 0\rv 0 1 0\rf 1 2 3\r\nf 1 2 5\n", 5, "out of range");
 }
 
 TEST(ObjReaderErrors, NoFaces) {

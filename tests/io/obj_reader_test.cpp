@@ -159,6 +159,19 @@ TEST(ObjReader, AcceptsCrlfBlankLinesAndIndentation) {
   EXPECT_EQ(mesh.group_names, (std::vector<std::string>{"default", "side"}));
 }
 
+// Old Mac line ends (CR alone), also mixed with LF and CR LF in one file:
+// every vertex is kept, so the faces index the vertices they were written for.
+TEST(ObjReader, ReadsLinesEndingInCrAlone) {
+  const TriangleMesh mesh = parse_obj(
+      "v 0 0 0\rv 1 0 0\r\nv 1 1 0\rv 0 1 0\nf 1 2 3\rf 1 3 4\r\rg top\rf 1 2 4", "t.obj");
+  ASSERT_EQ(mesh.vertices.size(), 4u);
+  EXPECT_EQ(mesh.vertices[2], Eigen::Vector3d(1, 1, 0));
+  EXPECT_EQ(mesh.vertices[3], Eigen::Vector3d(0, 1, 0));
+  ASSERT_EQ(mesh.faces.size(), 3u);
+  EXPECT_EQ(mesh.faces[1], (Face{0, 2, 3}));
+  EXPECT_EQ(mesh.group_names, (std::vector<std::string>{"default", "top"}));
+}
+
 TEST(ObjReader, JoinsContinuedLines) {
   const std::string text = std::string(kUnitSquare) + "f 1 2 \\\n 3 \\\r\n 4\n";
   const TriangleMesh mesh = parse_obj(text, "t.obj");

@@ -41,6 +41,18 @@ TEST(TextCloudReader, SkipsCommentsBlankLinesAndCrlf) {
   EXPECT_EQ(cloud.colours[0], (std::array<std::uint8_t, 3>{4, 5, 6}));
 }
 
+// Lines ending in CR alone: read as one line, two points became one point
+// with a colour.
+TEST(TextCloudReader, ALoneCrEndsALine) {
+  testing::ScratchDirectory dir;
+  const std::string path = dir.file("mac.txt");
+  testing::write_text(path, "1 2 3\r4 5 6\r");
+  const PointCloud cloud = read_cloud(path);
+  ASSERT_EQ(cloud.size(), 2u);
+  EXPECT_TRUE(cloud.colours.empty());
+  EXPECT_EQ(cloud.positions[1], Eigen::Vector3f(4, 5, 6));
+}
+
 TEST(TextCloudReader, NanAndInfinitePointsAreDroppedAndCounted) {
   testing::ScratchDirectory dir;
   const std::string path = dir.file("n.txt");

@@ -81,6 +81,52 @@ TEST(Hardening, WorkBeyondTheMemoryBudgetIsRefusedWithTheEstimate) {
                   .ok());
 }
 
+// min_samples raises the sample count past what the density gives: the
+// server grew to 1.7 GB under a 400 MB budget on 6e7, and 1e12 came back as
+// `internal` (out of memory). Both are refused up front, naming min_samples.
+TEST(Hardening, MinSamplesIsInTheMemoryBudget) {
+  server::ServerOptions options = TestServer::quiet_options();
+  options.max_memory_mb = 400;
+  TestServer server(options);
+  write_cloud(server, "wall.txt", "");
+  auto client = server.connect();
+  int id = 1;
+  for (const char* min_samples : {"6e7", "1e12"}) {
+    const auto start = Clock::now();
+    const Reply reply = client->request(
+        id++, "region_growing_occlusion",
+        params(std::string(R"({"path": "wall.txt", "min_cluster_size": 50, "out": "",
+                               "min_samples": )") +
+               min_samples + "}"),
+        Millis(120000));
+    EXPECT_EQ(reply.error_code(), "invalid_request") << min_samples << reply.final;
+    const std::string message = reply.final["message"].asString();
+    EXPECT_NE(message.find("lower min_samples"), std::string::npos) << message;
+    EXPECT_NE(message.find("max_memory_mb = 400"), std::string::npos) << message;
+    EXPECT_LT(std::chrono::duration<double>(Clock::now() - start).count(), 30.0);
+  }
+  expect_serving(server);
+}
+
+// The study's runs scan, trace and fit planes like the jobs they repeat, so
+// the server's budget holds them too (the study had no max_memory_mb, and
+// ran unbudgeted on the server).
+TEST(Hardening, StudyRunsAreInTheMemoryBudget) {
+  server::ServerOptions options = TestServer::quiet_options();
+  options.max_memory_mb = 1;
+  TestServer server(options);
+  auto client = server.connect();
+  const Reply reply =
+      client->request(1, "study", params(R"({"scenes": ["s3dis_synthetic/Area_1/office_1"],
+                 "configurations": [{"name": "pattern_1", "pattern": 1}], "point_radius": 0.06,
+                 "num_rays_per_vp": 400, "out": "study"})"),
+                      Millis(120000));
+  EXPECT_EQ(reply.error_code(), "invalid_request") << reply.final;
+  const std::string message = reply.final["message"].asString();
+  EXPECT_NE(message.find("max_memory_mb = 1"), std::string::npos) << message;
+  expect_serving(server);
+}
+
 // A job that runs for many seconds unless cancelled (see concurrency_test).
 Json::Value long_job() {
   return params(R"({"path": "s3dis_synthetic/Area_1/office_1", "point_radius": 0.06,

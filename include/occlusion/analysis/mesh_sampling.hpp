@@ -25,16 +25,19 @@ struct MeshSamples {
 // silently drops out; each sample uses the seed's barycentric formula with a
 // random stream derived from (seed, f), so the result does not depend on the
 // order or thread in which faces are processed.
-// Throws std::invalid_argument if samples_per_unit_area is not finite and > 0.
+// Throws std::invalid_argument if samples_per_unit_area is not finite and > 0,
+// or gives more samples than a vector can hold (callers check the memory
+// the samples need first: app/memory_budget).
 // Reports stage "sampling" and checks `progress`'s cancel flag every block of
 // samples (a dense mesh takes tens of seconds).
 MeshSamples sample_mesh(const TriangleMesh& mesh, double samples_per_unit_area, std::uint64_t seed,
                         const Progress& progress = {});
 
-// Number of samples face f of the given area gets (the rule above).
+// Number of samples face f of the given area gets (the rule above); the
+// largest size_t where the count does not fit in one.
 std::size_t samples_for_area(double area, double samples_per_unit_area);
 
-// How many samples sample_mesh would draw at this density.
+// How many samples sample_mesh would draw at this density (saturating, as above).
 std::size_t total_samples(const TriangleMesh& mesh, double samples_per_unit_area);
 
 // A density fitted to the mesh's scale: samples_per_unit_area when it already

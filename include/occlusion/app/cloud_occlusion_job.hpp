@@ -51,7 +51,7 @@ struct CloudOcclusionRequest {
   std::uint64_t seed = 0;
   unsigned threads = 0;
   std::string out;
-  // Refuse, before the work, a request estimated to need more (memory_budget.hpp); 0 = no budget.
+  // Refuse, before the work, a request estimated to need more (memory_budget.hpp); 0 = the machine.
   std::uint64_t max_memory_mb = 0;
 };
 

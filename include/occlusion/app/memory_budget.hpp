@@ -14,15 +14,21 @@
 namespace occlusion {
 
 struct MemoryEstimate {
-  std::uint64_t bytes = 0;
-  std::string made_of;  // for people: "2,000,000 samples x 7 viewpoints"
+  std::uint64_t bytes = 0;  // saturated: an absurd request never wraps to a small one
+  std::string made_of;      // for people: "2,000,000 samples x 7 viewpoints"
+  std::string lower;        // the keys that size it, when one or two do: "samples_per_unit_area"
 };
 
-// UsageError, naming the estimate and `max_memory_mb`, when the estimate
-// exceeds max_memory_mb (0: no budget).
+// The machine's physical memory in MiB; 0 when the system does not say.
+std::uint64_t machine_memory_mb();
+
+// UsageError, naming the estimate, what to lower and `max_memory_mb`, when the
+// estimate exceeds max_memory_mb; with no budget (0), when it exceeds the
+// machine's memory.
 void check_memory_budget(const MemoryEstimate& estimate, std::uint64_t max_memory_mb);
 
 // -moc: samples (exactly as sample_mesh counts them) x viewpoints, the octree.
+// -rgoc passes the density its min_samples raised it to.
 MemoryEstimate mesh_occlusion_memory(const TriangleMesh& mesh, double samples_per_unit_area,
                                      std::size_t viewpoints);
 // -poc: the point octree, and each viewpoint's escape directions when kept.

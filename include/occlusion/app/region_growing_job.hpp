@@ -36,7 +36,7 @@ struct RegionGrowingRequest {
   unsigned threads = 0;  // 0 = all cores
   bool skip_bad_lines = false;
   std::string out;  // directory for output files; empty = none
-  // Refuse, before the work, a request estimated to need more (memory_budget.hpp); 0 = no budget.
+  // Refuse, before the work, a request estimated to need more (memory_budget.hpp); 0 = the machine.
   std::uint64_t max_memory_mb = 0;
 };
 

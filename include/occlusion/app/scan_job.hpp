@@ -37,7 +37,7 @@ struct ScanRequest {
   std::string up = "+z";  // signed axis: where height matters (the grid's mid-height)
   unsigned threads = 0;
   std::string out;
-  // Refuse, before the work, a request estimated to need more (memory_budget.hpp); 0 = no budget.
+  // Refuse, before the work, a request estimated to need more (memory_budget.hpp); 0 = the machine.
   std::uint64_t max_memory_mb = 0;
 };
 

@@ -41,8 +41,8 @@ KeyBuilder<R> max_memory_key(std::uint64_t R::*field) {
       .unit("MiB")
       .metavar("N")
       .doc(
-          "refuse up front, with the estimate, work that needs more memory; 0 = no budget "
-          "(the server's own budget always applies)");
+          "refuse up front, with the estimate, work that needs more memory; 0 = the "
+          "machine's memory (the server's own budget always applies)");
 }
 
 template <class R>

@@ -21,6 +21,7 @@
 
 #include <json/value.h>
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -78,6 +79,9 @@ struct StudyRequest {
   // Start again: drop the rows of study.csv (even if made with other
   // parameters) instead of resuming.
   bool fresh = false;
+  // Each run's scan, occlusion and baseline planes are refused, with their
+  // estimate, above it (app/memory_budget); 0: the machine's memory.
+  std::uint64_t max_memory_mb = 0;
 };
 
 struct StudyShard {
