@@ -266,7 +266,7 @@ Neighbourhood measure(const Eigen::Vector3f& own, const Distinct& distinct,
 // The points in Morton order: consecutive queries then walk the same part of
 // the kd-tree and read the same points (a cloud in random order took twice
 // as long as the same cloud sorted).
-std::vector<std::size_t> morton_order(const std::vector<Eigen::Vector3f>& positions) {
+std::vector<std::uint32_t> morton_order(const std::vector<Eigen::Vector3f>& positions) {
   Eigen::Vector3f lo = positions[0], hi = positions[0];
   for (const Eigen::Vector3f& p : positions) {
     lo = lo.cwiseMin(p);
@@ -274,7 +274,7 @@ std::vector<std::size_t> morton_order(const std::vector<Eigen::Vector3f>& positi
   }
   const float extent = std::max((hi - lo).maxCoeff(), std::numeric_limits<float>::min());
   const double scale = static_cast<double>(kMortonLastCell) / static_cast<double>(extent);
-  std::vector<std::pair<std::uint64_t, std::size_t>> keyed(positions.size());
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed(positions.size());
   for (std::size_t i = 0; i < positions.size(); ++i) {
     const Eigen::Vector3d cell = (positions[i] - lo).cast<double>() * scale;
     const auto coordinate = [&](int axis) {
@@ -283,10 +283,10 @@ std::vector<std::size_t> morton_order(const std::vector<Eigen::Vector3f>& positi
     };
     keyed[i] = {spread_by_three(coordinate(0)) | spread_by_three(coordinate(1)) << 1 |
                     spread_by_three(coordinate(2)) << 2,
-                i};
+                static_cast<std::uint32_t>(i)};
   }
   std::sort(keyed.begin(), keyed.end());
-  std::vector<std::size_t> order(positions.size());
+  std::vector<std::uint32_t> order(positions.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = keyed[i].second;
   return order;
 }
@@ -310,116 +310,127 @@ SurfelEstimate estimate_surfels(const PointCloud& cloud, const SurfelOptions& op
   // cloud's index is order[s]): the queries, the tree's points and the
   // neighbours each query reads lie together in memory. On a cloud in random
   // order, reading the neighbours' positions was a third of the time.
-  const std::vector<std::size_t> order = morton_order(cloud.positions);
-  std::vector<Eigen::Vector3f> sorted(count);
-  for (std::size_t s = 0; s < count; ++s) sorted[s] = cloud.positions[order[s]];
+  if (count > std::numeric_limits<std::uint32_t>::max()) {
+    throw std::invalid_argument("surfels: at most 2^32 - 1 points, got " + std::to_string(count));
+  }
+  const std::vector<std::uint32_t> order = morton_order(cloud.positions);
+  // Per point, in Morton order.
   std::vector<Eigen::Vector3f> normals(count);
   std::vector<float> radii(count), variation(count), thickness(count);
   std::vector<std::uint8_t> duplicate(count), line(count);
-
-  const flann::Matrix<float> points(sorted[0].data(), count, 3, sizeof(Eigen::Vector3f));
-  // Reordered: the tree keeps its own copy of the points in leaf order (12
-  // bytes a point), and the searches read leaves from contiguous memory (a
-  // third less search time on a million points than reading them by index).
-  FlannTree tree(points, flann::KDTreeSingleIndexParams(kLeafSize, /*reorder=*/true));
-  tree.buildIndex();
-  const flann::SearchParams search(/*checks=*/-1, /*eps=*/0.0f, /*sorted=*/true);
-
-  // visit(s, ids, got) for every point s of `subset` (null: all) with its
-  // `wanted` nearest, nearest first (itself among them).
-  const auto search_blocks = [&](const char* stage, const std::vector<std::size_t>* subset,
-                                 std::size_t wanted, const auto& visit) {
-    const std::size_t total = subset ? subset->size() : count;
-    const std::size_t block = block_size(total);
-    progress(stage, 0.0);
-    for (std::size_t begin = 0; begin < total; begin += block) {
-      const std::size_t end = std::min(total, begin + block);
-      parallel_for(end - begin, kGrain, options.threads, [&](std::size_t first, std::size_t last) {
-        flann::KNNSimpleResultSet<float> found(wanted);
-        std::vector<std::size_t> ids(wanted);
-        std::vector<float> distances(wanted);
-        for (std::size_t n = begin + first; n < begin + last; ++n) {
-          const std::size_t s = subset ? (*subset)[n] : n;
-          found.clear();
-          tree.findNeighbors(found, sorted[s].data(), search);
-          const std::size_t got = std::min(found.size(), wanted);
-          found.copy(ids.data(), distances.data(), got, true);
-          visit(s, ids.data(), got);
-        }
-      });
-      progress.check_cancel();
-      progress(stage, static_cast<double>(end) / static_cast<double>(total));
-    }
-  };
-
-  const auto model_point = [&](std::size_t s, const std::size_t* ids, std::size_t got) {
-    thread_local Distinct distinct;
-    const Eigen::Vector3f& own = sorted[s];
-    distinct.reset(own, same_position_distance(own));
-    for (std::size_t j = 0; j < got; ++j) {
-      if (ids[j] != s) distinct.offer(sorted[ids[j]]);
-    }
-    const Neighbourhood hood = measure(own, distinct, options);
-    normals[s] = hood.normal;
-    radii[s] = hood.normal.isZero() ? kSphereShare * hood.radius : hood.radius;
-    variation[s] = hood.surface_variation;
-    duplicate[s] = hood.duplicate;
-    line[s] = hood.line;
-    thickness[s] = hood.thickness;
-  };
-  search_blocks("surfels", nullptr, k, model_point);
-  // On a scanner's grid seen at a grazing angle the columns can lie ten times
-  // farther apart than the rows, and all k nearest on the point's own scan
-  // line: those points look again, kWideSearch times as far in count.
-  std::vector<std::size_t> lines;
-  for (std::size_t s = 0; s < count; ++s) {
-    if (line[s]) lines.push_back(s);
-  }
-  search_blocks("surfels (scan lines)", &lines,
-                std::min(kWideSearch * options.neighbours + 1, count), model_point);
-
-  // Positions stored more than k times have no distinct neighbour in reach:
-  // they take the cloud's median radius.
-  std::vector<float> measured;
-  measured.reserve(count);
-  for (const float r : radii) {
-    if (r > 0.0f) measured.push_back(r);
-  }
-  if (measured.empty()) {
-    throw std::invalid_argument(
-        "surfels: no point has a neighbour at a distinct position (all points coincide?)");
-  }
-  const float median_radius = quantile(measured, 0.5);
-  for (float& r : radii) {
-    if (!(r > 0.0f)) r = median_radius;
-  }
-
   SurfelEstimate estimate;
   SurfelStats& stats = estimate.stats;
-  if (options.fixed_radius <= 0.0) {
-    // Stray points: a radius kStrayRatio times their neighbours' median. A
-    // stray point's neighbours are at least as dense as the sparsest tenth of
-    // the cloud, so only points above kStrayRatio x that quantile can be stray.
-    const float low = quantile(measured, 0.1);
-    std::vector<std::size_t> candidates;
+  {
+    // The sorted copy and the tree (about 35 bytes a point) live only while
+    // searched: freed before the surfels are made, which keeps a big cloud's
+    // peak down.
+    std::vector<Eigen::Vector3f> sorted(count);
+    for (std::size_t s = 0; s < count; ++s) sorted[s] = cloud.positions[order[s]];
+    const flann::Matrix<float> points(sorted[0].data(), count, 3, sizeof(Eigen::Vector3f));
+    // Reordered: the tree keeps its own copy of the points in leaf order (12
+    // bytes a point), and the searches read leaves from contiguous memory (a
+    // third less search time on a million points than reading them by index).
+    FlannTree tree(points, flann::KDTreeSingleIndexParams(kLeafSize, /*reorder=*/true));
+    tree.buildIndex();
+    const flann::SearchParams search(/*checks=*/-1, /*eps=*/0.0f, /*sorted=*/true);
+
+    // visit(n, s, ids, got) for every point s = subset[n] of `subset` (null:
+    // all, s = n) with its `wanted` nearest, nearest first (itself among them).
+    const auto search_blocks = [&](const char* stage, const std::vector<std::uint32_t>* subset,
+                                   std::size_t wanted, const auto& visit) {
+      const std::size_t total = subset ? subset->size() : count;
+      const std::size_t block = block_size(total);
+      progress(stage, 0.0);
+      for (std::size_t begin = 0; begin < total; begin += block) {
+        const std::size_t end = std::min(total, begin + block);
+        parallel_for(end - begin, kGrain, options.threads,
+                     [&](std::size_t first, std::size_t last) {
+                       flann::KNNSimpleResultSet<float> found(wanted);
+                       std::vector<std::size_t> ids(wanted);
+                       std::vector<float> distances(wanted);
+                       for (std::size_t n = begin + first; n < begin + last; ++n) {
+                         const std::size_t s = subset ? (*subset)[n] : n;
+                         found.clear();
+                         tree.findNeighbors(found, sorted[s].data(), search);
+                         const std::size_t got = std::min(found.size(), wanted);
+                         found.copy(ids.data(), distances.data(), got, true);
+                         visit(n, s, ids.data(), got);
+                       }
+                     });
+        progress.check_cancel();
+        progress(stage, static_cast<double>(end) / static_cast<double>(total));
+      }
+    };
+
+    const auto model_point = [&](std::size_t, std::size_t s, const std::size_t* ids,
+                                 std::size_t got) {
+      thread_local Distinct distinct;
+      const Eigen::Vector3f& own = sorted[s];
+      distinct.reset(own, same_position_distance(own));
+      for (std::size_t j = 0; j < got; ++j) {
+        if (ids[j] != s) distinct.offer(sorted[ids[j]]);
+      }
+      const Neighbourhood hood = measure(own, distinct, options);
+      normals[s] = hood.normal;
+      radii[s] = hood.normal.isZero() ? kSphereShare * hood.radius : hood.radius;
+      variation[s] = hood.surface_variation;
+      duplicate[s] = hood.duplicate;
+      line[s] = hood.line;
+      thickness[s] = hood.thickness;
+    };
+    search_blocks("surfels", nullptr, k, model_point);
+    // On a scanner's grid seen at a grazing angle the columns can lie ten
+    // times farther apart than the rows, and all k nearest on the point's own
+    // scan line: those points look again, kWideSearch times as far in count.
+    std::vector<std::uint32_t> lines;
     for (std::size_t s = 0; s < count; ++s) {
-      if (radii[s] > kStrayRatio * low) candidates.push_back(s);
+      if (line[s]) lines.push_back(static_cast<std::uint32_t>(s));
     }
-    std::vector<float> stray_radius(count, 0.0f);
-    search_blocks("stray points", &candidates, k,
-                  [&](std::size_t s, const std::size_t* ids, std::size_t got) {
-                    thread_local std::vector<float> around;
-                    around.clear();
-                    for (std::size_t j = 0; j < got; ++j) {
-                      if (ids[j] != s) around.push_back(radii[ids[j]]);
-                    }
-                    if (around.empty()) return;
-                    const float typical = quantile(around, 0.5);
-                    if (radii[s] > kStrayRatio * typical) stray_radius[s] = typical;
-                  });
-    for (const std::size_t s : candidates) {
-      if (stray_radius[s] > 0.0f) {
-        radii[s] = stray_radius[s];
+    search_blocks("surfels (scan lines)", &lines,
+                  std::min(kWideSearch * options.neighbours + 1, count), model_point);
+
+    // Positions stored more than k times have no distinct neighbour in
+    // reach: they take the cloud's median radius.
+    std::vector<float> measured;
+    measured.reserve(count);
+    for (const float r : radii) {
+      if (r > 0.0f) measured.push_back(r);
+    }
+    if (measured.empty()) {
+      throw std::invalid_argument(
+          "surfels: no point has a neighbour at a distinct position (all points coincide?)");
+    }
+    const float median_radius = quantile(measured, 0.5);
+    for (float& r : radii) {
+      if (!(r > 0.0f)) r = median_radius;
+    }
+
+    if (options.fixed_radius <= 0.0) {
+      // Stray points: a radius kStrayRatio times their neighbours' median. A
+      // stray point's neighbours are at least as dense as the sparsest tenth
+      // of the cloud, so only points above kStrayRatio x that quantile can be
+      // stray.
+      const float low = quantile(std::move(measured), 0.1);
+      std::vector<std::uint32_t> candidates;
+      for (std::size_t s = 0; s < count; ++s) {
+        if (radii[s] > kStrayRatio * low) candidates.push_back(static_cast<std::uint32_t>(s));
+      }
+      std::vector<float> stray_radius(candidates.size(), 0.0f);
+      search_blocks("stray points", &candidates, k,
+                    [&](std::size_t n, std::size_t s, const std::size_t* ids, std::size_t got) {
+                      thread_local std::vector<float> around;
+                      around.clear();
+                      for (std::size_t j = 0; j < got; ++j) {
+                        if (ids[j] != s) around.push_back(radii[ids[j]]);
+                      }
+                      if (around.empty()) return;
+                      const float typical = quantile(around, 0.5);
+                      if (radii[s] > kStrayRatio * typical) stray_radius[n] = typical;
+                    });
+      for (std::size_t n = 0; n < candidates.size(); ++n) {
+        if (!(stray_radius[n] > 0.0f)) continue;
+        const std::size_t s = candidates[n];
+        radii[s] = stray_radius[n];
         normals[s] = Eigen::Vector3f::Zero();
         thickness[s] = 0.0f;
         ++stats.stray;
@@ -427,34 +438,36 @@ SurfelEstimate estimate_surfels(const PointCloud& cloud, const SurfelOptions& op
     }
   }
 
-  // Back in the cloud's order.
-  {
-    std::vector<Eigen::Vector3f> point_normals(count);
-    std::vector<float> point_radii(count);
-    estimate.thickness.resize(count);
-    for (std::size_t s = 0; s < count; ++s) {
-      point_normals[order[s]] = normals[s];
-      point_radii[order[s]] = radii[s];
-      estimate.thickness[order[s]] = thickness[s];
-    }
-    estimate.surfels = make_surfels(cloud.positions, point_normals, point_radii);
-  }
   stats.points = count;
-  std::vector<float> oriented_variation, oriented_thickness;
-  for (std::size_t s = 0; s < count; ++s) {
-    stats.duplicates += duplicate[s];
-    if (!normals[s].isZero()) {
-      oriented_variation.push_back(variation[s]);
-      oriented_thickness.push_back(thickness[s]);
+  {
+    std::vector<float> oriented_variation, oriented_thickness;
+    for (std::size_t s = 0; s < count; ++s) {
+      stats.duplicates += duplicate[s];
+      if (!normals[s].isZero()) {
+        oriented_variation.push_back(variation[s]);
+        oriented_thickness.push_back(thickness[s]);
+      }
     }
+    stats.oriented = oriented_variation.size();
+    stats.unoriented = count - stats.oriented;
+    stats.surface_variation_median = quantile(std::move(oriented_variation), 0.5);
+    stats.thickness_median = quantile(std::move(oriented_thickness), 0.5);
   }
-  stats.oriented = oriented_variation.size();
-  stats.unoriented = count - stats.oriented;
   stats.radius_quantile_10 = quantile(radii, 0.1);
   stats.radius_median = quantile(radii, 0.5);
   stats.radius_quantile_90 = quantile(radii, 0.9);
-  stats.surface_variation_median = quantile(oriented_variation, 0.5);
-  stats.thickness_median = quantile(oriented_thickness, 0.5);
+  variation = {};
+  duplicate = {};
+  line = {};
+
+  // Back in the cloud's order.
+  estimate.surfels.resize(count);
+  estimate.thickness.resize(count);
+  for (std::size_t s = 0; s < count; ++s) {
+    const std::size_t i = order[s];
+    estimate.surfels[i] = make_surfel(cloud.positions[i], normals[s], radii[s], i);
+    estimate.thickness[i] = thickness[s];
+  }
   stats.seconds = seconds_since(start);
   progress("surfels", 1.0);
   return estimate;

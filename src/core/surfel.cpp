@@ -31,6 +31,21 @@ Aabb Surfel::bounds() const {
   return box;
 }
 
+Surfel make_surfel(const Eigen::Vector3f& center, const Eigen::Vector3f& normal, float radius,
+                   std::size_t index) {
+  if (!center.allFinite() || !normal.allFinite()) {
+    throw std::invalid_argument("surfels: point " + std::to_string(index) + " is not finite");
+  }
+  if (!(radius > 0.0f) || !std::isfinite(radius)) {
+    throw std::invalid_argument(
+        "surfels: point " + std::to_string(index) +
+        " has a radius that is not finite and > 0: " + std::to_string(radius));
+  }
+  const float length = normal.norm();
+  return Surfel{center, radius,
+                length > 0.0f ? Eigen::Vector3f(normal / length) : Eigen::Vector3f::Zero()};
+}
+
 LargeVector<Surfel> make_surfels(const std::vector<Eigen::Vector3f>& centers,
                                  const std::vector<Eigen::Vector3f>& normals,
                                  const std::vector<float>& radii) {
@@ -42,18 +57,7 @@ LargeVector<Surfel> make_surfels(const std::vector<Eigen::Vector3f>& centers,
   LargeVector<Surfel> surfels;
   surfels.reserve(centers.size());
   for (std::size_t i = 0; i < centers.size(); ++i) {
-    if (!centers[i].allFinite() || !normals[i].allFinite()) {
-      throw std::invalid_argument("surfels: point " + std::to_string(i) + " is not finite");
-    }
-    if (!(radii[i] > 0.0f) || !std::isfinite(radii[i])) {
-      throw std::invalid_argument(
-          "surfels: point " + std::to_string(i) +
-          " has a radius that is not finite and > 0: " + std::to_string(radii[i]));
-    }
-    const float length = normals[i].norm();
-    const Eigen::Vector3f normal =
-        length > 0.0f ? Eigen::Vector3f(normals[i] / length) : Eigen::Vector3f::Zero();
-    surfels.push_back(Surfel{centers[i], radii[i], normal});
+    surfels.push_back(make_surfel(centers[i], normals[i], radii[i], i));
   }
   return surfels;
 }

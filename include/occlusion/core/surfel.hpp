@@ -93,6 +93,12 @@ inline std::optional<float> intersect_surfel(const Ray& ray, const Surfel& surfe
   return intersect_surfel(ray_components(ray), surfel);
 }
 
+// One surfel: its normal normalised (zero for a sphere). Throws
+// std::invalid_argument, naming point `index`, for a centre or normal that is
+// not finite or a radius that is not finite and positive.
+Surfel make_surfel(const Eigen::Vector3f& center, const Eigen::Vector3f& normal, float radius,
+                   std::size_t index);
+
 // One surfel per centre, in order, so that a surfel's primitive id is its
 // point's index: normals[i] (normalised here; zero for a sphere) and radii[i].
 // Throws std::invalid_argument for sizes that differ, a centre or normal that is
