@@ -160,6 +160,36 @@ TEST(Hardening, LinkNestedInASceneFolderCannotLeadOut) {
   expect_serving(server);
 }
 
+TEST(Hardening, ALoopOfLinksInTheDataFolderIsAnInputErrorNamingIt) {
+  TestServer server;
+  fs::create_symlink("loop_b", server.files().file("loop_a"));
+  fs::create_symlink("loop_a", server.files().file("loop_b"));
+  fs::create_symlink("itself", server.files().file("s3dis_synthetic/Area_1/itself"));
+  auto client = server.connect();
+  // The data folder itself read as a scene, the link, a scene folder holding one.
+  std::uint32_t id = 1;
+  for (const auto& [command, request] : std::vector<std::pair<std::string, std::string>>{
+           {"load", R"({"path": ""})"},
+           {"cloud_occlusion", R"({"path": ".", "out": ""})"},
+           {"load", R"({"path": "loop_a"})"},
+           {"scan", R"({"path": "loop_b/x", "out": ""})"},
+           {"load", R"({"path": "s3dis_synthetic/Area_1"})"},
+           {"cloud_occlusion", R"({"path": "s3dis_synthetic/Area_1", "out": ""})"}}) {
+    const Reply reply = client->request(id++, command, params(request));
+    EXPECT_EQ(reply.error_code(), "input_error") << command << " " << request << reply.final;
+    const std::string message = reply.final["message"].asString();
+    EXPECT_TRUE(message.find("loop_") != std::string::npos ||
+                message.find("itself") != std::string::npos)
+        << message;
+    EXPECT_NE(message.find("loop of symbolic links"), std::string::npos) << message;
+  }
+  // Listing leaves the links out and goes on.
+  EXPECT_TRUE(client->request(id++, "list_files").ok());
+  EXPECT_TRUE(
+      client->request(id++, "list_files", params(R"({"dir": "s3dis_synthetic/Area_1"})")).ok());
+  expect_serving(server);
+}
+
 TEST(Hardening, SavePolygonWritesOpeningsFilesOnly) {
   TestServer server;
   write_cloud(server, "scan.txt", "");
