@@ -16,6 +16,7 @@
 #include <map>
 #include <stdexcept>
 
+#include "occlusion/io/output_recovery.hpp"
 #include "occlusion/server/static_files.hpp"
 #include "outbox.hpp"
 #include "server_context.hpp"
@@ -201,6 +202,14 @@ Server::Impl::Impl(ServerOptions server_options)
         ", not a loopback address: whoever reaches this port can read and write the data "
         "directory " +
         context.root.path().string());
+  }
+  // Job outputs a killed server left half committed are finished, and its
+  // temporaries removed, before any client reads them.
+  const RecoveredOutputs recovered = recover_outputs((context.root.path() / "out").string());
+  if (recovered.completed_sets + recovered.removed_temporaries > 0) {
+    log("out/: finished " + std::to_string(recovered.completed_sets) +
+        " output set(s) a killed run left half written, removed " +
+        std::to_string(recovered.removed_temporaries) + " temporary file(s)");
   }
   if (!web.has_viewer()) {
     log("no viewer in --web '" + options.web_dir +
