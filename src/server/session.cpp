@@ -1,5 +1,7 @@
 #include "session.hpp"
 
+#include <algorithm>
+
 #include "command_params.hpp"
 #include "error_reply.hpp"
 #include "occlusion/app/job_registry.hpp"
@@ -146,15 +148,16 @@ void Session::execute(const std::string& command, std::uint32_t id, const Json::
 }
 
 void Session::announce_upload(const Request& request) {
+  std::uint64_t size = 0;
   const auto refuse = [&] {
     const std::lock_guard<std::mutex> lock(mutex_);
     if (refused_uploads_.size() >= kMaxRefusedUploads) refused_uploads_.clear();
-    refused_uploads_.insert(request.id);
+    refused_uploads_[request.id] = size <= server_.limits.max_upload_bytes ? size : 0;
   };
   try {
     allow_keys(request.params, {"name", "size"});
     const std::string name = required_string(request.params, "name");
-    const std::uint64_t size = required_unsigned(request.params, "size");
+    size = required_unsigned(request.params, "size");
     check_upload_name(name);
     if (size > server_.limits.max_upload_bytes) {
       throw ProtocolError(
@@ -225,9 +228,11 @@ void Session::cancel(const Request& request) {
       it->second->store(true);
       found = true;
       // An upload still waiting for its bytes has no worker to notice the flag.
-      was_pending_upload = uploads_.erase(it->first) > 0;
+      const auto upload = uploads_.find(it->first);
+      was_pending_upload = upload != uploads_.end();
       if (was_pending_upload) {
-        refused_uploads_.insert(it->first);
+        refused_uploads_[it->first] = upload->second.size;
+        uploads_.erase(upload);
         running_.erase(it);
       }
     }
@@ -255,6 +260,14 @@ void Session::close() {
 std::size_t Session::running() const {
   const std::lock_guard<std::mutex> lock(mutex_);
   return running_.size();
+}
+
+std::uint64_t Session::expected_binary_bytes() const {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  std::uint64_t largest = 0;
+  for (const auto& [id, upload] : uploads_) largest = std::max(largest, upload.size);
+  for (const auto& [id, size] : refused_uploads_) largest = std::max(largest, size);
+  return largest;
 }
 
 bool Session::register_id(std::uint32_t id, const Flag& flag) {

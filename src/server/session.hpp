@@ -8,7 +8,6 @@
 #include <map>
 #include <memory>
 #include <mutex>
-#include <set>
 #include <string>
 #include <string_view>
 
@@ -31,6 +30,11 @@ class Session : public std::enable_shared_from_this<Session> {
   void close();
 
   std::size_t running() const;
+  // The largest binary message this connection may send next: the biggest
+  // upload it announced and has not sent (refused ones included, whose bytes
+  // are dropped), 0 when none. Beyond max_text_bytes only such a message may
+  // go, so the transport refuses any other as soon as its frame passes the limit.
+  std::uint64_t expected_binary_bytes() const;
 
  private:
   using Flag = std::shared_ptr<std::atomic<bool>>;
@@ -66,7 +70,9 @@ class Session : public std::enable_shared_from_this<Session> {
   mutable std::mutex mutex_;
   std::map<std::uint32_t, Flag> running_;
   std::map<std::uint32_t, Upload> uploads_;
-  std::set<std::uint32_t> refused_uploads_;  // their binary message is dropped
+  // Their binary message is dropped; the announced size (0: none or over the
+  // upload limit) is what the transport still lets through.
+  std::map<std::uint32_t, std::uint64_t> refused_uploads_;
   bool closed_ = false;
 };
 
