@@ -48,12 +48,16 @@ class Session : public std::enable_shared_from_this<Session> {
   void dispatch(const Request& request);
   void announce_upload(const Request& request);
   void cancel(const Request& request);
-  // Runs on a worker; the id must be registered already.
+  // Runs on a worker; the id must be registered already. `may_use_reserve`:
+  // the command is short or can tell, by its work estimate, that it is not
+  // (worker_pool.hpp).
   void submit(const std::string& command, std::uint32_t id, Json::Value params, Run run,
-              const Flag& flag);
-  // Runs `run` and sends its result or error. Never throws.
+              const Flag& flag, bool may_use_reserve);
+  // Runs `run` and sends its result or error. Never throws. On the reserve,
+  // a job over the reserve's work budget goes back to the queue instead.
   void execute(const std::string& command, std::uint32_t id, const Json::Value& params,
-               const Run& run, const Flag& flag);
+               const Run& run, const Flag& flag, Lane lane);
+  WorkerPool::OnPosition position_reporter(std::uint32_t id) const;
   void send_error(const Json::Value& id, const std::string& command, const std::string& code,
                   const std::string& message);
   // The error reply as text, with data-directory prefixes taken out of the message.
