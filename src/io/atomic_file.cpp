@@ -15,15 +15,17 @@ namespace occlusion {
 namespace fs = std::filesystem;
 namespace {
 
-// Unique per process (pid) and per call (counter), so concurrent writers of the
-// same target, in this process or another, never share a temporary file. The
-// tag goes in front, hidden, so the name keeps its extension: writers that
-// pick the format by extension (write_cloud) write the right one.
+// Numbers temporaries and manifests apart within this process.
 unsigned long next_serial() {
   static std::atomic<unsigned long> counter{0};
   return counter.fetch_add(1);
 }
 
+// Unique per process (pid) and per call (counter), so concurrent writers of the
+// same target, in this process or another, never share a temporary file. The
+// tag goes in front, hidden, so the name keeps its extension: writers that
+// pick the format by extension (write_cloud) write the right one. The pid also
+// tells a sweep (io/output_recovery.hpp) whether its writer still runs.
 fs::path temporary_path_beside(const fs::path& target) {
   const std::string name = ".tmp-" + std::to_string(static_cast<long>(::getpid())) + "-" +
                            std::to_string(next_serial()) + "-" + target.filename().string();

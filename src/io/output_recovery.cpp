@@ -92,7 +92,8 @@ std::string commit_manifest_path(const std::string& dir, long pid, unsigned long
 
 void write_commit_manifest(const std::string& manifest,
                            const std::vector<std::pair<std::string, std::string>>& files) {
-  const fs::path dir = fs::path(manifest).parent_path();
+  const fs::path parent = fs::path(manifest).parent_path();
+  const fs::path dir = parent.empty() ? fs::path(".") : parent;
   write_file_atomically(manifest, [&](std::ostream& out) {
     out << kManifestFormat;
     for (const auto& [temporary, target] : files) {

@@ -174,5 +174,19 @@ TEST(OutputRecovery, ACommitLeavesNoManifestBehind) {
   expect_set(dir, "new");
 }
 
+TEST(OutputRecovery, ASetNamedRelativeToTheWorkingDirectoryCommitsAndSweeps) {
+  ScratchDirectory dir;
+  const fs::path before = fs::current_path();
+  fs::current_path(dir.path());
+  {
+    OutputSet outputs;
+    for (const auto& name : kNames) write_text(outputs.add(name), "new " + name);
+    outputs.commit();
+  }
+  recover_outputs("");
+  fs::current_path(before);
+  expect_set(dir, "new");
+}
+
 }  // namespace
 }  // namespace occlusion

@@ -26,8 +26,8 @@ void write_commit_manifest(const std::string& manifest,
                            const std::vector<std::pair<std::string, std::string>>& files);
 
 struct RecoveredOutputs {
-  std::size_t completed_sets = 0;       // half-renamed sets whose renames were finished
-  std::size_t removed_temporaries = 0;  // a dead process's temporaries and manifests
+  std::size_t completed_sets = 0;       // dead processes' manifests finished and removed
+  std::size_t removed_temporaries = 0;  // dead processes' temporaries removed
 };
 
 // Sweeps `dir` of what dead processes left: finishes the renames of each set
