@@ -8,6 +8,7 @@
 #include "occlusion/app/errors.hpp"
 #include "occlusion/app/json_output.hpp"
 #include "occlusion/app/memory_budget.hpp"
+#include "occlusion/app/work_budget.hpp"
 #include "occlusion/io/atomic_file.hpp"
 #include "occlusion/io/cloud_io.hpp"
 #include "occlusion/io/input_error.hpp"
@@ -181,6 +182,10 @@ CloudOcclusionReport run_cloud_occlusion_on(const PointCloud& cloud,
                              request.escape_directions || !request.out.empty(),
                              request.primitive == "disc"),
       request.max_memory_mb);
+  check_work_budget(
+      cloud_occlusion_work(cloud.size(), viewpoints.positions.size(), request.num_rays_per_vp,
+                           request.exterior, request.enable_acceleration),
+      request.max_work);
   const job::PointModel model = job::choose_point_model(cloud, job::point_settings(request), "-poc",
                                                         report.warnings, progress);
   report.point_model = model.report;

@@ -64,7 +64,7 @@ const Keys<CloudOcclusionRequest>& cloud_occlusion_keys() {
            .doc("treat the cloud as one depth frame with this field of view around the sensor's "
                 "+z: rays outside it are counted apart (outside_view_rays); empty: measured "
                 "from an organised or VIEWPOINT PCD"),
-       max_memory_key(&R::max_memory_mb),
+       max_memory_key(&R::max_memory_mb), max_work_key(&R::max_work),
        key("escape_directions", &R::escape_directions)
            .doc("keep each occlusion ray's direction in the report (always kept with out)"),
        out_key(&R::out,

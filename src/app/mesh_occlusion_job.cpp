@@ -9,6 +9,7 @@
 #include "occlusion/app/errors.hpp"
 #include "occlusion/app/json_output.hpp"
 #include "occlusion/app/memory_budget.hpp"
+#include "occlusion/app/work_budget.hpp"
 #include "occlusion/io/atomic_file.hpp"
 #include "occlusion/io/face_table.hpp"
 #include "occlusion/io/mesh_reader.hpp"
@@ -36,6 +37,9 @@ MeshOcclusionReport run_mesh_occlusion_on(const TriangleMesh& mesh,
   check_memory_budget(
       mesh_occlusion_memory(mesh, request.samples_per_unit_area, viewpoints.positions.size()),
       request.max_memory_mb);
+  check_work_budget(mesh_occlusion_work(mesh, request.samples_per_unit_area,
+                                        viewpoints.positions.size(), request.enable_acceleration),
+                    request.max_work);
   const double half_extent = 0.5 * (hi - lo).maxCoeff();
   if (request.enable_acceleration && request.octree_resolution >= half_extent) {
     report.warnings.push_back("octree_resolution " + std::to_string(request.octree_resolution) +

@@ -7,6 +7,7 @@
 #include "occlusion/app/errors.hpp"
 #include "occlusion/app/json_output.hpp"
 #include "occlusion/app/memory_budget.hpp"
+#include "occlusion/app/work_budget.hpp"
 #include "occlusion/io/atomic_file.hpp"
 #include "occlusion/io/cloud_io.hpp"
 #include "occlusion/io/obj_writer.hpp"
@@ -79,6 +80,9 @@ RegionGrowingReport run_region_growing_occlusion(const RegionGrowingRequest& req
                                                 viewpoints.positions.size());
   if (report.samples_per_unit_area > request.samples_per_unit_area) memory.lower = "min_samples";
   check_memory_budget(memory, request.max_memory_mb);
+  check_work_budget(mesh_occlusion_work(report.estimate.mesh, report.samples_per_unit_area,
+                                        viewpoints.positions.size(), request.enable_acceleration),
+                    request.max_work);
   MeshOcclusionOptions options;
   options.samples_per_unit_area = report.samples_per_unit_area;
   options.octree.min_cell_size = static_cast<float>(request.octree_resolution);

@@ -27,7 +27,7 @@ const Keys<RegionGrowingRequest>& region_growing_keys() {
        octree_resolution_key(&R::octree_resolution),
        enable_acceleration_key(&R::enable_acceleration), seed_key(&R::seed),
        threads_key(&R::threads), skip_bad_lines_key(&R::skip_bad_lines),
-       max_memory_key(&R::max_memory_mb),
+       max_memory_key(&R::max_memory_mb), max_work_key(&R::max_work),
        out_key(&R::out,
                "write CLOUD.rgoc.obj and CLOUD.rgoc.ply (the estimated mesh, group = cluster; "
                "the PLY with per-face visible_fraction), CLOUD.segmented.ply (every point with "

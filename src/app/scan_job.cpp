@@ -6,6 +6,7 @@
 #include "occlusion/app/errors.hpp"
 #include "occlusion/app/json_output.hpp"
 #include "occlusion/app/memory_budget.hpp"
+#include "occlusion/app/work_budget.hpp"
 #include "occlusion/io/atomic_file.hpp"
 #include "occlusion/io/cloud_io.hpp"
 
@@ -67,6 +68,9 @@ ScanReport run_scan_on(const PointCloud& cloud, const ViewpointChoice::Resolved&
   check_memory_budget(
       scan_memory(cloud.size(), viewpoints.positions.size(), request.primitive == "disc"),
       request.max_memory_mb);
+  check_work_budget(
+      scan_work(cloud.size(), viewpoints.positions.size(), request.enable_acceleration),
+      request.max_work);
   const job::PointModel model = job::choose_point_model(cloud, job::point_settings(request),
                                                         "-fscan", report.warnings, progress);
   report.point_model = model.report;

@@ -2,26 +2,46 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <filesystem>
 #include <fstream>
 #include <system_error>
 
 #include "occlusion/io/input_error.hpp"
+#include "occlusion/io/output_recovery.hpp"
 
 namespace occlusion {
 namespace fs = std::filesystem;
 namespace {
 
+// Numbers temporaries and manifests apart within this process.
+unsigned long next_serial() {
+  static std::atomic<unsigned long> counter{0};
+  return counter.fetch_add(1);
+}
+
 // Unique per process (pid) and per call (counter), so concurrent writers of the
 // same target, in this process or another, never share a temporary file. The
 // tag goes in front, hidden, so the name keeps its extension: writers that
-// pick the format by extension (write_cloud) write the right one.
+// pick the format by extension (write_cloud) write the right one. The pid also
+// tells a sweep (io/output_recovery.hpp) whether its writer still runs.
 fs::path temporary_path_beside(const fs::path& target) {
-  static std::atomic<unsigned long> counter{0};
   const std::string name = ".tmp-" + std::to_string(static_cast<long>(::getpid())) + "-" +
-                           std::to_string(counter.fetch_add(1)) + "-" + target.filename().string();
+                           std::to_string(next_serial()) + "-" + target.filename().string();
   return target.parent_path() / name;
+}
+
+// The folders of the set's targets, each once, in order.
+std::vector<fs::path> folders_of(const std::vector<std::pair<std::string, std::string>>& files) {
+  std::vector<fs::path> folders;
+  for (const auto& file : files) {
+    const fs::path folder = fs::path(file.second).parent_path();
+    if (std::find(folders.begin(), folders.end(), folder) == folders.end()) {
+      folders.push_back(folder);
+    }
+  }
+  return folders;
 }
 
 void remove_quietly(const fs::path& path) {
@@ -91,12 +111,33 @@ void OutputSet::commit() {
       throw OutputError(target, "is a directory, so no output of this run was kept");
     }
   }
+  if (files_.empty()) {
+    committed_ = true;
+    return;
+  }
+  // A set a killed process left half renamed is finished before this one
+  // replaces any of its files, so the newer outputs win.
+  const std::vector<fs::path> folders = folders_of(files_);
+  for (const auto& folder : folders) recover_outputs(folder.string());
+  // One rename is atomic by itself; several are announced by a manifest that
+  // a sweep finishes from, should this process die between them.
+  std::string manifest;
+  if (files_.size() > 1) {
+    manifest = commit_manifest_path(folders.front().string(), static_cast<long>(::getpid()),
+                                    next_serial());
+    write_commit_manifest(manifest, files_);
+  }
   for (const auto& [temporary, target] : files_) {
     std::error_code status;
     fs::rename(temporary, target, status);
-    if (status) throw OutputError(target, "cannot replace the file: " + status.message());
+    if (status) {
+      // This process lives on and removes the rest: nothing for a sweep to finish.
+      if (!manifest.empty()) remove_quietly(manifest);
+      throw OutputError(target, "cannot replace the file: " + status.message());
+    }
   }
   committed_ = true;
+  if (!manifest.empty()) remove_quietly(manifest);
 }
 
 void ensure_directory(const std::string& dir) {

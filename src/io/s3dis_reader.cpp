@@ -242,7 +242,19 @@ PointCloud read_s3dis(const std::string& directory, const CloudReadOptions& read
   std::error_code status;
   for (fs::directory_iterator it(root, status), end; !status && it != end; it.increment(status)) {
     const std::string name = it->path().filename().string();
-    if (name.empty() || name[0] == '.' || !it->is_directory()) continue;
+    if (name.empty() || name[0] == '.') continue;
+    // A link that cannot be followed (a loop of links) may be meant as a
+    // room: refused by name rather than skipped.
+    std::error_code type_error;
+    if (!it->is_directory(type_error)) {
+      if (type_error) {
+        const bool loop = type_error == std::errc::too_many_symbolic_link_levels;
+        throw InputError(it->path().string(), 0,
+                         "cannot be followed: " + type_error.message() +
+                             (loop ? " (a loop of symbolic links)" : ""));
+      }
+      continue;
+    }
     rooms.emplace_back(name, it->path());
   }
   if (status) throw InputError(directory, 0, "cannot list: " + status.message());

@@ -6,8 +6,12 @@ namespace occlusion::server {
 
 CommandContext::CommandContext(ServerContext& server_context, Outbox& outbox,
                                std::uint32_t request_id, const Json::Value& request_params,
-                               const std::atomic<bool>* cancel)
-    : server(server_context), id(request_id), params(request_params), outbox_(outbox) {
+                               const std::atomic<bool>* cancel, double work_budget)
+    : server(server_context),
+      id(request_id),
+      params(request_params),
+      max_work(work_budget),
+      outbox_(outbox) {
   progress_.cancel = cancel;
   progress_.report = [this](const std::string& stage, double fraction) { report(stage, fraction); };
 }

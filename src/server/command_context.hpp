@@ -20,14 +20,17 @@ namespace occlusion::server {
 
 class CommandContext {
  public:
+  // `max_work`: the work budget this run gets (the server's, or the
+  // reserve's, which is smaller), in G ray steps.
   CommandContext(ServerContext& server, Outbox& outbox, std::uint32_t id, const Json::Value& params,
-                 const std::atomic<bool>* cancel);
+                 const std::atomic<bool>* cancel, double max_work);
   CommandContext(const CommandContext&) = delete;
   CommandContext& operator=(const CommandContext&) = delete;
 
   ServerContext& server;
   const std::uint32_t id;
   const Json::Value& params;
+  const double max_work;
 
   const Progress& progress() const { return progress_; }
 

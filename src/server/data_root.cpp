@@ -19,6 +19,14 @@ bool inside(const fs::path& root, const fs::path& path) {
   return root_end == root.end();
 }
 
+// A path whose links cannot be resolved: a loop of symbolic links (or one
+// too long) is the data's fault, not the server's, and it is not outside.
+ProtocolError unfollowable(const std::string& relative, const std::error_code& error) {
+  const bool loop = error == std::errc::too_many_symbolic_link_levels;
+  return ProtocolError("input_error", "'" + relative + "' cannot be followed: " + error.message() +
+                                          (loop ? " (a loop of symbolic links)" : ""));
+}
+
 // Folders below an input folder that readers look into: Area/room/Annotations/file.
 constexpr int kNestedDepth = 4;
 // A folder with more entries than this is not walked to the end; it is refused.
@@ -49,7 +57,8 @@ fs::path DataRoot::resolve(const std::string& relative, bool must_exist) const {
   // folds `..` in the rest, so the prefix test below sees where the path leads.
   std::error_code error;
   const fs::path resolved = fs::weakly_canonical(root_ / given, error);
-  if (error || !inside(root_, resolved)) {
+  if (error) throw unfollowable(relative, error);
+  if (!inside(root_, resolved)) {
     throw ProtocolError("path_outside_data", "'" + relative + "' is outside the data directory");
   }
   if (must_exist && !fs::exists(resolved, error)) {
@@ -78,7 +87,8 @@ void DataRoot::check_nested(const fs::path& dir, const std::string& relative, in
     std::error_code status;
     if (it->is_symlink(status)) {
       const fs::path target = fs::weakly_canonical(it->path(), status);
-      if (status || !inside(root_, target)) {
+      if (status) throw unfollowable(name, status);
+      if (!inside(root_, target)) {
         throw ProtocolError("path_outside_data",
                             "'" + name + "' is a link that leads outside the data directory");
       }

@@ -110,19 +110,19 @@ const std::map<std::string, Frames>& job_frames() {
 std::vector<Command> job_commands() {
   std::vector<Command> commands;
   for (const JobInfo& job : jobs()) {
-    commands.push_back(Command{job.name, Where::kWorker, [&job](CommandContext& context) {
-                                 if (job.name == "study") refuse_segmenter_commands(context.params);
-                                 const JobRun run =
-                                     job.run({job_source(context.params, job, context.server.root,
-                                                         context.server.limits.max_memory_mb)},
-                                             context.progress());
-                                 context.progress().check_cancel();
-                                 const auto frames = job_frames().find(job.name);
-                                 if (frames != job_frames().end()) frames->second(context, run);
-                                 Json::Value json = run.json;
-                                 context.server.root.relativise(json);
-                                 return json;
-                               }});
+    commands.push_back(Command{
+        job.name, Where::kWorker, [&job](CommandContext& context) {
+          if (job.name == "study") refuse_segmenter_commands(context.params);
+          const JobBudget budget{context.server.limits.max_memory_mb, context.max_work};
+          const JobRun run = job.run({job_source(context.params, job, context.server.root, budget)},
+                                     context.progress());
+          context.progress().check_cancel();
+          const auto frames = job_frames().find(job.name);
+          if (frames != job_frames().end()) frames->second(context, run);
+          Json::Value json = run.json;
+          context.server.root.relativise(json);
+          return json;
+        }});
   }
   return commands;
 }

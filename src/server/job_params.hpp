@@ -14,9 +14,14 @@ namespace occlusion::server {
 // data directory first (ProtocolError path_outside_data, or not_found for a
 // missing input); a job that writes files and was given no "out" writes to
 // DATA/out. Throws UsageError for what a config file would be refused for.
-// A job with a memory budget gets the server's, `max_memory_mb`, unless the
-// request asks for less.
+struct JobBudget {
+  std::uint64_t max_memory_mb = 0;  // 0: none
+  double max_work = 0;              // G ray steps; 0: none
+};
+
+// A job with a memory or work budget gets the server's (`max_memory_mb`,
+// `max_work`) unless the request asks for less.
 KeySource job_source(const Json::Value& params, const JobInfo& job, const DataRoot& root,
-                     std::uint64_t max_memory_mb);
+                     const JobBudget& budget);
 
 }  // namespace occlusion::server

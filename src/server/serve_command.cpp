@@ -36,6 +36,12 @@ const Keys<ServerOptions>& serve_keys() {
           .metavar("N")
           .doc("memory budget of one job in MiB (work over it is refused up front with the "
                "estimate); 0 = half the machine's memory"),
+      key("max_work", &R::max_work)
+          .range(0, 1e9)
+          .unit("G ray steps")
+          .metavar("N")
+          .doc("work budget of one job: rays x octree depth, in billions (work over it is "
+               "refused up front with the estimate and the keys to lower); 0 = none"),
       custom_key<R>(
           "cache_mb", ValueType::kInteger,
           [](R& r, const Json::Value& v) { r.cache_bytes = v.asUInt64() * kMiB; },

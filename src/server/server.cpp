@@ -15,6 +15,7 @@
 #include <stdexcept>
 
 #include "occlusion/app/memory_budget.hpp"
+#include "occlusion/io/output_recovery.hpp"
 #include "occlusion/server/static_files.hpp"
 #include "outbox.hpp"
 #include "server_context.hpp"
@@ -30,6 +31,10 @@ namespace asio = boost::asio;
 
 // Replies queued for one connection beyond which it is closed (1008).
 constexpr std::size_t kMaxBufferedBytes = std::size_t{1} << 30;
+// What the transport lets through beyond a message's protocol limit: a
+// message a little too long gets a JSON error (message_too_large), one far
+// too long a close (1009) before it is buffered.
+constexpr std::size_t kTransportSlack = std::size_t{64} << 10;
 
 // Sends from any thread by queueing onto the network thread, the only one that
 // touches WebSocket++ connections. A connection gone meanwhile drops the message.
@@ -120,6 +125,9 @@ struct Server::Impl {
   void on_open(Handle handle);
   void on_close(Handle handle);
   void on_message(Handle handle, const Endpoint::message_ptr& message);
+  // Sets the connection's message limit to the text limit, or to the upload
+  // its session awaits.
+  void allow_expected_binary(Handle handle, const Session& session);
   void on_http(Handle handle);
   bool on_validate(Handle handle);
   void log(const std::string& line) const;
@@ -152,6 +160,7 @@ Limits limits_of(const ServerOptions& options) {
   limits.max_queued_jobs = options.max_queued_jobs;
   limits.max_running_per_client = options.max_running_per_client;
   limits.max_memory_mb = options.max_memory_mb != 0 ? options.max_memory_mb : half_of_memory_mb();
+  limits.max_work = options.max_work;
   limits.progress_interval_seconds = options.progress_interval_seconds;
   return limits;
 }
@@ -168,10 +177,10 @@ Server::Impl::Impl(ServerOptions server_options)
   endpoint.set_error_channels(websocketpp::log::elevel::fatal);
   endpoint.init_asio();
   endpoint.set_reuse_addr(true);
-  // Beyond this a message is refused by WebSocket++ itself (close code 1009);
-  // the upload limit is checked, with a JSON error, when an upload is announced.
-  endpoint.set_max_message_size(
-      std::max(options.max_upload_bytes + kFrameHeaderSize + (64u << 10), options.max_text_bytes));
+  // Beyond this a message is refused by WebSocket++ itself (close code 1009)
+  // as soon as a frame header says so, before its bytes are held; only an
+  // announced upload raises a connection's limit (allow_expected_binary).
+  endpoint.set_max_message_size(options.max_text_bytes + kTransportSlack);
 
   endpoint.set_open_handler([this](Handle h) { on_open(h); });
   endpoint.set_close_handler([this](Handle h) { on_close(h); });
@@ -198,6 +207,14 @@ Server::Impl::Impl(ServerOptions server_options)
         ", not a loopback address: whoever reaches this port can read and write the data "
         "directory " +
         context.root.path().string());
+  }
+  // Job outputs a killed server left half committed are finished, and its
+  // temporaries removed, before any client reads them.
+  const RecoveredOutputs recovered = recover_outputs((context.root.path() / "out").string());
+  if (recovered.completed_sets + recovered.removed_temporaries > 0) {
+    log("out/: finished " + std::to_string(recovered.completed_sets) +
+        " output set(s) a killed run left half written, removed " +
+        std::to_string(recovered.removed_temporaries) + " temporary file(s)");
   }
   if (!web.has_viewer()) {
     log("no viewer in --web '" + options.web_dir +
@@ -257,6 +274,19 @@ void Server::Impl::on_message(Handle handle, const Endpoint::message_ptr& messag
   } else {
     it->second->on_binary(std::move(message->get_raw_payload()));
   }
+  // Runs before the next frame's header is read, even one already received.
+  allow_expected_binary(handle, *it->second);
+}
+
+void Server::Impl::allow_expected_binary(Handle handle, const Session& session) {
+  websocketpp::lib::error_code error;
+  const Endpoint::connection_ptr connection = endpoint.get_con_from_hdl(handle, error);
+  if (error) return;
+  const std::uint64_t upload = session.expected_binary_bytes();
+  connection->set_max_message_size(
+      upload == 0 ? options.max_text_bytes + kTransportSlack
+                  : std::max<std::uint64_t>(upload + kFrameHeaderSize + kTransportSlack,
+                                            options.max_text_bytes + kTransportSlack));
 }
 
 void Server::Impl::on_http(Handle handle) {

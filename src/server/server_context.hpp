@@ -20,6 +20,11 @@ struct Limits {
   // Each job's memory budget (app/memory_budget.hpp): work estimated to need
   // more is refused up front instead of taking the server down.
   std::uint64_t max_memory_mb = 4096;
+  // Each job's work budget in G ray steps (app/work_budget.hpp); 0: none.
+  double max_work = 0;
+  // The budget of a job started on the pool's reserve thread, which is kept
+  // for short work while every worker is busy: a few seconds of tracing.
+  double reserve_max_work = 0.05;
   double progress_interval_seconds = 0.1;  // at most 10 progress events per second per job
 };
 

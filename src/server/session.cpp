@@ -1,8 +1,11 @@
 #include "session.hpp"
 
+#include <algorithm>
+
 #include "command_params.hpp"
 #include "error_reply.hpp"
 #include "occlusion/app/job_registry.hpp"
+#include "occlusion/app/work_budget.hpp"
 #include "occlusion/server/protocol_error.hpp"
 #include "upload.hpp"
 
@@ -42,6 +45,7 @@ std::string hello_message(const Limits& limits) {
   limit["max_upload_bytes"] = Json::UInt64(limits.max_upload_bytes);
   limit["progress_per_second"] = 1.0 / limits.progress_interval_seconds;
   limit["max_memory_mb"] = Json::UInt64(limits.max_memory_mb);
+  limit["max_work"] = limits.max_work;
   limit["max_running_per_client"] = Json::UInt64(limits.max_running_per_client);
   json["limits"] = limit;
   return write_json(json);
@@ -93,32 +97,40 @@ void Session::dispatch(const Request& request) {
   if (command->name == "cancel") return cancel(request);
   if (command->name == "upload") return announce_upload(request);
   if (command->where == Where::kNetwork) {
-    execute(request.command, request.id, request.params, command->run, nullptr);
+    execute(request.command, request.id, request.params, command->run, nullptr, Lane::kWorker);
     return;
   }
   const Flag flag = std::make_shared<std::atomic<bool>>(false);
   if (!register_id(request.id, flag)) {
     throw ProtocolError("duplicate_id", "id " + std::to_string(request.id) + " is still running");
   }
-  submit(request.command, request.id, request.params, command->run, flag);
+  // Loads, and jobs that estimate their work, may start on the reserve.
+  const JobInfo* job = find_job(request.command);
+  const bool estimates_work =
+      job != nullptr && std::any_of(job->keys.begin(), job->keys.end(),
+                                    [](const KeyInfo& info) { return info.name == "max_work"; });
+  submit(request.command, request.id, request.params, command->run, flag,
+         request.command == "load" || estimates_work);
+}
+
+WorkerPool::OnPosition Session::position_reporter(std::uint32_t id) const {
+  // Until a worker takes it, the request's progress is its place in the queue.
+  return
+      [outbox = outbox_, id](std::size_t ahead) { outbox->send_text(queued_message(id, ahead)); };
 }
 
 void Session::submit(const std::string& command, std::uint32_t id, Json::Value params, Run run,
-                     const Flag& flag) {
+                     const Flag& flag, bool may_use_reserve) {
   auto self = shared_from_this();
-  // Until a worker takes it, the request's progress is its place in the queue.
-  auto on_position = [outbox = outbox_, id](std::size_t ahead) {
-    outbox->send_text(queued_message(id, ahead));
-  };
   // Jobs share the workers fairly between clients; loads and uploads, which a
   // client waits on to go on working, are not held back behind its own jobs.
   const bool is_job = command != "load" && command != "upload";
   const bool queued = server_.pool.submit(
       is_job ? this : nullptr,
-      [self, command, id, params = std::move(params), run = std::move(run), flag] {
-        self->execute(command, id, params, run, flag);
+      [self, command, id, params = std::move(params), run = std::move(run), flag](Lane lane) {
+        self->execute(command, id, params, run, flag, lane);
       },
-      std::move(on_position));
+      position_reporter(id), may_use_reserve);
   if (!queued) {
     finish(id);
     send_error(Json::Value(id), command, "busy", "too many jobs are waiting; try again later");
@@ -126,15 +138,38 @@ void Session::submit(const std::string& command, std::uint32_t id, Json::Value p
 }
 
 void Session::execute(const std::string& command, std::uint32_t id, const Json::Value& params,
-                      const Run& run, const Flag& flag) {
+                      const Run& run, const Flag& flag, Lane lane) {
+  const Limits& limits = server_.limits;
+  const bool on_reserve = lane == Lane::kReserve;
+  const double max_work =
+      on_reserve && (limits.max_work <= 0 || limits.reserve_max_work < limits.max_work)
+          ? limits.reserve_max_work
+          : limits.max_work;
   std::string final_reply;
   try {
-    CommandContext context(server_, *outbox_, id, params, flag.get());
+    CommandContext context(server_, *outbox_, id, params, flag.get(), max_work);
     context.progress().check_cancel();
     Json::Value result = run(context);
     // A job that finished as it was cancelled still counts as cancelled.
     context.progress().check_cancel();
     final_reply = result_message(id, command, std::move(result), context.sent());
+  } catch (const WorkBudgetError& error) {
+    // Too long for the reserve but within the server's budget: a worker
+    // runs it when one is free, ahead of the jobs that came after it.
+    const bool within_budget =
+        limits.max_work <= 0 || static_cast<double>(error.steps) <= limits.max_work * kWorkUnit;
+    if (on_reserve && max_work != limits.max_work && within_budget) {
+      auto self = shared_from_this();
+      const bool requeued = server_.pool.requeue(
+          this,
+          [self, command, id, params, run, flag](Lane next) {
+            self->execute(command, id, params, run, flag, next);
+          },
+          position_reporter(id));
+      if (requeued) return;
+    }
+    const ErrorReply reply = classify(std::current_exception());
+    final_reply = error_text(Json::Value(id), command, reply.code, reply.message);
   } catch (...) {
     const ErrorReply error = classify(std::current_exception());
     final_reply = error_text(Json::Value(id), command, error.code, error.message);
@@ -146,15 +181,16 @@ void Session::execute(const std::string& command, std::uint32_t id, const Json::
 }
 
 void Session::announce_upload(const Request& request) {
+  std::uint64_t size = 0;
   const auto refuse = [&] {
     const std::lock_guard<std::mutex> lock(mutex_);
     if (refused_uploads_.size() >= kMaxRefusedUploads) refused_uploads_.clear();
-    refused_uploads_.insert(request.id);
+    refused_uploads_[request.id] = size <= server_.limits.max_upload_bytes ? size : 0;
   };
   try {
     allow_keys(request.params, {"name", "size"});
     const std::string name = required_string(request.params, "name");
-    const std::uint64_t size = required_unsigned(request.params, "size");
+    size = required_unsigned(request.params, "size");
     check_upload_name(name);
     if (size > server_.limits.max_upload_bytes) {
       throw ProtocolError(
@@ -206,7 +242,7 @@ void Session::on_binary(std::string message) {
         [name = upload.name, bytes](CommandContext& context) {
           return store_upload(context, name, std::string_view(*bytes).substr(kFrameHeaderSize));
         },
-        flag);
+        flag, true);
   } catch (...) {
     const ErrorReply error = classify(std::current_exception());
     send_error(id, id.isNull() ? "" : "upload", error.code, error.message);
@@ -225,9 +261,11 @@ void Session::cancel(const Request& request) {
       it->second->store(true);
       found = true;
       // An upload still waiting for its bytes has no worker to notice the flag.
-      was_pending_upload = uploads_.erase(it->first) > 0;
+      const auto upload = uploads_.find(it->first);
+      was_pending_upload = upload != uploads_.end();
       if (was_pending_upload) {
-        refused_uploads_.insert(it->first);
+        refused_uploads_[it->first] = upload->second.size;
+        uploads_.erase(upload);
         running_.erase(it);
       }
     }
@@ -255,6 +293,14 @@ void Session::close() {
 std::size_t Session::running() const {
   const std::lock_guard<std::mutex> lock(mutex_);
   return running_.size();
+}
+
+std::uint64_t Session::expected_binary_bytes() const {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  std::uint64_t largest = 0;
+  for (const auto& [id, upload] : uploads_) largest = std::max(largest, upload.size);
+  for (const auto& [id, size] : refused_uploads_) largest = std::max(largest, size);
+  return largest;
 }
 
 bool Session::register_id(std::uint32_t id, const Flag& flag) {

@@ -8,7 +8,6 @@
 #include <map>
 #include <memory>
 #include <mutex>
-#include <set>
 #include <string>
 #include <string_view>
 
@@ -31,6 +30,11 @@ class Session : public std::enable_shared_from_this<Session> {
   void close();
 
   std::size_t running() const;
+  // The largest binary message this connection may send next: the biggest
+  // upload it announced and has not sent (refused ones included, whose bytes
+  // are dropped), 0 when none. Beyond max_text_bytes only such a message may
+  // go, so the transport refuses any other as soon as its frame passes the limit.
+  std::uint64_t expected_binary_bytes() const;
 
  private:
   using Flag = std::shared_ptr<std::atomic<bool>>;
@@ -44,12 +48,16 @@ class Session : public std::enable_shared_from_this<Session> {
   void dispatch(const Request& request);
   void announce_upload(const Request& request);
   void cancel(const Request& request);
-  // Runs on a worker; the id must be registered already.
+  // Runs on a worker; the id must be registered already. `may_use_reserve`:
+  // the command is short or can tell, by its work estimate, that it is not
+  // (worker_pool.hpp).
   void submit(const std::string& command, std::uint32_t id, Json::Value params, Run run,
-              const Flag& flag);
-  // Runs `run` and sends its result or error. Never throws.
+              const Flag& flag, bool may_use_reserve);
+  // Runs `run` and sends its result or error. Never throws. On the reserve,
+  // a job over the reserve's work budget goes back to the queue instead.
   void execute(const std::string& command, std::uint32_t id, const Json::Value& params,
-               const Run& run, const Flag& flag);
+               const Run& run, const Flag& flag, Lane lane);
+  WorkerPool::OnPosition position_reporter(std::uint32_t id) const;
   void send_error(const Json::Value& id, const std::string& command, const std::string& code,
                   const std::string& message);
   // The error reply as text, with data-directory prefixes taken out of the message.
@@ -66,7 +74,9 @@ class Session : public std::enable_shared_from_this<Session> {
   mutable std::mutex mutex_;
   std::map<std::uint32_t, Flag> running_;
   std::map<std::uint32_t, Upload> uploads_;
-  std::set<std::uint32_t> refused_uploads_;  // their binary message is dropped
+  // Their binary message is dropped; the announced size (0: none or over the
+  // upload limit) is what the transport still lets through.
+  std::map<std::uint32_t, std::uint64_t> refused_uploads_;
   bool closed_ = false;
 };
 

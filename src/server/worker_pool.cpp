@@ -6,22 +6,37 @@
 namespace occlusion::server {
 
 WorkerPool::WorkerPool(unsigned threads, std::size_t max_queued, std::size_t per_owner)
-    : max_queued_(max_queued), per_owner_(std::max<std::size_t>(per_owner, 1)) {
-  if (threads == 0) threads = 1;
-  threads_.reserve(threads);
-  for (unsigned t = 0; t < threads; ++t) threads_.emplace_back([this] { work(); });
+    : max_queued_(max_queued),
+      per_owner_(std::max<std::size_t>(per_owner, 1)),
+      workers_(std::max(threads, 1u)) {
+  threads_.reserve(workers_ + 1);
+  for (std::size_t t = 0; t < workers_; ++t) threads_.emplace_back([this] { work(Lane::kWorker); });
+  threads_.emplace_back([this] { work(Lane::kReserve); });
 }
 
 WorkerPool::~WorkerPool() {
   stop();
 }
 
-bool WorkerPool::submit(Owner owner, std::function<void()> task, OnPosition on_position) {
+bool WorkerPool::submit(Owner owner, Task task, OnPosition on_position, bool may_use_reserve) {
   Notices notices;
   {
     const std::lock_guard<std::mutex> lock(mutex_);
     if (stopping_ || queue_.size() >= max_queued_) return false;
-    queue_.push_back(Queued{owner, std::move(task), std::move(on_position)});
+    queue_.push_back(Queued{owner, std::move(task), std::move(on_position), may_use_reserve});
+    notices = positions();
+  }
+  wake_.notify_all();
+  tell(notices);
+  return true;
+}
+
+bool WorkerPool::requeue(Owner owner, Task task, OnPosition on_position) {
+  Notices notices;
+  {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    if (stopping_) return false;
+    queue_.push_front(Queued{owner, std::move(task), std::move(on_position), false});
     notices = positions();
   }
   wake_.notify_all();
@@ -63,8 +78,11 @@ void WorkerPool::stop() {
   dropped.clear();
 }
 
-std::optional<std::size_t> WorkerPool::next_runnable() const {
+std::optional<std::size_t> WorkerPool::next_runnable(Lane lane) const {
+  // The reserve is for when every worker is taken.
+  if (lane == Lane::kReserve && busy_workers_ < workers_) return std::nullopt;
   for (std::size_t i = 0; i < queue_.size(); ++i) {
+    if (lane == Lane::kReserve && !queue_[i].may_use_reserve) continue;
     if (queue_[i].owner == nullptr) return i;
     const auto it = running_.find(queue_[i].owner);
     if (it == running_.end() || it->second < per_owner_) return i;
@@ -77,9 +95,8 @@ WorkerPool::Notices WorkerPool::positions() {
   // them, plus those of its own owner ahead of it (they go first).
   // A task an idle worker is about to take is not told it waits.
   Notices notices;
-  std::size_t running_total = 0;
-  for (const auto& [owner, count] : running_) running_total += count;
-  const std::size_t idle = threads_.size() > running_total ? threads_.size() - running_total : 0;
+  // (The reserve is not counted: what it takes is a bonus, not a promise.)
+  const std::size_t idle = workers_ - busy_workers_;
   std::map<Owner, std::size_t> waiting;
   std::size_t runnable_ahead = 0;
   for (auto& queued : queue_) {
@@ -103,27 +120,31 @@ void WorkerPool::tell(const Notices& notices) {
   for (const auto& [on_position, position] : notices) on_position(position);
 }
 
-void WorkerPool::work() {
+void WorkerPool::work(Lane lane) {
   for (;;) {
     Queued next;
     Notices notices;
     {
       std::unique_lock<std::mutex> lock(mutex_);
       std::optional<std::size_t> index;
-      wake_.wait(lock, [&] { return stopping_ || (index = next_runnable()).has_value(); });
+      wake_.wait(lock, [&] { return stopping_ || (index = next_runnable(lane)).has_value(); });
       if (stopping_) return;
       next = std::move(queue_[*index]);
       queue_.erase(queue_.begin() + static_cast<std::ptrdiff_t>(*index));
       ++running_[next.owner];
+      if (lane == Lane::kWorker) ++busy_workers_;
       notices = positions();
     }
+    // The reserve may start something now that this worker is taken.
+    if (lane == Lane::kWorker) wake_.notify_all();
     tell(notices);
     const Owner owner = next.owner;
-    next.task();
+    next.task(lane);
     next = Queued{};  // the task's captures go before its owner's slot frees
     {
       const std::lock_guard<std::mutex> lock(mutex_);
       if (--running_[owner] == 0) running_.erase(owner);
+      if (lane == Lane::kWorker) --busy_workers_;
       notices = positions();
     }
     // The owner's next task may start now, on any worker.

@@ -194,6 +194,16 @@ TEST(S3dis, AreaWithANonRoomFolderNamesIt) {
   testing::expect_input_error([&] { read_cloud(area.string()); }, "backup", 0, "not a room");
 }
 
+TEST(S3dis, AreaWithALoopOfLinksNamesTheLink) {
+  testing::ScratchDirectory dir;
+  const fs::path area = dir.path() / "Area_9";
+  make_room(area / "office_1", {{"wall_1.txt", "9 9 9 1 1 1\n"}});
+  fs::create_symlink("office_3", area / "office_2");
+  fs::create_symlink("office_2", area / "office_3");
+  testing::expect_input_error([&] { read_cloud(area.string()); }, "office_", 0,
+                              "a loop of symbolic links");
+}
+
 TEST(S3dis, FolderThatIsNeitherRoomNorArea) {
   testing::ScratchDirectory dir;
   testing::write_text(dir.file("loose.txt"), "1 2 3\n");

@@ -166,6 +166,69 @@ TEST(Hardening, OneClientsLongJobsLeaveAWorkerToOthers) {
   EXPECT_EQ(greedy->collect(2, Millis(20000)).error_code(), "cancelled");
 }
 
+TEST(Hardening, WorkBeyondTheWorkBudgetIsRefusedNamingTheKeysToChange) {
+  TestServer server;  // the default budget
+  auto client = server.connect();
+  EXPECT_EQ(client->hello()["limits"]["max_work"].asDouble(), 100.0);
+  // 10,000 viewpoints x 1e8 rays: small in memory, days of tracing.
+  const Reply reply = client->request(
+      1, "cloud_occlusion", params(R"({"path": "s3dis_synthetic/Area_1/office_1", "num_vp": 10000,
+                 "num_rays_per_vp": 100000000, "out": ""})"));
+  EXPECT_EQ(reply.error_code(), "invalid_request") << reply.final;
+  const std::string message = reply.final["message"].asString();
+  for (const char* named : {"max_work", "num_rays_per_vp", "num_vp", "ray steps"}) {
+    EXPECT_NE(message.find(named), std::string::npos) << named << ": " << message;
+  }
+  // A request may ask for a smaller budget than the server's, not a larger one.
+  const Reply lower = client->request(
+      2, "scan", params(R"({"path": "s3dis_synthetic/Area_1/office_1", "max_work": 0.5,
+                             "num_vp": 2000, "out": ""})"));
+  EXPECT_EQ(lower.error_code(), "invalid_request") << lower.final;
+  expect_serving(server);
+}
+
+// Waits for a progress event of request `id` at a stage other than "queued":
+// the job runs on a worker. False after the hang guard.
+bool wait_running(BlockingClient& client, std::uint32_t id) {
+  const auto deadline = Clock::now() + std::chrono::seconds(120);
+  while (Clock::now() < deadline) {
+    const auto message = client.receive(Millis(1000));
+    if (!message || message->binary) continue;
+    const Json::Value json = params(message->data);
+    if (json["id"].asUInt() == id && json["type"].asString() == "progress" &&
+        json["stage"].asString() != "queued") {
+      return true;
+    }
+  }
+  return false;
+}
+
+TEST(Hardening, AThirdClientsSmallJobRunsWhileTwoHeavyOnesHoldBothWorkers) {
+  TestServer server;  // two workers
+  auto first = server.connect();
+  auto second = server.connect();
+  first->send_request(1, "cloud_occlusion", long_job());
+  ASSERT_TRUE(wait_running(*first, 1));
+  second->send_request(1, "cloud_occlusion", long_job());
+  ASSERT_TRUE(wait_running(*second, 1));
+  // A third heavy job finds the workers taken; it may start on the reserve,
+  // but hands it back once its estimate shows it is long.
+  auto third = server.connect();
+  third->send_request(1, "cloud_occlusion", long_job());
+
+  auto small = server.connect();
+  const Reply reply = small->request(
+      1, "cloud_occlusion", params(R"({"path": "s3dis_synthetic/Area_1/office_1", "pattern": 1,
+                 "num_rays_per_vp": 2000, "out": ""})"),
+      Millis(120000));  // hang guard: it takes well under a second
+  EXPECT_TRUE(reply.ok()) << reply.final;
+  // The heavy jobs were still running (or waiting): they end cancelled, not done.
+  for (BlockingClient* heavy : {first.get(), second.get(), third.get()}) {
+    heavy->send_request(2, "cancel", params(R"({"target": 1})"));
+    EXPECT_EQ(heavy->collect(1, Millis(60000)).error_code(), "cancelled");
+  }
+}
+
 // Cancel is noticed while the mesh is sampled, not only once rays are traced.
 TEST(Hardening, CancelStopsSamplingAtOnce) {
   TestServer server;
@@ -203,6 +266,36 @@ TEST(Hardening, LinkNestedInASceneFolderCannotLeadOut) {
   // Listing the folder still works; the link is left out.
   const Reply listing = client->request(7, "list_files", params(R"({"dir": "evil_room"})"));
   EXPECT_TRUE(listing.ok()) << listing.final;
+  expect_serving(server);
+}
+
+TEST(Hardening, ALoopOfLinksInTheDataFolderIsAnInputErrorNamingIt) {
+  TestServer server;
+  fs::create_symlink("loop_b", server.files().file("loop_a"));
+  fs::create_symlink("loop_a", server.files().file("loop_b"));
+  fs::create_symlink("itself", server.files().file("s3dis_synthetic/Area_1/itself"));
+  auto client = server.connect();
+  // The data folder itself read as a scene, the link, a scene folder holding one.
+  std::uint32_t id = 1;
+  for (const auto& [command, request] : std::vector<std::pair<std::string, std::string>>{
+           {"load", R"({"path": ""})"},
+           {"cloud_occlusion", R"({"path": ".", "out": ""})"},
+           {"load", R"({"path": "loop_a"})"},
+           {"scan", R"({"path": "loop_b/x", "out": ""})"},
+           {"load", R"({"path": "s3dis_synthetic/Area_1"})"},
+           {"cloud_occlusion", R"({"path": "s3dis_synthetic/Area_1", "out": ""})"}}) {
+    const Reply reply = client->request(id++, command, params(request));
+    EXPECT_EQ(reply.error_code(), "input_error") << command << " " << request << reply.final;
+    const std::string message = reply.final["message"].asString();
+    EXPECT_TRUE(message.find("loop_") != std::string::npos ||
+                message.find("itself") != std::string::npos)
+        << message;
+    EXPECT_NE(message.find("loop of symbolic links"), std::string::npos) << message;
+  }
+  // Listing leaves the links out and goes on.
+  EXPECT_TRUE(client->request(id++, "list_files").ok());
+  EXPECT_TRUE(
+      client->request(id++, "list_files", params(R"({"dir": "s3dis_synthetic/Area_1"})")).ok());
   expect_serving(server);
 }
 

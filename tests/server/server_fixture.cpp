@@ -100,8 +100,8 @@ void expect_same_report(const Json::Value& a, const Json::Value& b, const std::s
       // Paths differ by where each side runs (data-relative on the server).
       "timings", "input", "outputs", "polygon_path", "ground_truth", "prediction", "mapping_path",
       "predictions", "path", "out", "scenes",
-      // The server's own memory budget applies to its jobs (docs/protocol.md).
-      "max_memory_mb"};
+      // The server's own memory and work budgets apply to its jobs (docs/protocol.md).
+      "max_memory_mb", "max_work"};
   if (a.isNumeric() && b.isNumeric() && !a.isBool() && !b.isBool()) {
     const double x = a.asDouble(), y = b.asDouble();
     EXPECT_LE(std::abs(x - y), 1e-9 * std::max({1.0, std::abs(x), std::abs(y)}))

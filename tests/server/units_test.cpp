@@ -2,6 +2,8 @@
 // static files.
 
 #include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -153,6 +155,28 @@ TEST(Server, RefusesAMissingDataDirectory) {
   options.port = 0;
   options.data_dir = "/no/such/directory";
   EXPECT_THROW(server::Server{options}, std::invalid_argument);
+}
+
+// A server killed (SIGKILL) while it committed a job's outputs leaves its
+// temporaries in DATA/out; the next server sweeps them at start.
+TEST(Server, StartSweepsTheOutputsOfADeadProcess) {
+  const TestData files;
+  fs::create_directories(files.file("out"));
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) ::_exit(0);
+  ASSERT_EQ(::waitpid(child, nullptr, 0), child);  // a PID that no longer runs
+  const std::string dead = files.file("out/.tmp-" + std::to_string(child) + "-0-room.moc.json");
+  const std::string live =
+      files.file("out/.tmp-" + std::to_string(::getppid()) + "-0-room.moc.json");
+  std::ofstream(dead) << "half";
+  std::ofstream(live) << "in progress";
+  server::ServerOptions options = TestServer::quiet_options();
+  options.port = 0;
+  options.data_dir = files.data();
+  const server::Server server(options);
+  EXPECT_FALSE(fs::exists(dead));
+  EXPECT_TRUE(fs::exists(live));
 }
 
 }  // namespace

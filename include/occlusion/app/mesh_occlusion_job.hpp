@@ -28,6 +28,9 @@ struct MeshOcclusionRequest {
   std::string out;       // directory for output files; empty = none
   // Refuse, before the work, a request estimated to need more (memory_budget.hpp); 0 = the machine.
   std::uint64_t max_memory_mb = 0;
+  // Refuse, before the work, a request estimated to trace more (work_budget.hpp),
+  // in G ray steps; 0 = no budget.
+  double max_work = 0;
 };
 
 struct MeshOcclusionReport {

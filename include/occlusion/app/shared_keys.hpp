@@ -46,6 +46,18 @@ KeyBuilder<R> max_memory_key(std::uint64_t R::*field) {
 }
 
 template <class R>
+KeyBuilder<R> max_work_key(double R::*field) {
+  return key("max_work", field)
+      .range(0, 1e9)
+      .unit("G ray steps")
+      .metavar("N")
+      .doc(
+          "refuse up front, with the estimate, work that traces more: rays x octree depth (x "
+          "primitives without acceleration), in billions; 0 = no budget (the server's own "
+          "budget always applies)");
+}
+
+template <class R>
 KeyBuilder<R> octree_resolution_key(double R::*field) {
   return key("octree_resolution", field)
       .non_negative()

@@ -24,7 +24,9 @@ void write_file_atomically(const std::string& path,
 // them all onto their targets once every one is written. An OutputSet
 // destroyed without commit (a writer threw, the run was cancelled or
 // interrupted) removes its temporaries and leaves the previous outputs as they
-// were.
+// were. A process killed outright (SIGKILL) cannot clean up: a manifest
+// written before the renames lets a later sweep finish them, and remove the
+// temporaries (io/output_recovery.hpp); commit sweeps its folders first.
 //
 //   OutputSet outputs;
 //   write_mesh_ply(outputs.add(ply_path), ...);

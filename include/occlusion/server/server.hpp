@@ -25,6 +25,10 @@ struct ServerOptions {
   std::size_t max_running_per_client = 1;  // a connection's jobs running at once
   // A job estimated to need more memory is refused; 0: half the machine's memory.
   std::uint64_t max_memory_mb = 0;
+  // A job estimated to trace more G ray steps (app/work_budget.hpp) is
+  // refused; 0: no budget. The default, 100 (1e8 rays from each of 9
+  // viewpoints over an 80,000-point cloud is 15), is hours of tracing.
+  double max_work = 100;
   double progress_interval_seconds = 0.1;
   bool stop_on_signals = false;  // SIGINT and SIGTERM stop run() (the CLI sets it)
   // One line per notable event; default: stderr.
