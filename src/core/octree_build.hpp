@@ -16,6 +16,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <type_traits>
 #include <vector>
 
 #include "occlusion/core/large_buffer.hpp"
@@ -123,8 +124,9 @@ class MortonBuilder {
 
   // Moves `shapes` in leaf order into `sorted` (ids[position] = index in
   // `shapes`), builds the nodes, and returns the root: an inner node, or a
-  // leaf when the whole scene is one. `shapes` is emptied once sorted, so the
-  // two copies never live beside the nodes (16 bytes a sphere at the peak).
+  // leaf when the whole scene is one. `shapes` is emptied once sorted (unless
+  // const: the caller's), so the two copies never live beside the nodes (16
+  // bytes a sphere at the peak).
   template <class Shapes>
   BuiltChild build(Shapes& shapes, LargeVector<Shape>& sorted, LargeVector<PrimitiveId>& ids) {
     const std::size_t n = shapes.size();
@@ -159,7 +161,7 @@ class MortonBuilder {
       progress_.check_cancel();
       for (std::size_t i = first; i < last; ++i) sorted[i] = shapes[ids[i]];
     });
-    Shapes().swap(shapes);
+    if constexpr (!std::is_const_v<Shapes>) std::remove_cv_t<Shapes>().swap(shapes);
     sorted_ = &sorted;
     BuiltChild root;
     if (is_leaf_run(0, static_cast<std::uint32_t>(n))) {

@@ -25,7 +25,13 @@ Octree<Shape>::Octree(std::vector<Shape> shapes, const OctreeOptions& options,
 }
 
 template <class Shape>
-Octree<Shape>::Octree(LargeVector<Shape> shapes, const OctreeOptions& options,
+Octree<Shape>::Octree(LargeVector<Shape>&& shapes, const OctreeOptions& options,
+                      const Progress& progress) {
+  build(shapes, options, progress);
+}
+
+template <class Shape>
+Octree<Shape>::Octree(const LargeVector<Shape>& shapes, const OctreeOptions& options,
                       const Progress& progress) {
   build(shapes, options, progress);
 }
@@ -68,7 +74,6 @@ void Octree<Shape>::build(Shapes& shapes, const OctreeOptions& options, const Pr
     nodes_.reserve(std::min(shapes.size(), 2 * shapes.size() / options.max_leaf_size + 64));
     octree_detail::MortonBuilder<Shape> builder(options, nodes_, stats_, progress);
     const octree_detail::BuiltChild top = builder.build(shapes, shapes_, ids_);
-    Shapes().swap(shapes);  // the sorted copy replaces it
     if (top.count > 0) {
       // The whole scene is one leaf: give it a root node to live in.
       nodes_.emplace_back();

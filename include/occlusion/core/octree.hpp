@@ -118,7 +118,11 @@ class Octree {
   // The same from shapes in a LargeVector, whose pages are huge pages when
   // it is big (large_buffer.hpp): on a virtual machine a cold build of 100k
   // triangles spent more time faulting in fresh 4 KiB pages than building.
-  explicit Octree(LargeVector<Shape> shapes, const OctreeOptions& options = {},
+  explicit Octree(LargeVector<Shape>&& shapes, const OctreeOptions& options = {},
+                  const Progress& progress = {});
+  // From shapes the caller keeps (a cloud's surfels): the tree's sorted copy
+  // is gathered from them directly, with no second copy to move from.
+  explicit Octree(const LargeVector<Shape>& shapes, const OctreeOptions& options = {},
                   const Progress& progress = {});
 
   std::optional<Hit> intersect(const Ray& ray, PrimitiveId ignore_id = kNoPrimitive) const;
