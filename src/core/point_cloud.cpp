@@ -56,9 +56,17 @@ void PointCloud::validate() const {
   check_size(colours.size(), size(), "colours");
   check_size(labels.size(), size(), "labels");
   check_size(instances.size(), size(), "instances");
+  check_size(station_ids.size(), size(), "station ids");
   for (std::size_t i = 0; i < size(); ++i) {
     if (!positions[i].allFinite()) {
       throw std::invalid_argument("point cloud: point " + std::to_string(i) + " is not finite");
+    }
+  }
+  for (std::size_t i = 0; i < station_ids.size(); ++i) {
+    if (station_ids[i] < 0 || station_ids[i] >= static_cast<std::int32_t>(stations.size())) {
+      throw std::invalid_argument("point cloud: point " + std::to_string(i) + " has station " +
+                                  std::to_string(station_ids[i]) + " but the cloud has " +
+                                  std::to_string(stations.size()) + " stations");
     }
   }
   if (!class_names.empty()) {
@@ -80,10 +88,12 @@ PointCloud PointCloud::subset(const std::vector<bool>& keep) const {
   out.class_names = class_names;
   out.sensor = sensor;  // the same sensor saw the kept points
   out.shift = shift;
+  out.stations = stations;
   keep_where(positions, keep, out.positions);
   keep_where(colours, keep, out.colours);
   keep_where(labels, keep, out.labels);
   keep_where(instances, keep, out.instances);
+  keep_where(station_ids, keep, out.station_ids);
   return out;
 }
 

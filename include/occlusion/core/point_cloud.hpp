@@ -32,6 +32,15 @@ struct SensorFrame {
   bool single_view() const { return organised() || has_pose(); }
 };
 
+// A scanner position the file records (an E57 scan's pose, a depth frame's
+// camera): each is a default viewpoint of the cloud and the origin its points'
+// ranges are measured from. `frame` is in the cloud's local frame; its
+// width x height is the scan's grid (columns x rows) when the scan has one.
+struct Station {
+  std::string name;
+  SensorFrame frame;
+};
+
 // A "global shift", as CloudCompare users know it: float keeps about seven
 // digits, so a cloud in UTM coordinates (x ~ 5e5, y ~ 5.4e6) would lose
 // everything below half a unit. The readers store such clouds relative to a
@@ -55,11 +64,16 @@ struct PointCloud {
   std::vector<std::string> class_names;
   SensorFrame sensor;  // PCD only, in the local frame; the default says "not a single-view frame"
   Eigen::Vector3d shift = Eigen::Vector3d::Zero();  // the global shift (zero: none)
+  // The stations the file records (empty: none) and, per point, the index of
+  // the station that measured it (empty when the file does not say).
+  std::vector<Station> stations;
+  std::vector<std::int32_t> station_ids;
 
   std::size_t size() const { return positions.size(); }
   bool has_colours() const { return !colours.empty(); }
   bool has_labels() const { return !labels.empty(); }
   bool has_instances() const { return !instances.empty(); }
+  bool has_station_ids() const { return !station_ids.empty(); }
   bool shifted() const { return shift != Eigen::Vector3d::Zero(); }
 
   // A point given in the file's frame (a viewpoint, an opening's corner) in
@@ -72,7 +86,8 @@ struct PointCloud {
   Eigen::Vector3d original_position(std::size_t i) const;
 
   // Throws std::invalid_argument if an attribute's size differs from the point
-  // count, a position is not finite, or a label has no name while names exist.
+  // count, a position is not finite, a label has no name while names exist, or
+  // a station id names no station.
   void validate() const;
   // The cloud restricted to points where keep[i] is true, all attributes kept.
   PointCloud subset(const std::vector<bool>& keep) const;

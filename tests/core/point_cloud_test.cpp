@@ -1,0 +1,41 @@
+#include "occlusion/core/point_cloud.hpp"
+
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+
+namespace occlusion {
+namespace {
+
+PointCloud two_station_cloud() {
+  PointCloud cloud;
+  cloud.positions = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}};
+  cloud.stations = {{"scan_a", {}}, {"scan_b", {}}};
+  cloud.stations[1].frame.origin = Eigen::Vector3d(5, 0, 1.5);
+  cloud.station_ids = {0, 1, 1};
+  return cloud;
+}
+
+TEST(PointCloudStations, StationIdsMustNameAStation) {
+  PointCloud cloud = two_station_cloud();
+  EXPECT_NO_THROW(cloud.validate());
+  cloud.station_ids[2] = 2;
+  EXPECT_THROW(cloud.validate(), std::invalid_argument);
+  cloud.station_ids[2] = -1;
+  EXPECT_THROW(cloud.validate(), std::invalid_argument);
+  cloud.station_ids.pop_back();
+  EXPECT_THROW(cloud.validate(), std::invalid_argument);
+}
+
+TEST(PointCloudStations, ASubsetKeepsTheStationsAndEachPointsStation) {
+  const PointCloud cloud = two_station_cloud();
+  const PointCloud kept = cloud.subset({false, true, true});
+  ASSERT_EQ(kept.stations.size(), 2u);
+  EXPECT_EQ(kept.stations[1].name, "scan_b");
+  EXPECT_EQ(kept.stations[1].frame.origin, Eigen::Vector3d(5, 0, 1.5));
+  EXPECT_EQ(kept.station_ids, (std::vector<std::int32_t>{1, 1}));
+  EXPECT_NO_THROW(kept.validate());
+}
+
+}  // namespace
+}  // namespace occlusion
