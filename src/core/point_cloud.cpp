@@ -56,6 +56,7 @@ void PointCloud::validate() const {
   check_size(colours.size(), size(), "colours");
   check_size(labels.size(), size(), "labels");
   check_size(instances.size(), size(), "instances");
+  check_size(intensities.size(), size(), "intensities");
   check_size(station_ids.size(), size(), "station ids");
   for (std::size_t i = 0; i < size(); ++i) {
     if (!positions[i].allFinite()) {
@@ -93,6 +94,7 @@ PointCloud PointCloud::subset(const std::vector<bool>& keep) const {
   keep_where(colours, keep, out.colours);
   keep_where(labels, keep, out.labels);
   keep_where(instances, keep, out.instances);
+  keep_where(intensities, keep, out.intensities);
   keep_where(station_ids, keep, out.station_ids);
   return out;
 }

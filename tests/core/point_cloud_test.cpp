@@ -13,6 +13,7 @@ PointCloud two_station_cloud() {
   cloud.stations = {{"scan_a", {}}, {"scan_b", {}}};
   cloud.stations[1].frame.origin = Eigen::Vector3d(5, 0, 1.5);
   cloud.station_ids = {0, 1, 1};
+  cloud.intensities = {0.25f, 0.5f, 0.75f};
   return cloud;
 }
 
@@ -27,6 +28,12 @@ TEST(PointCloudStations, StationIdsMustNameAStation) {
   EXPECT_THROW(cloud.validate(), std::invalid_argument);
 }
 
+TEST(PointCloudStations, IntensitiesHaveOneEntryPerPoint) {
+  PointCloud cloud = two_station_cloud();
+  cloud.intensities.pop_back();
+  EXPECT_THROW(cloud.validate(), std::invalid_argument);
+}
+
 TEST(PointCloudStations, ASubsetKeepsTheStationsAndEachPointsStation) {
   const PointCloud cloud = two_station_cloud();
   const PointCloud kept = cloud.subset({false, true, true});
@@ -34,6 +41,7 @@ TEST(PointCloudStations, ASubsetKeepsTheStationsAndEachPointsStation) {
   EXPECT_EQ(kept.stations[1].name, "scan_b");
   EXPECT_EQ(kept.stations[1].frame.origin, Eigen::Vector3d(5, 0, 1.5));
   EXPECT_EQ(kept.station_ids, (std::vector<std::int32_t>{1, 1}));
+  EXPECT_EQ(kept.intensities, (std::vector<float>{0.5f, 0.75f}));
   EXPECT_NO_THROW(kept.validate());
 }
 

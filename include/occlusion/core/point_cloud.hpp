@@ -60,6 +60,9 @@ struct PointCloud {
   std::vector<std::array<std::uint8_t, 3>> colours;  // RGB
   std::vector<std::int32_t> labels;                  // semantic class id, -1 = unlabelled
   std::vector<std::int32_t> instances;               // instance id, -1 = none
+  // The return's strength as the file stores it (E57, LAS, PCD/PLY `intensity`):
+  // scanners disagree on its scale, so it is kept, never compared across files.
+  std::vector<float> intensities;
   // class_names[label] when known (S3DIS: the 13 classes), else empty.
   std::vector<std::string> class_names;
   SensorFrame sensor;  // PCD only, in the local frame; the default says "not a single-view frame"
@@ -73,6 +76,7 @@ struct PointCloud {
   bool has_colours() const { return !colours.empty(); }
   bool has_labels() const { return !labels.empty(); }
   bool has_instances() const { return !instances.empty(); }
+  bool has_intensities() const { return !intensities.empty(); }
   bool has_station_ids() const { return !station_ids.empty(); }
   bool shifted() const { return shift != Eigen::Vector3d::Zero(); }
 
