@@ -94,7 +94,7 @@ TEST(CloudStations, PlyScanValueMustNameAStation) {
   testing::ScratchDirectory dir;
   const std::string path = dir.file("bad.ply");
   testing::write_text(path, std::string(kHeader) + "0 0 0 0\n1 1 1 1\n");
-  testing::expect_input_error([&] { read_cloud(path); }, "bad.ply", 10,
+  testing::expect_input_error([&] { read_cloud(path); }, "bad.ply", 11,
                               "scan value 1 names no station (the header records 1)");
 }
 
