@@ -138,14 +138,26 @@ TEST(CloudTruth, StationScanRecordingItsStationIsSeenFromItThroughItsWindow) {
   EXPECT_TRUE(own.field_of_view->full_turn);
   EXPECT_EQ(own.result.outside_view_rays, 0u);
   EXPECT_EQ(to_json(own)["station_field_of_view"]["station"].asString(), "station 1");
-  // Both directions from elsewhere, through the same window: what the mesh
-  // sees is kept and what a wall, the cabinet or the board hides is dropped.
+  // Both directions from elsewhere, through the same window. From above the
+  // furniture, what the mesh sees is kept and what a wall, the cabinet or the
+  // board hides is dropped. The window takes away only directions the scanner
+  // never looked in (a 5 degree cone above and below each viewpoint): the
+  // same scan without its station record hides no more and keeps about as
+  // much, from above and from low among the furniture (where this scan's
+  // sparse columns let through half of what the mesh hides, window or not).
+  SampledCloud unrecorded = scan;
+  unrecorded.cloud.stations.clear();
   for (const Eigen::Vector3d& viewpoint : {kHigh, kLow}) {
-    const Agreement a = scan_against_mesh(mesh, scan, viewpoint, "disc");
-    const std::string where = "station scan from " + std::to_string(viewpoint.z());
-    EXPECT_GE(a.agreement, 0.95) << where;
-    EXPECT_GE(a.kept_of_visible, 0.95) << where;
-    EXPECT_GE(a.hidden_of_hidden, 0.9) << where;
+    const Agreement with = scan_against_mesh(mesh, scan, viewpoint, "disc");
+    const Agreement without = scan_against_mesh(mesh, unrecorded, viewpoint, "disc");
+    const std::string where = "from " + std::to_string(viewpoint.z());
+    EXPECT_GE(with.hidden_of_hidden, without.hidden_of_hidden) << where;
+    EXPECT_NEAR(with.kept_of_visible, without.kept_of_visible, 0.01) << where;
+    if (viewpoint == kHigh) {
+      EXPECT_GE(with.agreement, 0.95);
+      EXPECT_GE(with.kept_of_visible, 0.95);
+      EXPECT_GE(with.hidden_of_hidden, 0.9);
+    }
   }
 }
 
