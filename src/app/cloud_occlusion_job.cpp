@@ -282,9 +282,8 @@ Json::Value to_json(const CloudOcclusionReport& report) {
   json["skipped_lines"] = Json::UInt64(report.skipped_lines);
   json["station_filter"] = station_filter_json(report.station_filter);
   json["viewpoint_source"] = report.viewpoint_source;
-  json["station_field_of_view"] =
-      job::station_field_of_view_json(report.station_field_of_view, report.field_of_view_station,
-                                      report.result.outside_view_rays);
+  json["station_field_of_view"] = job::station_field_of_view_json(
+      report.station_field_of_view, report.field_of_view_station, report.result.outside_view_rays);
   if (report.exterior) {
     Json::Value exterior = result_json(report.exterior->result, report.viewpoint_names);
     exterior["classes"] = to_json(q.exterior_classes);

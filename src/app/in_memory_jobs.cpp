@@ -36,10 +36,10 @@ ScanReport scan_in_memory(const PointCloud& cloud, const ScanRequest& request,
   cloud.validate();
   PointCloud copy;
   StationFilterReport dropped;
-  const PointCloud& filtered = filter_in_memory(cloud, station_filter(request), request.path,
-                                                copy, dropped);
-  ScanReport report =
-      run_scan_on(filtered, job::resolve_for_cloud(request.viewpoints, filtered), request, progress);
+  const PointCloud& filtered =
+      filter_in_memory(cloud, station_filter(request), request.path, copy, dropped);
+  ScanReport report = run_scan_on(filtered, job::resolve_for_cloud(request.viewpoints, filtered),
+                                  request, progress);
   report.station_filter = dropped;
   return report;
 }
@@ -51,8 +51,8 @@ CloudOcclusionReport cloud_occlusion_in_memory(const PointCloud& cloud,
   cloud.validate();
   PointCloud copy;
   StationFilterReport dropped;
-  const PointCloud& filtered = filter_in_memory(cloud, station_filter(request), request.path,
-                                                copy, dropped);
+  const PointCloud& filtered =
+      filter_in_memory(cloud, station_filter(request), request.path, copy, dropped);
   CloudOcclusionReport report =
       run_cloud_occlusion_on(filtered, job::resolve_for_cloud(request.viewpoints, filtered),
                              read_openings(request.polygon_path), request, progress);

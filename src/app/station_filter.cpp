@@ -78,8 +78,8 @@ void drop_out_of_range(PointCloud& cloud, const StationFilter& filter, const std
   }
   std::vector<bool> keep(cloud.size(), true);
   for (std::size_t i = 0; i < cloud.size(); ++i) {
-    const std::size_t s = cloud.has_station_ids() ? static_cast<std::size_t>(cloud.station_ids[i])
-                                                  : 0;
+    const std::size_t s =
+        cloud.has_station_ids() ? static_cast<std::size_t>(cloud.station_ids[i]) : 0;
     const double range = (cloud.positions[i].cast<double>() - stations[s].frame.origin).norm();
     if (filter.min_range > 0.0 && range < filter.min_range) {
       keep[i] = false;
@@ -112,11 +112,11 @@ StationFilterReport apply_station_filter(PointCloud& cloud, const StationFilter&
     drop_out_of_range(cloud, filter, path, report);
   }
   if (filter.active() && cloud.size() == 0) {
-    throw KeyError(filter.scans.empty() ? (filter.min_range > 0.0 ? "min_range" : "max_range")
-                                        : "scans",
-                   "leaves no point of " + path + " (" + std::to_string(report.other_scans) +
-                       " of other scans, " + std::to_string(report.too_near) + " too near, " +
-                       std::to_string(report.too_far) + " too far)");
+    throw KeyError(
+        filter.scans.empty() ? (filter.min_range > 0.0 ? "min_range" : "max_range") : "scans",
+        "leaves no point of " + path + " (" + std::to_string(report.other_scans) +
+            " of other scans, " + std::to_string(report.too_near) + " too near, " +
+            std::to_string(report.too_far) + " too far)");
   }
   return report;
 }

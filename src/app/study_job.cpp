@@ -298,8 +298,8 @@ StudyReport run_study(const StudyRequest& request, const Progress& progress) {
       run_steps("loading the scene", 0.0);
       scene = job::load_cloud(request.scenes[s], request.tracing.skip_bad_lines);
       loaded = s;
-      const StationFilterReport filtered = apply_station_filter(
-          scene->cloud, station_filter(request.tracing), request.scenes[s]);
+      const StationFilterReport filtered =
+          apply_station_filter(scene->cloud, station_filter(request.tracing), request.scenes[s]);
       const std::size_t dropped = filtered.other_scans + filtered.too_near + filtered.too_far;
       if (dropped > 0) {
         report.warnings.push_back(request.scenes[s] + ": scans, min_range and max_range dropped " +

@@ -146,7 +146,8 @@ std::optional<Station> parse_station_comment(std::string_view text) {
     }
   }
   if (!tokens.next().empty()) {
-    throw std::invalid_argument("station '" + station.name + "': more than ox oy oz qw qx qy qz "
+    throw std::invalid_argument("station '" + station.name +
+                                "': more than ox oy oz qw qx qy qz "
                                 "width height");
   }
   const Eigen::Quaterniond q(pose[3], pose[4], pose[5], pose[6]);

@@ -587,7 +587,7 @@ class PcdCloudReader {
   std::size_t points_ = 0;
   std::uint64_t declared_bytes_ = 0;  // the point data the header may claim
   std::vector<std::string> class_names_;
-  std::vector<Station> stations_;  // from the header's comments, in the file's frame
+  std::vector<Station> stations_;         // from the header's comments, in the file's frame
   std::vector<std::size_t> point_lines_;  // ascii only
 
   const Field* axes_[3] = {nullptr, nullptr, nullptr};

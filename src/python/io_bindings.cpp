@@ -15,7 +15,6 @@
 
 #include "bindings.hpp"
 #include "numpy_views.hpp"
-#include "station_values.hpp"
 #include "occlusion/io/cloud_io.hpp"
 #include "occlusion/io/csv_file.hpp"
 #include "occlusion/io/label_file.hpp"
@@ -23,6 +22,7 @@
 #include "occlusion/io/obj_writer.hpp"
 #include "occlusion/io/ply_mesh_writer.hpp"
 #include "occlusion/io/polygon_file.hpp"
+#include "station_values.hpp"
 
 namespace py = pybind11;
 
@@ -247,8 +247,7 @@ malformed file; FileNotFoundError for a missing one.)doc");
         py::arg("instances") = py::none(), py::arg("class_names") = py::none(),
         py::arg("intensities") = py::none(), py::arg("station_ids") = py::none(),
         py::arg("stations") = py::none(), py::arg("fields") = py::dict(),
-        py::arg("format") = py::none(),
-        py::arg("shift") = std::array<double, 3>{0.0, 0.0, 0.0},
+        py::arg("format") = py::none(), py::arg("shift") = std::array<double, 3>{0.0, 0.0, 0.0},
         R"doc(Writes a point cloud as .pcd or .ply, atomically.
 
 positions (N, 3), relative to shift (a Cloud's own shift: the file gets

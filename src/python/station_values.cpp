@@ -66,7 +66,8 @@ std::vector<Station> stations_from_python(const py::handle& list, const std::str
 
 std::vector<float> float32_from_array(const py::handle& object, const std::string& name) {
   const auto values = py::array_t<float, py::array::forcecast>::ensure(object);
-  if (!values || values.ndim() != 1) throw py::value_error(name + ": expected a 1-D array of numbers");
+  if (!values || values.ndim() != 1)
+    throw py::value_error(name + ": expected a 1-D array of numbers");
   return std::vector<float>(values.data(), values.data() + values.size());
 }
 

@@ -25,7 +25,8 @@ PointCloud station_scan(std::size_t columns) {
   PointCloud cloud;
   Station station{"north", {}};
   station.frame.origin = Eigen::Vector3d(1, 2, 3);
-  station.frame.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitX()));
+  station.frame.orientation =
+      Eigen::Quaterniond(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitX()));
   station.frame.width = columns;
   station.frame.height = 10;
   for (std::size_t c = 0; c < columns; ++c) {

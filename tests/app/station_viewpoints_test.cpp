@@ -122,8 +122,8 @@ TEST(StationViewpoints, WithoutStationsTheDefaultsStay) {
 
 TEST(StationViewpoints, ScansKeepThePointsOfTheStationsNamed) {
   PointCloud cloud = two_station_room();
-  const std::size_t wall_points = static_cast<std::size_t>(
-      std::count(cloud.station_ids.begin(), cloud.station_ids.end(), 1));
+  const std::size_t wall_points =
+      static_cast<std::size_t>(std::count(cloud.station_ids.begin(), cloud.station_ids.end(), 1));
   const StationFilterReport report = apply_station_filter(cloud, {{"east"}, 0, 0}, "room.ply");
   EXPECT_EQ(report.other_scans, 41u * 41u + 41u * 41u - wall_points);
   EXPECT_EQ(cloud.size(), wall_points);

@@ -37,8 +37,7 @@ class CloudStations : public ::testing::TestWithParam<CloudFormat> {};
 
 TEST_P(CloudStations, StationsIdsAndIntensitiesComeBack) {
   testing::ScratchDirectory dir;
-  const bool ply =
-      GetParam() == CloudFormat::kPlyAscii || GetParam() == CloudFormat::kPlyBinary;
+  const bool ply = GetParam() == CloudFormat::kPlyAscii || GetParam() == CloudFormat::kPlyBinary;
   const std::string path = dir.file(ply ? "s.ply" : "s.pcd");
   const PointCloud cloud = scanned_cloud();
   write_cloud(path, cloud, {}, GetParam());

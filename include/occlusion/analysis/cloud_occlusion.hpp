@@ -28,8 +28,8 @@
 #include <vector>
 
 #include "occlusion/analysis/field_of_view.hpp"
-#include "occlusion/analysis/spherical_field_of_view.hpp"
 #include "occlusion/analysis/sphere_directions.hpp"
+#include "occlusion/analysis/spherical_field_of_view.hpp"
 #include "occlusion/analysis/surfel_estimation.hpp"
 #include "occlusion/core/octree.hpp"
 #include "occlusion/core/point_cloud.hpp"

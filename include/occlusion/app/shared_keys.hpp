@@ -179,8 +179,9 @@ template <class R>
 KeyBuilder<R> scans_key(std::vector<std::string> R::*field) {
   return key("scans", field)
       .metavar("A,B,...")
-      .doc("keep only the points of these stations (an E57 file's scans, by name); they are "
-           "the default viewpoints; empty: every station");
+      .doc(
+          "keep only the points of these stations (an E57 file's scans, by name); they are "
+          "the default viewpoints; empty: every station");
 }
 
 template <class R>
@@ -189,8 +190,9 @@ KeyBuilder<R> min_range_key(double R::*field) {
       .range(0, 1e9)
       .unit("scene units")
       .metavar("D")
-      .doc("drop points nearer than D to their own station (a scanner's tripod and operator, "
-           "e.g. 0.5 m); 0 = off");
+      .doc(
+          "drop points nearer than D to their own station (a scanner's tripod and operator, "
+          "e.g. 0.5 m); 0 = off");
 }
 
 template <class R>
@@ -199,8 +201,9 @@ KeyBuilder<R> max_range_key(double R::*field) {
       .range(0, 1e9)
       .unit("scene units")
       .metavar("D")
-      .doc("drop points farther than D from their own station (no-return values, e.g. 32.76 m "
-           "written as a range); 0 = off");
+      .doc(
+          "drop points farther than D from their own station (no-return values, e.g. 32.76 m "
+          "written as a range); 0 = off");
 }
 
 template <class R>
