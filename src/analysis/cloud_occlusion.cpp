@@ -141,7 +141,9 @@ CloudOcclusionResult trace(const Octree<Shape>& tree, double build_seconds, cons
         const std::size_t v = r / per_view;
         const Eigen::Vector3d direction = directions[v](r % per_view);
         rays[i] = light_source_ray(viewpoints[v], direction, options.light_radius);
-        outside[i] = options.field_of_view && !options.field_of_view->contains(direction);
+        outside[i] =
+            (options.field_of_view && !options.field_of_view->contains(direction)) ||
+            (options.station_field_of_view && !options.station_field_of_view->contains(direction));
         // An empty interval: the tree answers "no hit" at once.
         if (outside[i]) rays[i].t_max = -1.0f;
       }

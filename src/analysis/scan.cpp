@@ -119,7 +119,7 @@ ScanResult trace(const Octree<Shape>& tree, double build_seconds, const PointClo
   result.seen_by_viewpoint.assign(viewpoints.size(), 0);
   std::vector<Ray> rays;
   std::vector<PrimitiveId> ignore;
-  std::vector<std::uint8_t> blocked;
+  std::vector<std::uint8_t> blocked, outside;
   progress("tracing", 0.0);
   // Viewpoint-major order: neighbouring rays go to neighbouring points, which
   // keeps a thread's traversals in the same part of the tree.
@@ -128,17 +128,26 @@ ScanResult trace(const Octree<Shape>& tree, double build_seconds, const PointClo
     rays.resize(block_size);
     ignore.resize(block_size);
     blocked.resize(block_size);
+    outside.assign(block_size, 0);
     parallel_for(block_size, kRayGrain, options.threads, [&](std::size_t b, std::size_t e) {
       for (std::size_t i = b; i < e; ++i) {
         const std::size_t r = block + i;
         const std::size_t point = r % points;
-        rays[i] = make_ray(viewpoints[r / points], point);
+        const Eigen::Vector3d& viewpoint = viewpoints[r / points];
+        rays[i] = make_ray(viewpoint, point);
         ignore[i] = static_cast<PrimitiveId>(point);
+        if (options.field_of_view &&
+            !options.field_of_view->contains(cloud.positions[point].cast<double>() - viewpoint)) {
+          outside[i] = 1;
+          rays[i].t_min = 1.0f;  // the empty interval: nothing to trace
+          rays[i].t_max = 0.0f;
+        }
       }
     });
     tree.occluded_batch(rays.data(), block_size, ignore.data(), blocked.data(), options.threads);
     for (std::size_t i = 0; i < block_size; ++i) {
-      if (blocked[i]) continue;
+      result.outside_view_rays += outside[i];
+      if (blocked[i] || outside[i]) continue;
       const std::size_t r = block + i;
       ++result.visible_count[r % points];
       ++result.seen_by_viewpoint[r / points];

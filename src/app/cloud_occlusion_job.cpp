@@ -135,6 +135,7 @@ void validate(const CloudOcclusionRequest& request) {
   }
   check_keys(cloud_occlusion_keys(), request);
   request.viewpoints.validate();
+  validate(station_filter(request));
   job::parse_frame(request.frame);
   job::parse_up(request.up);
   parse_sampling(request.sampling);
@@ -170,6 +171,7 @@ CloudOcclusionReport run_cloud_occlusion_on(const PointCloud& cloud,
   CloudOcclusionReport report;
   report.request = request;
   report.viewpoint_names = viewpoints.names;
+  report.viewpoint_source = viewpoints.source;
   report.frame = viewpoints.frame;
   report.shift = cloud.shift;
   report.warnings.insert(report.warnings.end(), viewpoints.warnings.begin(),
@@ -203,6 +205,12 @@ CloudOcclusionReport run_cloud_occlusion_on(const PointCloud& cloud,
   options.keep_escape_directions = request.escape_directions || !request.out.empty();
   report.field_of_view = single_view_field(cloud, request, report);
   options.field_of_view = report.field_of_view;
+  // A field_of_view setting says how to take the cloud; else a laser station's own window.
+  if (!report.field_of_view) {
+    report.station_field_of_view = job::station_field_of_view(cloud, request.path, report.warnings);
+    options.station_field_of_view = report.station_field_of_view;
+    if (report.station_field_of_view) report.field_of_view_station = cloud.stations.front();
+  }
   report.result =
       compute_cloud_occlusion(cloud, viewpoints.positions, local_openings, options, progress);
   job::viewpoints_to_original(report.result.viewpoints, cloud);
@@ -230,7 +238,9 @@ CloudOcclusionReport run_cloud_occlusion(const CloudOcclusionRequest& request,
   validate(request);
   const auto start = job::Clock::now();
   progress("loading", 0.0);
-  const job::LoadedCloud loaded = job::load_cloud(request.path, request.skip_bad_lines);
+  job::LoadedCloud loaded = job::load_cloud(request.path, request.skip_bad_lines);
+  const StationFilterReport filtered =
+      apply_station_filter(loaded.cloud, station_filter(request), request.path);
   const std::vector<PlanarPolygon> openings = read_openings(request.polygon_path);
   const double load_seconds = job::seconds_since(start);
   progress.check_cancel();
@@ -241,6 +251,7 @@ CloudOcclusionReport run_cloud_occlusion(const CloudOcclusionRequest& request,
       request, progress);
   report.dropped_nan = loaded.dropped_nan;
   report.skipped_lines = loaded.skipped_lines;
+  report.station_filter = filtered;
   report.load_seconds = load_seconds;
 
   if (!request.out.empty()) {
@@ -269,6 +280,10 @@ Json::Value to_json(const CloudOcclusionReport& report) {
                            : Json::Value();
   json["dropped_nan_points"] = Json::UInt64(report.dropped_nan);
   json["skipped_lines"] = Json::UInt64(report.skipped_lines);
+  json["station_filter"] = station_filter_json(report.station_filter);
+  json["viewpoint_source"] = report.viewpoint_source;
+  json["station_field_of_view"] = job::station_field_of_view_json(
+      report.station_field_of_view, report.field_of_view_station, report.result.outside_view_rays);
   if (report.exterior) {
     Json::Value exterior = result_json(report.exterior->result, report.viewpoint_names);
     exterior["classes"] = to_json(q.exterior_classes);
@@ -285,6 +300,7 @@ Json::Value to_json(const CloudOcclusionReport& report) {
   // "auto" asked for.
   parameters["point_radius"] = report.point_model.radius.radius;
   parameters["point_radius_auto"] = report.point_model.radius.automatic;
+  job::stations_in_parameters(report.viewpoint_source, parameters);
   json["parameters"] = parameters;
   if (!report.frame.isNull()) json["frame"] = report.frame;
   json["point_model"] = job::point_model_json(report.point_model);

@@ -41,6 +41,9 @@ const Keys<CloudOcclusionRequest>& cloud_tracing_keys() {
           .implies("exterior", true)
           .doc("classes of the exterior structure"),
       skip_bad_lines_key(&R::skip_bad_lines),
+      scans_key(&R::scans),
+      min_range_key(&R::min_range),
+      max_range_key(&R::max_range),
       seed_key(&R::seed),
       threads_key(&R::threads),
   };

@@ -16,13 +16,32 @@ void refuse_out(const std::string& out) {
   }
 }
 
+// The cloud as the filter leaves it: itself when the filter is off, else
+// the filtered `copy` (the caller's arrays stay as they are).
+const PointCloud& filter_in_memory(const PointCloud& cloud, const StationFilter& filter,
+                                   const std::string& name, PointCloud& copy,
+                                   StationFilterReport& dropped) {
+  dropped.filter = filter;
+  if (!filter.active()) return cloud;
+  copy = cloud;
+  dropped = apply_station_filter(copy, filter, name);
+  return copy;
+}
+
 }  // namespace
 
 ScanReport scan_in_memory(const PointCloud& cloud, const ScanRequest& request,
                           const Progress& progress) {
   refuse_out(request.out);
   cloud.validate();
-  return run_scan_on(cloud, job::resolve_for_cloud(request.viewpoints, cloud), request, progress);
+  PointCloud copy;
+  StationFilterReport dropped;
+  const PointCloud& filtered =
+      filter_in_memory(cloud, station_filter(request), request.path, copy, dropped);
+  ScanReport report = run_scan_on(filtered, job::resolve_for_cloud(request.viewpoints, filtered),
+                                  request, progress);
+  report.station_filter = dropped;
+  return report;
 }
 
 CloudOcclusionReport cloud_occlusion_in_memory(const PointCloud& cloud,
@@ -30,8 +49,15 @@ CloudOcclusionReport cloud_occlusion_in_memory(const PointCloud& cloud,
                                                const Progress& progress) {
   refuse_out(request.out);
   cloud.validate();
-  return run_cloud_occlusion_on(cloud, job::resolve_for_cloud(request.viewpoints, cloud),
-                                read_openings(request.polygon_path), request, progress);
+  PointCloud copy;
+  StationFilterReport dropped;
+  const PointCloud& filtered =
+      filter_in_memory(cloud, station_filter(request), request.path, copy, dropped);
+  CloudOcclusionReport report =
+      run_cloud_occlusion_on(filtered, job::resolve_for_cloud(request.viewpoints, filtered),
+                             read_openings(request.polygon_path), request, progress);
+  report.station_filter = dropped;
+  return report;
 }
 
 MeshOcclusionReport mesh_occlusion_in_memory(const TriangleMesh& mesh,

@@ -1,5 +1,6 @@
 #include "job_support.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <sstream>
@@ -61,9 +62,20 @@ ViewpointChoice::Resolved resolve_for_cloud(const ViewpointChoice& choice, const
   const UpAxis up_axis = parse_up(up);
   const SceneFrame boxes = measure_scene_frame(cloud.positions);
   const Box& placement = kind == FrameKind::kRobust ? boxes.robust : boxes.bbox;
-  ViewpointChoice local = choice;
-  for (auto& point : local.points) point = cloud.to_local(point);
-  ViewpointChoice::Resolved resolved = local.resolve(placement.lo, placement.hi, up_axis.axis);
+  const std::vector<Station> stations = scan_stations(cloud);
+  ViewpointChoice::Resolved resolved;
+  if (choice.stations_first && !stations.empty()) {
+    choice.validate();
+    for (const auto& station : stations) {
+      resolved.positions.push_back(station.frame.origin);
+      resolved.names.push_back(station.name);
+    }
+    resolved.source = ViewpointChoice::kStationsSource;
+  } else {
+    ViewpointChoice local = choice;
+    for (auto& point : local.points) point = cloud.to_local(point);
+    resolved = local.resolve(placement.lo, placement.hi, up_axis.axis);
+  }
   resolved.shift = cloud.shift;
 
   resolved.frame = Json::Value(Json::objectValue);
@@ -73,11 +85,12 @@ ViewpointChoice::Resolved resolve_for_cloud(const ViewpointChoice& choice, const
   resolved.frame["robust"] = box_json(boxes.robust, cloud.shift);
   resolved.frame["robust_quantile"] = kRobustQuantile;
   for (std::size_t v = 0; v < resolved.positions.size(); ++v) {
-    // A single-view frame's sensor looks at the scene from outside it, rightly.
-    const bool at_sensor =
-        cloud.sensor.single_view() &&
-        (resolved.positions[v] - cloud.sensor.origin).cwiseAbs().maxCoeff() <= 1e-6;
-    if (!at_sensor && !boxes.robust.contains(resolved.positions[v])) {
+    // A scanner looks at the scene from where it stood, often outside the
+    // box of what it saw from one side: no warning at a station.
+    const bool at_station = std::any_of(stations.begin(), stations.end(), [&](const Station& s) {
+      return (resolved.positions[v] - s.frame.origin).cwiseAbs().maxCoeff() <= 1e-6;
+    });
+    if (!at_station && !boxes.robust.contains(resolved.positions[v])) {
       resolved.warnings.push_back("viewpoint " + resolved.names[v] + " at " +
                                   position_text(cloud.to_original(resolved.positions[v])) +
                                   " lies outside the occupied space (the robust box from " +
@@ -86,12 +99,49 @@ ViewpointChoice::Resolved resolve_for_cloud(const ViewpointChoice& choice, const
                                   "): its rays measure the outside of the scene");
     }
   }
-  if (choice.kind == ViewpointChoice::Kind::kGrid) {
+  if (resolved.source != ViewpointChoice::kStationsSource &&
+      choice.kind == ViewpointChoice::Kind::kGrid) {
     if (const auto message = check_up_axis(cloud.positions, up_axis)) {
       resolved.warnings.push_back(*message);
     }
   }
   return resolved;
+}
+
+void stations_in_parameters(const std::string& viewpoint_source, Json::Value& parameters) {
+  if (viewpoint_source != ViewpointChoice::kStationsSource) return;
+  for (const char* key : {"viewpoints", "pattern", "num_vp"}) parameters.removeMember(key);
+}
+
+std::optional<SphericalFieldOfView> station_field_of_view(const PointCloud& cloud,
+                                                          const std::string& path,
+                                                          std::vector<std::string>& warnings) {
+  if (!is_laser_station(cloud)) return std::nullopt;
+  try {
+    return measure_spherical_field_of_view(cloud);
+  } catch (const std::invalid_argument& e) {
+    warnings.push_back(path + " is one laser station's scan ('" + cloud.stations.front().name +
+                       "') but " + e.what() + ": every direction is traced");
+    return std::nullopt;
+  }
+}
+
+Json::Value station_field_of_view_json(const std::optional<SphericalFieldOfView>& view,
+                                       const Station& station, std::size_t outside_view_rays) {
+  if (!view) return Json::Value();
+  Json::Value json(Json::objectValue);
+  json["station"] = station.name;
+  json["grid"] = Json::Value(Json::arrayValue);
+  json["grid"].append(Json::UInt64(station.frame.width));
+  json["grid"].append(Json::UInt64(station.frame.height));
+  json["elevation_degrees"] = Json::Value(Json::arrayValue);
+  json["elevation_degrees"].append(view->elevation_lo_degrees());
+  json["elevation_degrees"].append(view->elevation_hi_degrees());
+  json["full_turn"] = view->full_turn;
+  json["azimuth_start_degrees"] = view->azimuth_start * 180.0 / M_PI;
+  json["azimuth_span_degrees"] = view->azimuth_span_degrees();
+  json["outside_view_rays"] = Json::UInt64(outside_view_rays);
+  return json;
 }
 
 void warn_viewpoints_inside_solids(const std::vector<ViewpointVisibility>& visibility,

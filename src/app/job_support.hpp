@@ -11,6 +11,7 @@
 #include "occlusion/analysis/mesh_occlusion.hpp"
 #include "occlusion/analysis/point_spacing.hpp"
 #include "occlusion/analysis/scene_frame.hpp"
+#include "occlusion/analysis/spherical_field_of_view.hpp"
 #include "occlusion/analysis/surfel_estimation.hpp"
 #include "occlusion/analysis/up_axis.hpp"
 #include "occlusion/app/json_output.hpp"
@@ -36,21 +37,38 @@ std::string output_path(const std::string& out, const std::string& input,
 
 // Viewpoints for a cloud, in its local frame (explicit ones are given in the
 // file's frame and converted here, the one place; Resolved::shift is the
-// cloud's global shift), placed on its robust frame or its bounding box
+// cloud's global shift): a job's default (ViewpointChoice::stations_else) on a
+// cloud with stations (scan_stations) gives them, named after them; the rest
+// are placed on its robust frame or its bounding box
 // (`frame`: robust|bbox, scene_frame.hpp) with `up` a signed axis
 // (up_axis.hpp). Resolved::frame reports both boxes and the up axis; warnings
-// name each viewpoint outside the occupied space (the robust box) and, for a
+// name each viewpoint outside the occupied space (the robust box; a station
+// is exempt) and, for a
 // grid (whose mid-height follows up), data that disagree with up. UsageError
 // for an unknown frame or up.
 ViewpointChoice::Resolved resolve_for_cloud(const ViewpointChoice& choice, const PointCloud& cloud,
                                             const std::string& frame = "robust",
                                             const std::string& up = "+z");
+// A report's parameters for viewpoints that are the cloud's stations: the
+// default pattern or grid they replaced was not used, so it is not listed.
+void stations_in_parameters(const std::string& viewpoint_source, Json::Value& parameters);
 // Meshes keep their bounding box (scene_frame.hpp says why); this warns for
 // each viewpoint that is inside a closed solid (inside_solid.hpp), from the
 // shares compute_mesh_occlusion measured with its own tree.
 void warn_viewpoints_inside_solids(const std::vector<ViewpointVisibility>& visibility,
                                    const ViewpointChoice::Resolved& viewpoints,
                                    std::vector<std::string>& warnings);
+
+// A laser station's window (spherical_field_of_view.hpp) when the cloud is
+// one station's gridded scan, else none; a station whose window cannot be
+// measured is warned about (naming `path`) and has none.
+std::optional<SphericalFieldOfView> station_field_of_view(const PointCloud& cloud,
+                                                          const std::string& path,
+                                                          std::vector<std::string>& warnings);
+// {"station", "elevation_degrees": [lo, hi], "full_turn", "azimuth_degrees":
+// [start, span], "outside_view_rays"}; null without a window.
+Json::Value station_field_of_view_json(const std::optional<SphericalFieldOfView>& view,
+                                       const Station& station, std::size_t outside_view_rays);
 
 // The parsed settings, or UsageError naming the option.
 FrameKind parse_frame(const std::string& frame);

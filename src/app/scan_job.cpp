@@ -46,6 +46,7 @@ void validate(const ScanRequest& request) {
   }
   check_keys(scan_keys(), request);
   request.viewpoints.validate();
+  validate(station_filter(request));
   job::parse_frame(request.frame);
   job::parse_up(request.up);
   job::cloud_extension(request.format);
@@ -58,6 +59,7 @@ ScanReport run_scan_on(const PointCloud& cloud, const ViewpointChoice::Resolved&
   ScanReport report;
   report.request = request;
   report.viewpoint_names = viewpoints.names;
+  report.viewpoint_source = viewpoints.source;
   report.frame = viewpoints.frame;
   report.warnings.insert(report.warnings.end(), viewpoints.warnings.begin(),
                          viewpoints.warnings.end());
@@ -82,6 +84,9 @@ ScanReport run_scan_on(const PointCloud& cloud, const ViewpointChoice::Resolved&
   options.octree.min_cell_size = static_cast<float>(request.octree_resolution);
   options.octree.enable_acceleration = request.enable_acceleration;
   options.threads = request.threads;
+  report.field_of_view = job::station_field_of_view(cloud, request.path, report.warnings);
+  options.field_of_view = report.field_of_view;
+  if (report.field_of_view) report.field_of_view_station = cloud.stations.front();
   report.result = scan_cloud(cloud, viewpoints.positions, options, progress);
   report.classes = per_class(cloud, report.result);
   report.total_seconds = job::seconds_since(start);
@@ -98,7 +103,9 @@ ScanReport run_scan(const ScanRequest& request, const Progress& progress) {
   validate(request);
   const auto start = job::Clock::now();
   progress("loading", 0.0);
-  const job::LoadedCloud loaded = job::load_cloud(request.path, request.skip_bad_lines);
+  job::LoadedCloud loaded = job::load_cloud(request.path, request.skip_bad_lines);
+  const StationFilterReport filtered =
+      apply_station_filter(loaded.cloud, station_filter(request), request.path);
   const PointCloud& cloud = loaded.cloud;
   const double load_seconds = job::seconds_since(start);
   progress.check_cancel();
@@ -108,6 +115,7 @@ ScanReport run_scan(const ScanRequest& request, const Progress& progress) {
       progress);
   report.dropped_nan = loaded.dropped_nan;
   report.skipped_lines = loaded.skipped_lines;
+  report.station_filter = filtered;
   report.load_seconds = load_seconds;
 
   if (!request.out.empty()) {
@@ -145,6 +153,7 @@ Json::Value to_json(const ScanReport& report) {
   json["visible_points"] = Json::UInt64(r.visible_points);
   json["dropped_nan_points"] = Json::UInt64(report.dropped_nan);
   json["skipped_lines"] = Json::UInt64(report.skipped_lines);
+  json["station_filter"] = station_filter_json(report.station_filter);
 
   Json::Value viewpoints(Json::arrayValue);
   const double points = static_cast<double>(std::max<std::size_t>(r.visible_count.size(), 1));
@@ -156,6 +165,9 @@ Json::Value to_json(const ScanReport& report) {
     viewpoints.append(entry);
   }
   json["viewpoints"] = viewpoints;
+  json["viewpoint_source"] = report.viewpoint_source;
+  json["station_field_of_view"] = job::station_field_of_view_json(
+      report.field_of_view, report.field_of_view_station, r.outside_view_rays);
 
   Json::Value classes(Json::arrayValue);
   for (const auto& c : report.classes) {
@@ -179,6 +191,7 @@ Json::Value to_json(const ScanReport& report) {
   } else if (q.primitive == "sphere") {
     parameters["self_tolerance"] = 2.0 * radius;
   }
+  job::stations_in_parameters(report.viewpoint_source, parameters);
   json["parameters"] = parameters;
   if (!report.frame.isNull()) json["frame"] = report.frame;
   json["point_model"] = job::point_model_json(report.point_model);

@@ -298,6 +298,16 @@ StudyReport run_study(const StudyRequest& request, const Progress& progress) {
       run_steps("loading the scene", 0.0);
       scene = job::load_cloud(request.scenes[s], request.tracing.skip_bad_lines);
       loaded = s;
+      const StationFilterReport filtered =
+          apply_station_filter(scene->cloud, station_filter(request.tracing), request.scenes[s]);
+      const std::size_t dropped = filtered.other_scans + filtered.too_near + filtered.too_far;
+      if (dropped > 0) {
+        report.warnings.push_back(request.scenes[s] + ": scans, min_range and max_range dropped " +
+                                  std::to_string(dropped) + " points (" +
+                                  std::to_string(filtered.other_scans) + " of other scans, " +
+                                  std::to_string(filtered.too_near) + " too near, " +
+                                  std::to_string(filtered.too_far) + " too far)");
+      }
       job::check_ground_truth(request.scenes[s], scene->cloud, context.mapping);
       if (scene->dropped_nan + scene->skipped_lines > 0) {
         report.warnings.push_back(request.scenes[s] + ": reading dropped " +

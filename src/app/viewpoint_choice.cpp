@@ -27,6 +27,11 @@ ViewpointChoice ViewpointChoice::from_grid(std::size_t count) {
   return choice;
 }
 
+ViewpointChoice ViewpointChoice::stations_else(ViewpointChoice fallback) {
+  fallback.stations_first = true;
+  return fallback;
+}
+
 void ViewpointChoice::validate() const {
   switch (kind) {
     case Kind::kPoints:
@@ -60,13 +65,16 @@ ViewpointChoice::Resolved ViewpointChoice::resolve(const Eigen::Vector3d& lo,
   switch (kind) {
     case Kind::kPoints:
       resolved.positions = points;
+      resolved.source = "viewpoints";
       break;
     case Kind::kPattern:
       resolved.positions = pattern_viewpoints(pattern, lo, hi);
       resolved.names = pattern_viewpoint_names(pattern);
+      resolved.source = "pattern " + std::to_string(pattern);
       return resolved;
     case Kind::kGrid:
       resolved.positions = grid_viewpoints(grid_count, lo, hi, up_axis);
+      resolved.source = "num_vp " + std::to_string(grid_count);
       break;
   }
   for (std::size_t v = 0; v < resolved.positions.size(); ++v) {

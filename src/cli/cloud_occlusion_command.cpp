@@ -17,6 +17,7 @@ void print_human(const CloudOcclusionReport& report) {
       "  occlusion level  %.4f   (%zu occlusion rays of %zu; %zu hit points, %zu left "
       "through openings)\n",
       r.occlusion_level, r.occlusion_rays, r.rays, r.hits, r.through_openings);
+  print_viewpoints_and_filter(report.viewpoint_source, report.station_filter);
   for (std::size_t v = 0; v < r.viewpoints.size(); ++v) {
     const auto& vp = r.viewpoints[v];
     std::printf("    %-12s (%8.3f, %8.3f, %8.3f)  occlusion %.4f\n",

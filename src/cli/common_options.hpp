@@ -9,6 +9,10 @@ namespace Json {
 class Value;
 }
 
+namespace occlusion {
+struct StationFilterReport;
+}
+
 namespace occlusion::cli {
 
 // A figure for the human summaries, `missing` when it is undefined.
@@ -17,6 +21,10 @@ std::string optional_figure(const std::optional<double>& value, const char* patt
 
 // Prints one JSON object on stdout.
 void print_json(const Json::Value& json);
+// Where a cloud job's viewpoints came from, and what scans / min_range /
+// max_range dropped (when they dropped anything), on stdout.
+void print_viewpoints_and_filter(const std::string& viewpoint_source,
+                                 const StationFilterReport& filter);
 // Prints warnings on stderr.
 void print_warnings(const std::vector<std::string>& warnings);
 

@@ -14,6 +14,7 @@ void print_human(const ScanReport& report) {
   std::printf("fixed-viewpoint scan of %s\n", report.request.path.c_str());
   std::printf("  visible fraction  %.4f   (%zu of %zu points)\n", r.visible_fraction,
               r.visible_points, r.visible_count.size());
+  print_viewpoints_and_filter(report.viewpoint_source, report.station_filter);
   for (std::size_t v = 0; v < report.viewpoint_positions.size(); ++v) {
     const auto& p = report.viewpoint_positions[v];
     std::printf("    %-12s (%8.3f, %8.3f, %8.3f)  sees %zu points\n",

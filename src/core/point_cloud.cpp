@@ -108,4 +108,10 @@ void PointCloud::bounds(Eigen::Vector3f& lo, Eigen::Vector3f& hi) const {
   }
 }
 
+std::vector<Station> scan_stations(const PointCloud& cloud) {
+  if (!cloud.stations.empty()) return cloud.stations;
+  if (cloud.sensor.single_view()) return {Station{"sensor", cloud.sensor}};
+  return {};
+}
+
 }  // namespace occlusion

@@ -4,6 +4,7 @@
 #include <unordered_set>
 
 #include "cloud_formats.hpp"
+#include "number_text.hpp"
 #include "occlusion/io/input_error.hpp"
 #include "text_tokens.hpp"
 
@@ -23,6 +24,143 @@ bool is_label_name(std::string_view name) {
 
 bool is_instance_name(std::string_view name) {
   return name == "instance" || name == "instance_id" || name == "object" || name == "object_id";
+}
+
+bool is_intensity_name(std::string_view name) {
+  return name == kIntensityName || name == "Intensity";
+}
+
+namespace {
+
+void append_quoted(std::string& text, const std::string& name) {
+  text += '"';
+  for (const char c : name) {
+    switch (c) {
+      case '"':
+        text += "\\\"";
+        break;
+      case '\\':
+        text += "\\\\";
+        break;
+      case '\n':
+        text += "\\n";
+        break;
+      case '\r':
+        text += "\\r";
+        break;
+      case '\t':
+        text += "\\t";
+        break;
+      default:
+        text += c;
+    }
+  }
+  text += '"';
+}
+
+// The quoted name at the start of `text` (which it advances past it), or
+// std::invalid_argument.
+std::string take_quoted(std::string_view& text) {
+  if (text.empty() || text.front() != '"') {
+    throw std::invalid_argument("a station's name must be in double quotes");
+  }
+  std::string name;
+  for (std::size_t i = 1; i < text.size(); ++i) {
+    const char c = text[i];
+    if (c == '"') {
+      text.remove_prefix(i + 1);
+      return name;
+    }
+    if (c != '\\') {
+      name += c;
+      continue;
+    }
+    if (++i == text.size()) break;
+    switch (text[i]) {
+      case '"':
+      case '\\':
+        name += text[i];
+        break;
+      case 'n':
+        name += '\n';
+        break;
+      case 'r':
+        name += '\r';
+        break;
+      case 't':
+        name += '\t';
+        break;
+      default:
+        throw std::invalid_argument(std::string("a station's name has an unknown escape \\") +
+                                    text[i]);
+    }
+  }
+  throw std::invalid_argument("a station's name has no closing quote");
+}
+
+}  // namespace
+
+std::string station_comment_lines(const std::vector<Station>& stations,
+                                  const Eigen::Vector3d& shift, std::string_view prefix) {
+  std::string lines;
+  for (const Station& station : stations) {
+    lines.append(prefix).append(kStationKeyword).append(" ");
+    append_quoted(lines, station.name);
+    const Eigen::Vector3d origin = station.frame.origin + shift;
+    const Eigen::Quaterniond& q = station.frame.orientation;
+    for (const double value : {origin.x(), origin.y(), origin.z(), q.w(), q.x(), q.y(), q.z()}) {
+      lines += ' ';
+      append_number(lines, value);
+    }
+    lines += ' ';
+    append_number(lines, static_cast<unsigned long long>(station.frame.width));
+    lines += ' ';
+    append_number(lines, static_cast<unsigned long long>(station.frame.height));
+    lines += '\n';
+  }
+  return lines;
+}
+
+std::optional<Station> parse_station_comment(std::string_view text) {
+  Tokens first(text);
+  if (first.next() != kStationKeyword) return std::nullopt;
+  std::string_view rest = first.rest();
+  Station station;
+  station.name = take_quoted(rest);
+  Tokens tokens(rest);
+  double pose[7];
+  for (double& value : pose) {
+    const std::string_view token = tokens.next();
+    if (!parse_double(token, value) || !std::isfinite(value)) {
+      throw std::invalid_argument("station '" + station.name + "': " + quoted(token) +
+                                  " is no finite number (expected ox oy oz qw qx qy qz width "
+                                  "height)");
+    }
+  }
+  std::int64_t grid[2];
+  for (std::int64_t& value : grid) {
+    const std::string_view token = tokens.next();
+    if (!parse_whole_number(token, value) || value < 0 || value > (std::int64_t{1} << 32)) {
+      throw std::invalid_argument("station '" + station.name + "': grid size " + quoted(token) +
+                                  " is no whole number from 0 to 2^32");
+    }
+  }
+  if (!tokens.next().empty()) {
+    throw std::invalid_argument("station '" + station.name +
+                                "': more than ox oy oz qw qx qy qz "
+                                "width height");
+  }
+  const Eigen::Quaterniond q(pose[3], pose[4], pose[5], pose[6]);
+  if (std::abs(q.norm() - 1.0) > 1e-3) {
+    throw std::invalid_argument("station '" + station.name +
+                                "': its orientation is no unit quaternion (norm " +
+                                std::to_string(q.norm()) + ")");
+  }
+  station.frame.origin = Eigen::Vector3d(pose[0], pose[1], pose[2]);
+  station.frame.orientation = q.normalized();
+  station.frame.width = static_cast<std::size_t>(grid[0]);
+  station.frame.height = static_cast<std::size_t>(grid[1]);
+  return station;
 }
 
 std::optional<ClassComment> parse_class_comment(std::string_view text) {
@@ -114,7 +252,8 @@ bool is_reserved_name(std::string_view name) {
                                "diffuse_red", "diffuse_green", "diffuse_blue"}) {
     if (name == reserved) return true;
   }
-  return is_label_name(name) || is_instance_name(name);
+  return is_label_name(name) || is_instance_name(name) || is_intensity_name(name) ||
+         name == kStationIdName;
 }
 
 void check_extra_fields(const PointCloud& cloud, const std::vector<ScalarField>& extra) {

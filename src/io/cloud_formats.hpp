@@ -89,6 +89,30 @@ std::string_view without_scalar_prefix(std::string_view name);
 bool is_label_name(std::string_view name);
 bool is_instance_name(std::string_view name);
 
+// A return's strength (PointCloud::intensities): PCL's field name, which
+// CloudCompare loads without the scalar_ prefix, so the PLY writer leaves it
+// off; the readers also take CloudCompare's own "Intensity".
+inline constexpr std::string_view kIntensityName = "intensity";
+bool is_intensity_name(std::string_view name);
+// The station that measured each point (PointCloud::station_ids): an index
+// into the file's station comments. A file without station comments keeps a
+// property of this name as an ordinary field.
+inline constexpr std::string_view kStationIdName = "scan";
+
+// The text after `comment ` (PLY) or `# ` (PCD) that records a station:
+// `station "<name>" ox oy oz qw qx qy qz width height`, the origin in the
+// file's frame, the orientation as a quaternion (w first), the grid's columns
+// and rows (0 0: none). The name is quoted, with \\, \", \n, \r and \t escaped,
+// so any name survives a header line.
+inline constexpr std::string_view kStationKeyword = "station";
+// One such line per station; `shift` is the cloud's (stations are held in its
+// local frame, point_cloud.hpp).
+std::string station_comment_lines(const std::vector<Station>& stations,
+                                  const Eigen::Vector3d& shift, std::string_view prefix);
+// nullopt when `text` is no station comment; std::invalid_argument with the
+// reason for one that starts as one but is malformed. Origin in the file's frame.
+std::optional<Station> parse_station_comment(std::string_view text);
+
 // The text after `comment ` (PLY) or `# ` (PCD) when it is `class <id> <name>`.
 struct ClassComment {
   std::int64_t id = 0;

@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -242,6 +243,14 @@ class PcdCloudReader {
       if (line.empty() || line[0] != '#') continue;
       if (const auto comment = parse_class_comment(line.substr(1))) {
         names.add(*comment, path_, lines.number());
+        continue;
+      }
+      try {
+        if (const auto station = parse_station_comment(line.substr(1))) {
+          stations_.push_back(*station);
+        }
+      } catch (const std::invalid_argument& e) {
+        throw InputError(path_, lines.number(), e.what());
       }
     }
     class_names_ = names.finish(path_);
@@ -431,6 +440,11 @@ class PcdCloudReader {
         slot = &label_;
       } else if (is_instance_name(name)) {
         slot = &instance_;
+      } else if (is_intensity_name(name)) {
+        slot = &intensity_;
+      } else if (name == kStationIdName && !stations_.empty()) {
+        // Without station comments a `scan` field is no index into them: an ordinary field.
+        slot = &station_;
       }
       if (slot != nullptr) {
         if (*slot != nullptr) {
@@ -479,6 +493,17 @@ class PcdCloudReader {
     return static_cast<std::int32_t>(id);
   }
 
+  std::int32_t station_value(const std::uint8_t* record, std::size_t point) const {
+    const double value = load_value(record + station_->offset, station_->datatype);
+    if (!(value >= 0 && value < static_cast<double>(stations_.size())) ||
+        value != std::floor(value)) {
+      fail_at(point, "field '" + station_->name + "' value " + std::to_string(value) +
+                         " names no station (the header records " +
+                         std::to_string(stations_.size()) + ")");
+    }
+    return static_cast<std::int32_t>(value);
+  }
+
   PointCloud convert() {
     PointCloud cloud;
     cloud.class_names = class_names_;
@@ -488,6 +513,9 @@ class PcdCloudReader {
     if (colours) cloud.colours.reserve(points_);
     if (label_ != nullptr) cloud.labels.reserve(points_);
     if (instance_ != nullptr) cloud.instances.reserve(points_);
+    if (intensity_ != nullptr) cloud.intensities.reserve(points_);
+    if (station_ != nullptr) cloud.station_ids.reserve(points_);
+    cloud.stations = stations_;
     std::vector<ScalarField> extra;
     for (const Field* field : extra_) {
       extra.push_back({field->name, {}, is_integer_type(field->datatype)});
@@ -525,6 +553,11 @@ class PcdCloudReader {
       }
       if (label_ != nullptr) cloud.labels.push_back(id_value(*label_, record, true, i));
       if (instance_ != nullptr) cloud.instances.push_back(id_value(*instance_, record, false, i));
+      if (intensity_ != nullptr) {
+        cloud.intensities.push_back(
+            static_cast<float>(load_value(record + intensity_->offset, intensity_->datatype)));
+      }
+      if (station_ != nullptr) cloud.station_ids.push_back(station_value(record, i));
       for (std::size_t f = 0; f < extra_.size(); ++f) {
         extra[f].values.push_back(
             static_cast<float>(load_value(record + extra_[f]->offset, extra_[f]->datatype)));
@@ -533,6 +566,9 @@ class PcdCloudReader {
     for (ScalarField& field : extra) report_.extra_fields.push_back(std::move(field));
     cloud.shift = shifted_.checked_shift(path_);
     cloud.sensor.origin = cloud.to_local(cloud.sensor.origin);
+    for (Station& station : cloud.stations) {
+      station.frame.origin = cloud.to_local(station.frame.origin);
+    }
     return cloud;
   }
 
@@ -551,6 +587,7 @@ class PcdCloudReader {
   std::size_t points_ = 0;
   std::uint64_t declared_bytes_ = 0;  // the point data the header may claim
   std::vector<std::string> class_names_;
+  std::vector<Station> stations_;         // from the header's comments, in the file's frame
   std::vector<std::size_t> point_lines_;  // ascii only
 
   const Field* axes_[3] = {nullptr, nullptr, nullptr};
@@ -558,6 +595,8 @@ class PcdCloudReader {
   const Field* channels_[3] = {nullptr, nullptr, nullptr};
   const Field* label_ = nullptr;
   const Field* instance_ = nullptr;
+  const Field* intensity_ = nullptr;
+  const Field* station_ = nullptr;
   std::vector<const Field*> extra_;
 };
 

@@ -49,6 +49,8 @@ pcl::PCLPointCloud2 to_blob(const PointCloud& cloud, const std::vector<ScalarFie
   // type match; -1 (none) becomes 0xFFFFFFFF, which the reader maps back.
   if (cloud.has_labels()) add_field(blob, "label", Field::UINT32);
   if (cloud.has_instances()) add_field(blob, "instance", Field::INT32);
+  if (cloud.has_intensities()) add_field(blob, std::string(kIntensityName), Field::FLOAT32);
+  if (cloud.has_station_ids()) add_field(blob, std::string(kStationIdName), Field::INT32);
   for (const ScalarField& field : extra) {
     add_field(blob, field.name, field.integer ? Field::INT32 : Field::FLOAT32);
   }
@@ -75,6 +77,8 @@ pcl::PCLPointCloud2 to_blob(const PointCloud& cloud, const std::vector<ScalarFie
     }
     if (cloud.has_labels()) put(blob, i, f++, static_cast<std::uint32_t>(cloud.labels[i]));
     if (cloud.has_instances()) put(blob, i, f++, cloud.instances[i]);
+    if (cloud.has_intensities()) put(blob, i, f++, cloud.intensities[i]);
+    if (cloud.has_station_ids()) put(blob, i, f++, cloud.station_ids[i]);
     for (const ScalarField& field : extra) {
       if (field.integer) {
         put(blob, i, f++, static_cast<std::int32_t>(field.values[i]));
@@ -121,15 +125,16 @@ std::string ascii_body(const pcl::PCLPointCloud2& blob) {
   return text;
 }
 
-// Class-name comments go after PCL's first line (its own "# .PCD v0.7"
-// comment): readers skip comment lines anywhere before DATA.
-std::string with_class_comments(const std::string& file, const std::vector<std::string>& names) {
-  if (names.empty()) return file;
+// Class-name and station comments go after PCL's first line (its own "#
+// .PCD v0.7" comment): readers skip comment lines anywhere before DATA.
+std::string with_comments(const std::string& file, const PointCloud& cloud) {
+  if (cloud.class_names.empty() && cloud.stations.empty()) return file;
   const std::size_t first_line_end = file.find('\n');
   const std::size_t insert_at =
       (file.rfind('#', 0) == 0 && first_line_end != std::string::npos) ? first_line_end + 1 : 0;
   std::string out = file.substr(0, insert_at);
-  out += class_comment_lines(names, "# ");
+  out += class_comment_lines(cloud.class_names, "# ");
+  out += station_comment_lines(cloud.stations, cloud.shift, "# ");
   out.append(file, insert_at, std::string::npos);
   return out;
 }
@@ -157,7 +162,7 @@ void write_pcd(const std::string& path, const PointCloud& cloud,
     file =
         writer.generateHeaderASCII(blob, origin, orientation) + "DATA ascii\n" + ascii_body(blob);
   }
-  file = with_class_comments(file, cloud.class_names);
+  file = with_comments(file, cloud);
   write_file_atomically(path, [&](std::ostream& out) {
     out.write(file.data(), static_cast<std::streamsize>(file.size()));
   });

@@ -24,9 +24,23 @@ namespace occlusion::detail {
 namespace {
 
 // Where each vertex property goes in the cloud.
-enum class Role { kX, kY, kZ, kRed, kGreen, kBlue, kLabel, kInstance, kExtra, kSkip };
+enum class Role {
+  kX,
+  kY,
+  kZ,
+  kRed,
+  kGreen,
+  kBlue,
+  kLabel,
+  kInstance,
+  kIntensity,
+  kStation,
+  kExtra,
+  kSkip
+};
 
-Role role_of(const PlyProperty& property) {
+// `has_stations`: the header records stations, so a `scan` property indexes them.
+Role role_of(const PlyProperty& property, bool has_stations) {
   if (property.is_list) return Role::kSkip;
   const std::string& name = property.name;
   if (name == "x") return Role::kX;
@@ -39,6 +53,8 @@ Role role_of(const PlyProperty& property) {
   const std::string_view value_name = without_scalar_prefix(name);
   if (is_label_name(value_name)) return Role::kLabel;
   if (is_instance_name(value_name)) return Role::kInstance;
+  if (is_intensity_name(value_name)) return Role::kIntensity;
+  if (has_stations && value_name == kStationIdName) return Role::kStation;
   return Role::kExtra;
 }
 
@@ -60,6 +76,10 @@ const char* role_name(Role role) {
       return "label";
     case Role::kInstance:
       return "instance";
+    case Role::kIntensity:
+      return "intensity";
+    case Role::kStation:
+      return "scan";
     default:
       return "";
   }
@@ -75,12 +95,16 @@ class PlyCloudReader : public PlySink {
     header_ = parse_header(bytes_, path_);
     assign_roles();
     cloud_.class_names = header_.class_names;
+    cloud_.stations = header_.stations;
     extra_values_.assign(extra_.size(), 0.0f);
     read_ply_body(bytes_, path_, header_, *this);
     for (std::size_t f = 0; f < extra_.size(); ++f) {
       report_.extra_fields.push_back(std::move(extra_[f]));
     }
     cloud_.shift = shifted_.checked_shift(path_);
+    for (Station& station : cloud_.stations) {
+      station.frame.origin = cloud_.to_local(station.frame.origin);
+    }
     return std::move(cloud_);
   }
 
@@ -107,7 +131,7 @@ class PlyCloudReader : public PlySink {
     const PlyElement& vertex = header_.elements[vertex_element_];
     bool seen[static_cast<int>(Role::kExtra)] = {};
     for (const PlyProperty& property : vertex.properties) {
-      const Role role = role_of(property);
+      const Role role = role_of(property, !header_.stations.empty());
       roles_.push_back(role);
       extra_index_.push_back(kNone);
       if (role == Role::kExtra) {
@@ -147,6 +171,8 @@ class PlyCloudReader : public PlySink {
     has_colours_ = colours == 3;
     has_labels_ = seen[static_cast<int>(Role::kLabel)];
     has_instances_ = seen[static_cast<int>(Role::kInstance)];
+    has_intensities_ = seen[static_cast<int>(Role::kIntensity)];
+    has_station_ids_ = seen[static_cast<int>(Role::kStation)];
 
     // Capped by the file size, so a header that claims billions of vertices
     // fails as truncated instead of exhausting memory first.
@@ -155,6 +181,8 @@ class PlyCloudReader : public PlySink {
     if (has_colours_) cloud_.colours.reserve(reserve);
     if (has_labels_) cloud_.labels.reserve(reserve);
     if (has_instances_) cloud_.instances.reserve(reserve);
+    if (has_intensities_) cloud_.intensities.reserve(reserve);
+    if (has_station_ids_) cloud_.station_ids.reserve(reserve);
     for (ScalarField& field : extra_) field.values.reserve(reserve);
   }
 
@@ -191,6 +219,17 @@ class PlyCloudReader : public PlySink {
         (is_label ? label_ : instance_) = static_cast<std::int32_t>(id);
         return "";
       }
+      case Role::kIntensity:
+        intensity_ = static_cast<float>(value);
+        return "";
+      case Role::kStation:
+        if (!(value >= 0 && value < static_cast<double>(header_.stations.size())) ||
+            value != std::floor(value)) {
+          return "scan value " + number_text(value) + " names no station (the header records " +
+                 std::to_string(header_.stations.size()) + ")";
+        }
+        station_ = static_cast<std::int32_t>(value);
+        return "";
       case Role::kExtra:
         extra_values_[extra_index_[p]] = static_cast<float>(value);
         return "";
@@ -216,6 +255,8 @@ class PlyCloudReader : public PlySink {
     if (has_colours_) cloud_.colours.push_back(rgb_);
     if (has_labels_) cloud_.labels.push_back(label_);
     if (has_instances_) cloud_.instances.push_back(instance_);
+    if (has_intensities_) cloud_.intensities.push_back(intensity_);
+    if (has_station_ids_) cloud_.station_ids.push_back(station_);
     for (std::size_t f = 0; f < extra_.size(); ++f) extra_[f].values.push_back(extra_values_[f]);
   }
 
@@ -232,6 +273,8 @@ class PlyCloudReader : public PlySink {
   bool has_colours_ = false;
   bool has_labels_ = false;
   bool has_instances_ = false;
+  bool has_intensities_ = false;
+  bool has_station_ids_ = false;
   ShiftedPositions shifted_;
   PointCloud cloud_;
 
@@ -240,6 +283,8 @@ class PlyCloudReader : public PlySink {
   std::array<std::uint8_t, 3> rgb_{};
   std::int32_t label_ = -1;
   std::int32_t instance_ = -1;
+  float intensity_ = 0.0f;
+  std::int32_t station_ = 0;
   std::vector<float> extra_values_;
 };
 

@@ -20,7 +20,9 @@ std::string header(const PointCloud& cloud, const std::vector<ScalarField>& extr
   out << "ply\n"
       << (binary ? "format binary_little_endian 1.0\n" : "format ascii 1.0\n")
       << "comment written by occlusion\n"
-      << class_comment_lines(cloud.class_names, "comment ") << "element vertex " << cloud.size()
+      << class_comment_lines(cloud.class_names, "comment ")
+      << station_comment_lines(cloud.stations, cloud.shift, "comment ") << "element vertex "
+      << cloud.size()
       << '\n'
       // A shifted cloud goes back to its original frame, in double.
       << (cloud.shifted() ? "property double x\nproperty double y\nproperty double z\n"
@@ -29,6 +31,9 @@ std::string header(const PointCloud& cloud, const std::vector<ScalarField>& extr
   // The scalar_ prefix makes CloudCompare load them (cloud_formats.hpp).
   if (cloud.has_labels()) out << "property int " << kPlyScalarPrefix << "label\n";
   if (cloud.has_instances()) out << "property int " << kPlyScalarPrefix << "instance\n";
+  // CloudCompare loads an intensity without the prefix.
+  if (cloud.has_intensities()) out << "property float " << kIntensityName << '\n';
+  if (cloud.has_station_ids()) out << "property int " << kPlyScalarPrefix << kStationIdName << '\n';
   for (const ScalarField& field : extra) {
     out << "property " << (field.integer ? "int " : "float ") << kPlyScalarPrefix << field.name
         << '\n';
@@ -58,6 +63,8 @@ void write_binary_body(std::ostream& out, const PointCloud& cloud,
     }
     if (cloud.has_labels()) buffer.i32(cloud.labels[i]);
     if (cloud.has_instances()) buffer.i32(cloud.instances[i]);
+    if (cloud.has_intensities()) buffer.f32(cloud.intensities[i]);
+    if (cloud.has_station_ids()) buffer.i32(cloud.station_ids[i]);
     for (const ScalarField& field : extra) {
       if (field.integer) {
         buffer.i32(static_cast<std::int32_t>(field.values[i]));
@@ -95,6 +102,14 @@ void write_ascii_body(std::ostream& out, const PointCloud& cloud,
     if (cloud.has_instances()) {
       text += ' ';
       append_number(text, cloud.instances[i]);
+    }
+    if (cloud.has_intensities()) {
+      text += ' ';
+      append_number(text, cloud.intensities[i]);
+    }
+    if (cloud.has_station_ids()) {
+      text += ' ';
+      append_number(text, cloud.station_ids[i]);
     }
     for (const ScalarField& field : extra) {
       text += ' ';

@@ -1,6 +1,7 @@
 #include "ply_header.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 
 #include "cloud_formats.hpp"
 #include "occlusion/io/input_error.hpp"
@@ -64,6 +65,19 @@ void integer_range(PlyType type, double& lo, double& hi) {
   }
 }
 
+namespace {
+
+std::optional<Station> station_comment(std::string_view text, const std::string& path,
+                                       std::size_t line) {
+  try {
+    return parse_station_comment(text);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(path, line, e.what());
+  }
+}
+
+}  // namespace
+
 PlyHeader parse_header(std::string_view bytes, const std::string& path) {
   PlyHeader header;
   ClassNameList class_names;
@@ -99,6 +113,8 @@ PlyHeader parse_header(std::string_view bytes, const std::string& path) {
     } else if (keyword == "comment") {
       if (const auto comment = parse_class_comment(tokens.rest())) {
         class_names.add(*comment, path, number);
+      } else if (const auto station = station_comment(tokens.rest(), path, number)) {
+        header.stations.push_back(*station);
       } else {
         header.comments.emplace_back(tokens.rest());
       }

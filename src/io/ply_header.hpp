@@ -1,12 +1,15 @@
 #pragma once
-// The PLY header: format, elements and their properties, and the class names
-// in `comment class <id> <name>` lines. The body is read by ply_cloud_reader.cpp.
+// The PLY header: format, elements and their properties, the class names
+// in `comment class <id> <name>` lines and the stations in `comment station`
+// lines (cloud_formats.hpp). The body is read by ply_cloud_reader.cpp.
 
 #include <cstddef>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include "occlusion/core/point_cloud.hpp"
 
 namespace occlusion::detail {
 
@@ -38,6 +41,7 @@ struct PlyHeader {
   PlyEncoding encoding = PlyEncoding::kAscii;
   std::vector<PlyElement> elements;
   std::vector<std::string> class_names;
+  std::vector<Station> stations;      // origins in the file's frame
   std::vector<std::string> comments;  // the text of every other `comment` line, in order
   std::size_t body_offset = 0;        // first byte after the end_header line
   std::size_t body_line = 0;          // line number of that byte (ascii)

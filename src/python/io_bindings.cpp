@@ -22,6 +22,7 @@
 #include "occlusion/io/obj_writer.hpp"
 #include "occlusion/io/ply_mesh_writer.hpp"
 #include "occlusion/io/polygon_file.hpp"
+#include "station_values.hpp"
 
 namespace py = pybind11;
 
@@ -36,6 +37,9 @@ struct CloudArrays {
   py::object colours;             // uint8 (N, 3) or None
   py::object labels;              // int32 (N,) or None; -1 = unlabelled
   py::object instances;           // int32 (N,) or None
+  py::object intensities;         // float32 (N,) or None
+  py::object station_ids;         // int32 (N,) or None: index into stations
+  py::list stations;              // stations_to_python
   std::vector<std::string> class_names;
   py::dict fields;  // other per-point properties: name -> float32 or int32 (N,)
   std::size_t dropped_nan = 0;
@@ -71,6 +75,11 @@ CloudArrays read_cloud_arrays(const std::string& path, bool skip_bad_lines) {
   out.colours = optional_array(to_numpy<std::uint8_t>(std::move(cloud.colours)), has_colours);
   out.labels = optional_array(to_numpy<std::int32_t>(std::move(cloud.labels)), has_labels);
   out.instances = optional_array(to_numpy<std::int32_t>(std::move(cloud.instances)), has_instances);
+  const bool has_intensities = cloud.has_intensities(), has_station_ids = cloud.has_station_ids();
+  out.intensities = optional_array(to_numpy<float>(std::move(cloud.intensities)), has_intensities);
+  out.station_ids =
+      optional_array(to_numpy<std::int32_t>(std::move(cloud.station_ids)), has_station_ids);
+  out.stations = stations_to_python(cloud.stations);
   out.class_names = std::move(cloud.class_names);
   for (ScalarField& field : report.extra_fields) {
     if (field.integer) {
@@ -126,7 +135,9 @@ void write_cloud_arrays(const std::string& path, const py::handle& positions,
                         const py::handle& colours, const py::handle& labels,
                         const py::handle& instances,
                         const std::optional<std::vector<std::string>>& class_names,
-                        const py::dict& fields, const std::optional<std::string>& format,
+                        const py::handle& intensities, const py::handle& station_ids,
+                        const py::handle& stations, const py::dict& fields,
+                        const std::optional<std::string>& format,
                         const std::array<double, 3>& shift) {
   PointCloud cloud;
   cloud.positions = points_from_array(positions, "positions");
@@ -135,6 +146,9 @@ void write_cloud_arrays(const std::string& path, const py::handle& positions,
   if (!labels.is_none()) cloud.labels = int32_from_array(labels, "labels");
   if (!instances.is_none()) cloud.instances = int32_from_array(instances, "instances");
   if (class_names) cloud.class_names = *class_names;
+  if (!intensities.is_none()) cloud.intensities = float32_from_array(intensities, "intensities");
+  if (!station_ids.is_none()) cloud.station_ids = int32_from_array(station_ids, "station_ids");
+  if (!stations.is_none()) cloud.stations = stations_from_python(stations, "stations");
   const std::vector<ScalarField> extra = scalar_fields(fields);
   const std::optional<CloudFormat> chosen = cloud_format(format);
   py::gil_scoped_release release;
@@ -187,6 +201,15 @@ void bind_io(py::module_& m) {
       .def_readonly("labels", &CloudArrays::labels,
                     "int32 (N,) semantic class ids (-1 = unlabelled), or None")
       .def_readonly("instances", &CloudArrays::instances, "int32 (N,) instance ids, or None")
+      .def_readonly("intensities", &CloudArrays::intensities,
+                    "float32 (N,) return strengths as the file stores them, or None")
+      .def_readonly("station_ids", &CloudArrays::station_ids,
+                    "int32 (N,) index into stations of the station that measured each point, "
+                    "or None")
+      .def_readonly("stations", &CloudArrays::stations,
+                    "The scanner stations the file records: [{'name', 'origin' (x, y, z) "
+                    "relative to shift, as positions, 'orientation' (w, x, y, z), 'width', "
+                    "'height' (the scan's grid, 0 = none)}]; the jobs' default viewpoints")
       .def_readonly("class_names", &CloudArrays::class_names,
                     "class_names[label] when the file names its classes (S3DIS), else []")
       .def_readonly("fields", &CloudArrays::fields,
@@ -222,14 +245,17 @@ malformed file; FileNotFoundError for a missing one.)doc");
   m.def("write_cloud", &write_cloud_arrays, py::arg("path"), py::arg("positions"), py::kw_only(),
         py::arg("colours") = py::none(), py::arg("labels") = py::none(),
         py::arg("instances") = py::none(), py::arg("class_names") = py::none(),
-        py::arg("fields") = py::dict(), py::arg("format") = py::none(),
-        py::arg("shift") = std::array<double, 3>{0.0, 0.0, 0.0},
+        py::arg("intensities") = py::none(), py::arg("station_ids") = py::none(),
+        py::arg("stations") = py::none(), py::arg("fields") = py::dict(),
+        py::arg("format") = py::none(), py::arg("shift") = std::array<double, 3>{0.0, 0.0, 0.0},
         R"doc(Writes a point cloud as .pcd or .ply, atomically.
 
 positions (N, 3), relative to shift (a Cloud's own shift: the file gets
 position + shift, in double, when it is not zero); colours (N, 3) 0..255; labels and instances (N,) int, -1 = none;
-class_names kept as header comments; fields: name -> (N,) array (integer dtypes
-are written as int32). format: pcd_binary_compressed (.pcd default),
+class_names kept as header comments; intensities (N,) float; stations as
+Cloud.stations gives them (kept as header comments) and station_ids (N,) int
+indices into them; fields: name -> (N,) array (integer dtypes are written as
+int32). format: pcd_binary_compressed (.pcd default),
 pcd_binary, pcd_ascii, ply_binary (.ply default), ply_ascii.)doc");
 
   m.def("read_mesh", &read_mesh_arrays, py::arg("path"),

@@ -31,6 +31,7 @@
 #include "occlusion/app/reconstruct_job.hpp"
 #include "occlusion/app/region_growing_job.hpp"
 #include "occlusion/app/scan_job.hpp"
+#include "station_values.hpp"
 
 namespace py = pybind11;
 
@@ -90,6 +91,16 @@ PointCloud cloud_from_source(const py::handle& source, const py::handle& labels,
   }
   if (is_cloud && !source.attr("colours").is_none()) {
     cloud.colours = colours_from_array(source.attr("colours"), "colours");
+  }
+  // A Cloud's scanner data: its stations are the default viewpoints.
+  if (is_cloud && py::hasattr(source, "stations")) {
+    cloud.stations = stations_from_python(source.attr("stations"), "stations");
+    if (!source.attr("station_ids").is_none()) {
+      cloud.station_ids = int32_from_array(source.attr("station_ids"), "station_ids");
+    }
+    if (!source.attr("intensities").is_none()) {
+      cloud.intensities = float32_from_array(source.attr("intensities"), "intensities");
+    }
   }
   if (is_cloud && py::hasattr(source, "shift")) {
     const auto shift = source.attr("shift").cast<std::array<double, 3>>();

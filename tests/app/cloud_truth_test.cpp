@@ -9,6 +9,7 @@
 #include <string>
 
 #include "occlusion/app/cloud_occlusion_job.hpp"
+#include "occlusion/app/in_memory_jobs.hpp"
 #include "occlusion/app/scan_job.hpp"
 #include "support/mesh_truth.hpp"
 
@@ -112,6 +113,52 @@ TEST(CloudTruth, StationScanKeepsItsPointsAndClosesWhatItSaw) {
   poc.num_rays_per_vp = 20000;
   const CloudOcclusionReport closed = run_cloud_occlusion_on(scan.cloud, at({station}), {}, poc);
   EXPECT_LE(closed.result.occlusion_level, 0.02);
+}
+
+TEST(CloudTruth, StationScanRecordingItsStationIsSeenFromItThroughItsWindow) {
+  const TriangleMesh mesh = furnished_room();
+  const Eigen::Vector3d station(1.0, 1.0, 1.6);
+  SampledCloud scan = station_scan(mesh, station, 0.02, 0.004);
+  // As an E57 scan records it: the pose and the grid, 315 columns of 742 rows.
+  Station recorded{"station 1", {}};
+  recorded.frame.origin = station;
+  recorded.frame.width = 315;
+  recorded.frame.height = 742;
+  scan.cloud.stations = {recorded};
+  ScanRequest request;
+  request.path = "station";
+  const ScanReport own = scan_in_memory(scan.cloud, request);  // no viewpoint given
+  EXPECT_EQ(own.viewpoint_names, (std::vector<std::string>{"station 1"}));
+  EXPECT_GE(own.result.visible_fraction, 0.99);
+  // Its window: elevations -85 to 84.8 degrees widened by half a row (0.11
+  // degrees), a full turn; none of its own points lies outside it.
+  ASSERT_TRUE(own.field_of_view);
+  EXPECT_NEAR(own.field_of_view->elevation_lo_degrees(), -85.11, 0.01);
+  EXPECT_NEAR(own.field_of_view->elevation_hi_degrees(), 84.94, 0.01);
+  EXPECT_TRUE(own.field_of_view->full_turn);
+  EXPECT_EQ(own.result.outside_view_rays, 0u);
+  EXPECT_EQ(to_json(own)["station_field_of_view"]["station"].asString(), "station 1");
+  // Both directions from elsewhere, through the same window. From above the
+  // furniture, what the mesh sees is kept and what a wall, the cabinet or the
+  // board hides is dropped. The window takes away only directions the scanner
+  // never looked in (a 5 degree cone above and below each viewpoint): the
+  // same scan without its station record hides no more and keeps about as
+  // much, from above and from low among the furniture (where this scan's
+  // sparse columns let through half of what the mesh hides, window or not).
+  SampledCloud unrecorded = scan;
+  unrecorded.cloud.stations.clear();
+  for (const Eigen::Vector3d& viewpoint : {kHigh, kLow}) {
+    const Agreement with = scan_against_mesh(mesh, scan, viewpoint, "disc");
+    const Agreement without = scan_against_mesh(mesh, unrecorded, viewpoint, "disc");
+    const std::string where = "from " + std::to_string(viewpoint.z());
+    EXPECT_GE(with.hidden_of_hidden, without.hidden_of_hidden) << where;
+    EXPECT_NEAR(with.kept_of_visible, without.kept_of_visible, 0.01) << where;
+    if (viewpoint == kHigh) {
+      EXPECT_GE(with.agreement, 0.95);
+      EXPECT_GE(with.kept_of_visible, 0.95);
+      EXPECT_GE(with.hidden_of_hidden, 0.9);
+    }
+  }
 }
 
 TEST(CloudTruth, SpheresAreTheErrorDiscsRemove) {

@@ -45,5 +45,21 @@ TEST(PointCloudStations, ASubsetKeepsTheStationsAndEachPointsStation) {
   EXPECT_NO_THROW(kept.validate());
 }
 
+TEST(PointCloudStations, AScanStationIsTheFilesOrASingleViewSensor) {
+  EXPECT_EQ(scan_stations(two_station_cloud()).size(), 2u);
+  PointCloud frame;
+  frame.positions = {{0, 0, 1}};
+  EXPECT_TRUE(scan_stations(frame).empty());  // no pose: no station
+  frame.sensor.origin = Eigen::Vector3d(1, 2, 3);
+  const std::vector<Station> sensor = scan_stations(frame);
+  ASSERT_EQ(sensor.size(), 1u);
+  EXPECT_EQ(sensor[0].name, "sensor");
+  EXPECT_EQ(sensor[0].frame.origin, Eigen::Vector3d(1, 2, 3));
+  // A depth frame records its camera both ways: the station wins, once.
+  frame.stations = {{"frame", frame.sensor}};
+  ASSERT_EQ(scan_stations(frame).size(), 1u);
+  EXPECT_EQ(scan_stations(frame)[0].name, "frame");
+}
+
 }  // namespace
 }  // namespace occlusion

@@ -44,7 +44,8 @@ def test_cloud_round_trip(tmp_path, name, fmt):
         labels=data["labels"],
         instances=data["instances"],
         class_names=["wall", "floor", "chair"],
-        fields={"intensity": intensity, "ring": ring},
+        intensities=intensity,
+        fields={"ring": ring},
         format=fmt,
     )
     cloud = occlusion.read_cloud(path)
@@ -57,8 +58,10 @@ def test_cloud_round_trip(tmp_path, name, fmt):
     np.testing.assert_array_equal(cloud.labels, data["labels"])
     np.testing.assert_array_equal(cloud.instances, data["instances"])
     assert cloud.class_names == ["wall", "floor", "chair"]
-    assert cloud.fields["intensity"].dtype == np.float32
-    np.testing.assert_array_equal(cloud.fields["intensity"], intensity)
+    assert cloud.intensities.dtype == np.float32
+    np.testing.assert_array_equal(cloud.intensities, intensity)
+    assert cloud.station_ids is None and cloud.stations == []
+    assert "intensity" not in cloud.fields
     assert cloud.fields["ring"].dtype == np.int32
     np.testing.assert_array_equal(cloud.fields["ring"], ring)
 

@@ -14,7 +14,8 @@
 // not a hit. Rays are traced in blocks, so memory does not grow with the ray
 // count (except the escape directions, when kept).
 //
-// Single-view frames (field_of_view.hpp): with a field of view set, a ray
+// Single-view frames (field_of_view.hpp) and laser stations
+// (spherical_field_of_view.hpp): with a field of view set, a ray
 // whose direction is outside it is an outside-view ray, counted apart and not
 // traced, and the level is occlusion rays / (rays - outside-view rays).
 //
@@ -28,6 +29,7 @@
 
 #include "occlusion/analysis/field_of_view.hpp"
 #include "occlusion/analysis/sphere_directions.hpp"
+#include "occlusion/analysis/spherical_field_of_view.hpp"
 #include "occlusion/analysis/surfel_estimation.hpp"
 #include "occlusion/core/octree.hpp"
 #include "occlusion/core/point_cloud.hpp"
@@ -57,6 +59,8 @@ struct CloudOcclusionOptions {
   bool keep_escape_directions = false;
   // Set for a single-view frame: rays outside it are counted apart.
   std::optional<FieldOfView> field_of_view;
+  // Set for a laser station's scan: rays outside its window are counted apart.
+  std::optional<SphericalFieldOfView> station_field_of_view;
 };
 
 struct ViewpointRays {

@@ -28,8 +28,10 @@
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
+#include "occlusion/analysis/spherical_field_of_view.hpp"
 #include "occlusion/analysis/surfel_estimation.hpp"
 #include "occlusion/core/octree.hpp"
 #include "occlusion/core/point_cloud.hpp"
@@ -49,6 +51,9 @@ struct ScanOptions {
   const SurfelEstimate* surfels = nullptr;
   OctreeOptions octree = sphere_octree_options();
   unsigned threads = 0;
+  // Set: a laser station's window; a point whose direction from a viewpoint
+  // lies outside it is not seen from there (no ray is traced).
+  std::optional<SphericalFieldOfView> field_of_view;
 };
 
 struct ScanResult {
@@ -56,6 +61,7 @@ struct ScanResult {
   std::size_t visible_points = 0;              // seen by at least one viewpoint
   double visible_fraction = 0.0;               // visible_points / points
   std::vector<std::size_t> seen_by_viewpoint;  // points each viewpoint sees
+  std::size_t outside_view_rays = 0;           // (viewpoint, point) pairs outside field_of_view
   OctreeStats octree;
   double build_seconds = 0.0, trace_seconds = 0.0;
 };

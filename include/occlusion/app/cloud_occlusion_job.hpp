@@ -14,13 +14,15 @@
 #include "occlusion/analysis/point_spacing.hpp"
 #include "occlusion/app/key.hpp"
 #include "occlusion/app/point_model.hpp"
+#include "occlusion/app/station_filter.hpp"
 #include "occlusion/app/viewpoint_choice.hpp"
 
 namespace occlusion {
 
 struct CloudOcclusionRequest {
   std::string path;
-  ViewpointChoice viewpoints = ViewpointChoice::from_grid(9);
+  // The cloud's stations when it records any (an E57 scan's poses), else a grid of 9.
+  ViewpointChoice viewpoints = ViewpointChoice::stations_else(ViewpointChoice::from_grid(9));
   std::uint64_t num_rays_per_vp = 30000;
   // How points meet rays (app/point_model.hpp): discs, or the thesis' spheres.
   std::string primitive = "disc";
@@ -44,6 +46,11 @@ struct CloudOcclusionRequest {
   bool exterior = false;  // also compute the exterior-structure variant
   std::vector<std::string> exterior_classes = {"wall", "floor", "ceiling"};
   bool skip_bad_lines = false;
+  // Laser-scan hygiene at load (station_filter.hpp): the stations kept (by
+  // name; empty: all) and the ranges trusted from each point's own station (0: off).
+  std::vector<std::string> scans;
+  double min_range = 0.0;
+  double max_range = 0.0;
   // Box the pattern or grid is placed on: "robust" (per-axis quantiles, cuts
   // off stray points) or "bbox" (all points); see analysis/scene_frame.hpp.
   std::string frame = "robust";
@@ -71,8 +78,13 @@ struct CloudOcclusionReport {
   PointModelReport point_model;              // as traced, with the measured spacing
   std::optional<FieldOfView> field_of_view;  // set for a single-view frame
   std::string field_of_view_source;          // why the cloud was taken as one
+  // Set for one laser station's gridded scan (spherical_field_of_view.hpp), and that station.
+  std::optional<SphericalFieldOfView> station_field_of_view;
+  Station field_of_view_station;
   std::optional<ExteriorReport> exterior;
   std::vector<std::string> viewpoint_names;
+  std::string viewpoint_source;        // ViewpointChoice::Resolved::source
+  StationFilterReport station_filter;  // what scans/min_range/max_range dropped
   Json::Value frame;  // how the viewpoints were placed (ViewpointChoice::Resolved::frame)
   Eigen::Vector3d shift = Eigen::Vector3d::Zero();  // the cloud's global shift
   std::size_t openings = 0;

@@ -4,6 +4,7 @@
 
 #include <json/value.h>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -11,13 +12,15 @@
 #include "occlusion/analysis/scan.hpp"
 #include "occlusion/app/key.hpp"
 #include "occlusion/app/point_model.hpp"
+#include "occlusion/app/station_filter.hpp"
 #include "occlusion/app/viewpoint_choice.hpp"
 
 namespace occlusion {
 
 struct ScanRequest {
   std::string path;
-  ViewpointChoice viewpoints = ViewpointChoice::from_pattern(7);
+  // The cloud's stations when it records any (an E57 scan's poses), else pattern 7.
+  ViewpointChoice viewpoints = ViewpointChoice::stations_else(ViewpointChoice::from_pattern(7));
   // How points meet rays (app/point_model.hpp): discs, or the thesis' spheres.
   std::string primitive = "disc";
   // kAutoPointRadius: discs from their neighbours' density, spheres from the
@@ -31,6 +34,11 @@ struct ScanRequest {
   bool enable_acceleration = true;
   std::string format = "ply";  // of the written clouds: ply or pcd
   bool skip_bad_lines = false;
+  // Laser-scan hygiene at load (station_filter.hpp): the stations kept (by
+  // name; empty: all) and the ranges trusted from each point's own station (0: off).
+  std::vector<std::string> scans;
+  double min_range = 0.0;
+  double max_range = 0.0;
   // Box the pattern or grid is placed on: "robust" (per-axis quantiles, cuts
   // off stray points) or "bbox" (all points); see analysis/scene_frame.hpp.
   std::string frame = "robust";
@@ -55,9 +63,14 @@ struct ScanReport {
   ScanRequest request;
   ScanResult result;
   PointModelReport point_model;  // as traced, with the measured spacing
+  // Set for one laser station's gridded scan: its window (spherical_field_of_view.hpp).
+  std::optional<SphericalFieldOfView> field_of_view;
+  Station field_of_view_station;  // that station
   std::vector<std::string> viewpoint_names;
+  std::string viewpoint_source;  // ViewpointChoice::Resolved::source
   Json::Value frame;  // how the viewpoints were placed (ViewpointChoice::Resolved::frame)
   std::vector<Eigen::Vector3d> viewpoint_positions;  // in the file's frame
+  StationFilterReport station_filter;                // what scans/min_range/max_range dropped
   Eigen::Vector3d shift = Eigen::Vector3d::Zero();   // the cloud's global shift
   std::vector<ClassVisibility> classes;              // empty for unlabelled clouds
   std::size_t dropped_nan = 0;

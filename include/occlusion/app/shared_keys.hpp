@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "occlusion/analysis/confusion_matrix.hpp"
 #include "occlusion/analysis/point_spacing.hpp"
@@ -170,6 +171,39 @@ KeyBuilder<R> self_tolerance_key(double R::*field) {
       .doc(
           "spheres: a point is seen if nothing blocks the ray closer than this to it; auto: 2 x "
           "point_radius (discs measure their own surface's reach, README, Point model)");
+}
+
+// Laser-scan hygiene (app/station_filter.hpp): which stations' points a cloud
+// job keeps, and the ranges it trusts, measured from each point's own station.
+template <class R>
+KeyBuilder<R> scans_key(std::vector<std::string> R::*field) {
+  return key("scans", field)
+      .metavar("A,B,...")
+      .doc(
+          "keep only the points of these stations (an E57 file's scans, by name); they are "
+          "the default viewpoints; empty: every station");
+}
+
+template <class R>
+KeyBuilder<R> min_range_key(double R::*field) {
+  return key("min_range", field)
+      .range(0, 1e9)
+      .unit("scene units")
+      .metavar("D")
+      .doc(
+          "drop points nearer than D to their own station (a scanner's tripod and operator, "
+          "e.g. 0.5 m); 0 = off");
+}
+
+template <class R>
+KeyBuilder<R> max_range_key(double R::*field) {
+  return key("max_range", field)
+      .range(0, 1e9)
+      .unit("scene units")
+      .metavar("D")
+      .doc(
+          "drop points farther than D from their own station (no-return values, e.g. 32.76 m "
+          "written as a range); 0 = off");
 }
 
 template <class R>

@@ -98,4 +98,10 @@ struct PointCloud {
   void bounds(Eigen::Vector3f& lo, Eigen::Vector3f& hi) const;
 };
 
+// The stations a job uses (default viewpoints, ranges, field of view): the
+// file's, or for a cloud without any that is a single-view frame (a PCD
+// VIEWPOINT, an organised PCD) its sensor as one station named "sensor".
+// Empty when the cloud records neither.
+std::vector<Station> scan_stations(const PointCloud& cloud);
+
 }  // namespace occlusion

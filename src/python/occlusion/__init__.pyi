@@ -152,6 +152,10 @@ class Cloud:
     colours: Optional[npt.NDArray[np.uint8]]  # (N, 3)
     labels: Optional[npt.NDArray[np.int32]]  # (N,), -1 = unlabelled
     instances: Optional[npt.NDArray[np.int32]]  # (N,)
+    intensities: Optional[npt.NDArray[np.float32]]  # (N,)
+    station_ids: Optional[npt.NDArray[np.int32]]  # (N,), index into stations
+    # {"name", "origin" (relative to shift), "orientation" (w, x, y, z), "width", "height"}
+    stations: list[dict[str, Any]]
     class_names: list[str]
     fields: dict[str, npt.NDArray[Any]]  # float32 or int32 (N,)
     dropped_nan: int
@@ -177,6 +181,9 @@ def write_cloud(
     labels: Optional[npt.ArrayLike] = None,
     instances: Optional[npt.ArrayLike] = None,
     class_names: Optional[Sequence[str]] = None,
+    intensities: Optional[npt.ArrayLike] = None,
+    station_ids: Optional[npt.ArrayLike] = None,
+    stations: Optional[Sequence[dict[str, Any]]] = None,
     fields: dict[str, npt.ArrayLike] = ...,
     format: Optional[str] = None,
     shift: tuple[float, float, float] = (0.0, 0.0, 0.0),
