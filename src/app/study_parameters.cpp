@@ -78,6 +78,13 @@ Json::Value row_parameters(const StudyRequest& q) {
         "segmenter_timeout", "polygon_path", "mapping_path", "max_memory_mb"}) {
     p.removeMember(key);
   }
+  // Keys declared after studies were first run, whose default leaves every row
+  // as it was: they join the fingerprint only when set, so a study run before
+  // they existed still resumes.
+  static const Json::Value defaults = parameters_json(study_keys(), StudyRequest{});
+  for (const char* key : {"scans", "min_range", "max_range"}) {
+    if (p.isMember(key) && same(p[key], defaults[key])) p.removeMember(key);
+  }
   p["segmenter"] = segmenter_name(q.segmenter);
   p["polygon_file"] = content_digest(q.tracing.polygon_path);
   p["mapping_file"] = content_digest(q.mapping_path);
