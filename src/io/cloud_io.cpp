@@ -26,12 +26,13 @@ PointCloud read_by_kind(const std::string& path, const CloudReadOptions& options
   const std::string extension = detail::lower_extension(path);
   if (extension == ".pcd") return detail::read_pcd(path, options, report);
   if (extension == ".ply") return detail::read_ply(path, options, report);
+  if (extension == ".e57") return detail::read_e57(path, options, report);
   if (extension == ".txt" || extension == ".xyz" || extension == ".pts") {
     return detail::read_text_cloud(path, options, report);
   }
   throw InputError(path, 0,
                    "unknown point cloud extension '" + extension +
-                       "'; supported: .pcd, .ply, .txt, .xyz, .pts, or an S3DIS room or Area "
+                       "'; supported: .pcd, .ply, .e57, .txt, .xyz, .pts, or an S3DIS room or Area "
                        "folder");
 }
 
@@ -72,12 +73,16 @@ PointCloud read_cloud(const std::string& path, const CloudReadOptions& options,
   CloudReadReport& counts = report != nullptr ? *report : local;
   const std::size_t dropped_before = counts.dropped_nan;
   const std::size_t skipped_before = counts.skipped_lines;
+  const std::size_t invalid_before = counts.dropped_invalid;
   PointCloud cloud = read_shifted(path, options, counts);
   if (cloud.size() == 0) {
     std::string reason = "no points";
     if (counts.dropped_nan > dropped_before) {
       reason += " (all " + std::to_string(counts.dropped_nan - dropped_before) +
                 " had a NaN or infinite coordinate)";
+    } else if (counts.dropped_invalid > invalid_before) {
+      reason += " (all " + std::to_string(counts.dropped_invalid - invalid_before) +
+                " are marked invalid or direction-only by the file)";
     } else if (counts.skipped_lines > skipped_before) {
       reason +=
           " (" + std::to_string(counts.skipped_lines - skipped_before) + " bad lines were skipped)";
