@@ -33,8 +33,8 @@ std::uint32_t crc_by_table(std::uint32_t crc, const unsigned char* data, std::si
 
 #if defined(__x86_64__)
 __attribute__((target("sse4.2"))) std::uint32_t crc_by_instruction(std::uint32_t crc,
-                                                                    const unsigned char* data,
-                                                                    std::size_t size) {
+                                                                   const unsigned char* data,
+                                                                   std::size_t size) {
   std::uint64_t wide = crc;
   std::size_t i = 0;
   for (; i + 8 <= size; i += 8) {

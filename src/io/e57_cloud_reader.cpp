@@ -47,7 +47,9 @@ struct Roles {
     column = scan.field("columnIndex");
   }
 
-  bool has_coordinates() const { return coordinate[0] >= 0; }
+  bool has_coordinates() const {
+    return coordinate[0] >= 0 && coordinate[1] >= 0 && coordinate[2] >= 0;
+  }
   bool has_colours() const { return colour[0] >= 0; }
   bool has_grid() const { return row >= 0 && column >= 0; }
 };
@@ -63,8 +65,7 @@ std::optional<E57Range> field_range(const E57Field& field) {
 
 class E57CloudReader {
  public:
-  E57CloudReader(const std::string& path, const CloudReadOptions& options,
-                 CloudReadReport& report)
+  E57CloudReader(const std::string& path, const CloudReadOptions& options, CloudReadReport& report)
       : path_(path), report_(report), shifted_(options.shift) {}
 
   PointCloud run() {
@@ -107,7 +108,8 @@ class E57CloudReader {
   // The grid's columns or rows: from indexBounds, else the largest index + 1.
   std::size_t grid_size(const E57Scan& scan, const std::optional<E57Range>& bounds,
                         std::int64_t largest, const char* what) const {
-    const double size = bounds ? bounds->maximum - bounds->minimum + 1 : static_cast<double>(largest + 1);
+    const double size =
+        bounds ? bounds->maximum - bounds->minimum + 1 : static_cast<double>(largest + 1);
     if (!(size >= 1 && size <= 4e9)) {
       fail(scan, std::string("its indexBounds give ") + std::to_string(size) + " " + what +
                      ", not 1..4e9");
@@ -157,16 +159,18 @@ class E57CloudReader {
     }
     std::vector<E57FieldReader> readers;
     readers.reserve(scan.fields.size());
-    for (std::size_t f = 0; f < scan.fields.size(); ++f) readers.emplace_back(scan.fields[f], streams[f]);
+    for (std::size_t f = 0; f < scan.fields.size(); ++f)
+      readers.emplace_back(scan.fields[f], streams[f]);
 
     E57Range colour_range[3];
     if (colours) {
       for (int c = 0; c < 3; ++c) {
         const E57Field& field = scan.fields[static_cast<std::size_t>(roles.colour[c])];
-        colour_range[c] = checked_range(
-            scan, scan.colour_limits ? (*scan.colour_limits)[static_cast<std::size_t>(c)]
-                                     : field_range(field),
-            "colour");
+        colour_range[c] =
+            checked_range(scan,
+                          scan.colour_limits ? (*scan.colour_limits)[static_cast<std::size_t>(c)]
+                                             : field_range(field),
+                          "colour");
       }
     }
     std::optional<E57Range> intensity_range;
@@ -188,7 +192,8 @@ class E57CloudReader {
       }
       return value;
     };
-    const auto grid_index = [&](int f, std::uint64_t record, const std::optional<E57Range>& bounds) {
+    const auto grid_index = [&](int f, std::uint64_t record,
+                                const std::optional<E57Range>& bounds) {
       const double value = read(f, record);
       const char* name = f == roles.row ? "rowIndex" : "columnIndex";
       if (!(value >= 0 && value <= 4e9 && value == std::floor(value))) {
@@ -208,8 +213,8 @@ class E57CloudReader {
       std::array<std::uint8_t, 3> rgb{};
       for (int k = 0; k < 3 && colours; ++k) {
         const double v = read(roles.colour[k], r);
-        const double unit = (v - colour_range[k].minimum) /
-                            (colour_range[k].maximum - colour_range[k].minimum);
+        const double unit =
+            (v - colour_range[k].minimum) / (colour_range[k].maximum - colour_range[k].minimum);
         rgb[static_cast<std::size_t>(k)] =
             static_cast<std::uint8_t>(std::lround(std::clamp(unit, 0.0, 1.0) * 255.0));
       }

@@ -37,7 +37,7 @@ struct E57Scan {
   std::string name;     // name, else guid, else "scan_<k>"
   Eigen::Quaterniond rotation = Eigen::Quaterniond::Identity();
   Eigen::Vector3d translation = Eigen::Vector3d::Zero();
-  std::vector<E57Field> fields;  // bytestream order
+  std::vector<E57Field> fields;      // bytestream order
   std::uint64_t section_offset = 0;  // physical offset of the CompressedVector section
   std::uint64_t record_count = 0;
   std::optional<E57Range> intensity_limits;

@@ -52,8 +52,8 @@ std::vector<E57Stream> read_compressed_vector(const E57Pages& pages, std::uint64
     const std::uint64_t packet_length = std::uint64_t{e57_u16(packet.data() + 2)} + 1;
     if (packet_length > end - at) {
       pages.fail(physical, what + ": a packet of " + std::to_string(packet_length) +
-                               " bytes runs past the section's end (" +
-                               std::to_string(end - at) + " bytes left)");
+                               " bytes runs past the section's end (" + std::to_string(end - at) +
+                               " bytes left)");
     }
     if (packet[0] == kIndexPacket || packet[0] == kEmptyPacket) {
       at += packet_length;

@@ -136,8 +136,9 @@ class XmlReader {
     if (const pugi::xml_node rotation = pose.child("rotation")) {
       const std::string at = element + "/rotation";
       expect_type(rotation, at, {"Structure"});
-      Eigen::Quaterniond q(child_number(rotation, at, "w", 1.0), child_number(rotation, at, "x", 0.0),
-                           child_number(rotation, at, "y", 0.0), child_number(rotation, at, "z", 0.0));
+      Eigen::Quaterniond q(
+          child_number(rotation, at, "w", 1.0), child_number(rotation, at, "x", 0.0),
+          child_number(rotation, at, "y", 0.0), child_number(rotation, at, "z", 0.0));
       // A unit quaternion by the standard; writers print it to 7 to 17
       // digits. Anything further off is no rotation we can trust.
       const double norm = q.norm();
@@ -158,8 +159,8 @@ class XmlReader {
 
   void read_limits(const pugi::xml_node& node, E57Scan& scan) const {
     const pugi::xml_node intensity = node.child("intensityLimits");
-    scan.intensity_limits = range(intensity, scan.element + "/intensityLimits",
-                                  "intensityMinimum", "intensityMaximum");
+    scan.intensity_limits =
+        range(intensity, scan.element + "/intensityLimits", "intensityMinimum", "intensityMaximum");
     const pugi::xml_node colour = node.child("colorLimits");
     const std::string at = scan.element + "/colorLimits";
     const auto red = range(colour, at, "colorRedMinimum", "colorRedMaximum");
@@ -213,10 +214,10 @@ class XmlReader {
       field.bits = field.single ? 32 : 64;
     } else if (type == "Integer" || type == "ScaledInteger") {
       field.kind = type == "Integer" ? E57Field::Kind::kInteger : E57Field::Kind::kScaledInteger;
-      field.minimum = integer_attribute(node, element, "minimum",
-                                        std::numeric_limits<std::int64_t>::min());
-      field.maximum = integer_attribute(node, element, "maximum",
-                                        std::numeric_limits<std::int64_t>::max());
+      field.minimum =
+          integer_attribute(node, element, "minimum", std::numeric_limits<std::int64_t>::min());
+      field.maximum =
+          integer_attribute(node, element, "maximum", std::numeric_limits<std::int64_t>::max());
       if (field.maximum < field.minimum) fail(element, "maximum is below minimum");
       if (field.kind == E57Field::Kind::kScaledInteger) {
         field.scale = real_attribute(node, element, "scale", 1.0);
@@ -228,8 +229,8 @@ class XmlReader {
       field.bits = 0;
       for (std::uint64_t rest = span; rest != 0; rest >>= 1) ++field.bits;
     } else {
-      fail(element, "has type '" + type +
-                        "'; only Integer, ScaledInteger and Float point fields are read");
+      fail(element,
+           "has type '" + type + "'; only Integer, ScaledInteger and Float point fields are read");
     }
     scan.fields.push_back(std::move(field));
   }

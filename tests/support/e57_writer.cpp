@@ -21,7 +21,8 @@ std::uint32_t crc32c_bitwise(const unsigned char* data, std::size_t size) {
 }
 
 void put(std::string& out, std::size_t at, std::uint64_t value, int bytes) {
-  for (int i = 0; i < bytes; ++i) out[at + static_cast<std::size_t>(i)] = static_cast<char>(value >> (8 * i));
+  for (int i = 0; i < bytes; ++i)
+    out[at + static_cast<std::size_t>(i)] = static_cast<char>(value >> (8 * i));
 }
 
 void append(std::string& out, std::uint64_t value, int bytes) {
@@ -164,21 +165,21 @@ std::string scan_xml(const E57ScanSpec& scan, std::uint64_t offset) {
     if (scan.rotation) {
       const Eigen::Quaterniond& q = *scan.rotation;
       xml += "<rotation type=\"Structure\"><w type=\"Float\">" + number(q.w()) +
-             "</w><x type=\"Float\">" + number(q.x()) + "</x><y type=\"Float\">" +
-             number(q.y()) + "</y><z type=\"Float\">" + number(q.z()) + "</z></rotation>\n";
+             "</w><x type=\"Float\">" + number(q.x()) + "</x><y type=\"Float\">" + number(q.y()) +
+             "</y><z type=\"Float\">" + number(q.z()) + "</z></rotation>\n";
     }
     if (scan.translation) {
       const Eigen::Vector3d& t = *scan.translation;
       xml += "<translation type=\"Structure\"><x type=\"Float\">" + number(t.x()) +
-             "</x><y type=\"Float\">" + number(t.y()) + "</y><z type=\"Float\">" +
-             number(t.z()) + "</z></translation>\n";
+             "</x><y type=\"Float\">" + number(t.y()) + "</y><z type=\"Float\">" + number(t.z()) +
+             "</z></translation>\n";
     }
     xml += "</pose>\n";
   }
   xml += scan.extra_xml;
-  const std::uint64_t records =
-      scan.record_count ? *scan.record_count
-                        : (scan.fields.empty() ? 0 : count_of(scan.fields.front()));
+  const std::uint64_t records = scan.record_count
+                                    ? *scan.record_count
+                                    : (scan.fields.empty() ? 0 : count_of(scan.fields.front()));
   xml += "<points type=\"CompressedVector\" fileOffset=\"" + std::to_string(offset) +
          "\" recordCount=\"" + std::to_string(records) + "\">\n<prototype type=\"Structure\">\n";
   for (const E57FieldSpec& field : scan.fields) xml += field_xml(field);

@@ -35,10 +35,10 @@ struct E57ScanSpec {
   std::optional<Eigen::Quaterniond> rotation;
   std::optional<Eigen::Vector3d> translation;
   std::vector<E57FieldSpec> fields;
-  std::string extra_xml;   // more children of the scan (colorLimits, indexBounds...)
-  std::string codecs_xml;  // children of points/codecs
-  std::size_t packets = 1;       // data packets each bytestream is split over (unevenly)
-  bool filler_packets = false;   // an empty and an index packet before the data
+  std::string extra_xml;        // more children of the scan (colorLimits, indexBounds...)
+  std::string codecs_xml;       // children of points/codecs
+  std::size_t packets = 1;      // data packets each bytestream is split over (unevenly)
+  bool filler_packets = false;  // an empty and an index packet before the data
   std::optional<std::uint64_t> record_count;  // default: the fields' value count
 };
 

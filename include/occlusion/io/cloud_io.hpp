@@ -69,8 +69,8 @@ struct CloudReadOptions {
 };
 
 struct CloudReadReport {
-  std::size_t dropped_nan = 0;     // points dropped for a non-finite coordinate
-  std::size_t skipped_lines = 0;   // bad text lines skipped (skip_bad_lines)
+  std::size_t dropped_nan = 0;    // points dropped for a non-finite coordinate
+  std::size_t skipped_lines = 0;  // bad text lines skipped (skip_bad_lines)
   // E57 points whose scan marks them invalid or direction-only (invalid state
   // 2 or 1: no range was measured), dropped.
   std::size_t dropped_invalid = 0;
