@@ -259,6 +259,25 @@ TEST(E57Reader, GeoreferencedScanIsShiftedAndSoAreItsStations) {
   EXPECT_EQ(cloud.stations[0].frame.origin, Eigen::Vector3d(12, 34, -50));
 }
 
+// The fuzz target's generated seed (tests/fuzz/corpus/e57/SOURCES.md).
+TEST(E57Reader, FuzzSeedReads) {
+  CloudReadReport report;
+  const PointCloud cloud = read_cloud(
+      std::string(OCCLUSION_SOURCE_DIR) + "/tests/fuzz/corpus/e57/two_scans.e57", {}, &report);
+  EXPECT_EQ(cloud.size(), 8u);  // 6 - 2 invalid, then 4
+  EXPECT_EQ(report.dropped_invalid, 2u);
+  ASSERT_EQ(cloud.stations.size(), 2u);
+  EXPECT_EQ(cloud.stations[0].name, "spherical");
+  EXPECT_EQ(cloud.stations[0].frame.width, 2u);
+  EXPECT_EQ(cloud.stations[0].frame.height, 3u);
+  EXPECT_EQ(cloud.stations[1].name, "{seed-b}");
+  EXPECT_EQ(cloud.station_ids, (std::vector<std::int32_t>{0, 0, 0, 0, 1, 1, 1, 1}));
+  // Only the second scan has colours: the cloud keeps none.
+  EXPECT_FALSE(cloud.has_colours());
+  EXPECT_FALSE(cloud.has_intensities());
+  expect_near(cloud.positions[4], {-3 - 10.0, 0.03, 0.5}, 1e-5);
+}
+
 // --- errors ----------------------------------------------------------------
 
 E57FileSpec many_points(std::size_t count) {
