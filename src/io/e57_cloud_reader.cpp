@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "cloud_formats.hpp"
@@ -92,6 +93,17 @@ class E57CloudReader {
   }
 
  private:
+  // Each scan's points must have a section of their own: scans sharing bytes
+  // would let a small file claim the same points over and over.
+  void claim(const E57Scan& scan, const E57Section& section) {
+    for (const auto& [start, end, element] : sections_) {
+      if (section.start < end && start < section.end) {
+        fail(scan, "its points' section overlaps that of " + element);
+      }
+    }
+    sections_.emplace_back(section.start, section.end, scan.element);
+  }
+
   [[noreturn]] void fail(const E57Scan& scan, const std::string& reason) const {
     throw InputError(path_, 0, "E57 scan " + scan.element + " ('" + scan.name + "'): " + reason);
   }
@@ -131,8 +143,10 @@ class E57CloudReader {
     if (!roles.has_coordinates()) {
       fail(scan, "its points have neither cartesianX/Y/Z nor sphericalRange/Azimuth/Elevation");
     }
-    const std::vector<E57Stream> streams = read_compressed_vector(
-        pages, scan.section_offset, scan.fields.size(), scan.element + "/points");
+    const E57Section section = read_compressed_vector(pages, scan.section_offset,
+                                                      scan.fields.size(), scan.element + "/points");
+    claim(scan, section);
+    const std::vector<E57Stream>& streams = section.streams;
     // Every field read must hold its records' bits before anything is
     // allocated for them, so a record count cannot claim more than the file.
     std::vector<int> used;
@@ -153,9 +167,15 @@ class E57CloudReader {
       }
       bits_per_record += field.bits;
     }
-    if (bits_per_record == 0 && scan.record_count > pages.logical_size()) {
-      fail(scan, "recordCount " + std::to_string(scan.record_count) +
-                     " exceeds the file's size for fields that take no bits");
+    // Fields of one value (minimum == maximum) take no bytes, so nothing in
+    // the file bounds their records: all such scans together may claim no
+    // more records than the file has bytes.
+    if (bits_per_record == 0) {
+      free_records_ += scan.record_count;
+      if (free_records_ > pages.logical_size()) {
+        fail(scan, "recordCount " + std::to_string(scan.record_count) +
+                       " of fields that take no bits exceeds what a file of this size can hold");
+      }
     }
     std::vector<E57FieldReader> readers;
     readers.reserve(scan.fields.size());
@@ -270,6 +290,8 @@ class E57CloudReader {
   CloudReadReport& report_;
   ShiftedPositions shifted_;
   PointCloud cloud_;
+  std::vector<std::tuple<std::uint64_t, std::uint64_t, std::string>> sections_;
+  std::uint64_t free_records_ = 0;
 };
 
 }  // namespace

@@ -16,8 +16,8 @@ constexpr std::uint64_t kDataPacketHeaderSize = 6;
 
 }  // namespace
 
-std::vector<E57Stream> read_compressed_vector(const E57Pages& pages, std::uint64_t physical_offset,
-                                              std::size_t stream_count, const std::string& what) {
+E57Section read_compressed_vector(const E57Pages& pages, std::uint64_t physical_offset,
+                                  std::size_t stream_count, const std::string& what) {
   const std::uint64_t start = pages.logical_of(physical_offset, what + "'s fileOffset");
   std::array<unsigned char, kSectionHeaderSize> header{};
   pages.copy(start, header.size(), header.data(), what + "'s section header");
@@ -32,8 +32,12 @@ std::vector<E57Stream> read_compressed_vector(const E57Pages& pages, std::uint64
   }
   pages.check_range(start, length, what + "'s section");
   const std::uint64_t end = start + length;
-  std::vector<E57Stream> streams(stream_count);
-  if (length == kSectionHeaderSize) return streams;  // no packets: no records
+  E57Section section;
+  section.start = start;
+  section.end = end;
+  std::vector<E57Stream>& streams = section.streams;
+  streams.resize(stream_count);
+  if (length == kSectionHeaderSize) return section;  // no packets: no records
   const std::uint64_t data_physical = e57_u64(header.data() + 16);
   std::uint64_t at = pages.logical_of(data_physical, what + "'s data offset");
   if (at < start + kSectionHeaderSize || at >= end) {
@@ -98,7 +102,7 @@ std::vector<E57Stream> read_compressed_vector(const E57Pages& pages, std::uint64
     }
     at += packet_length;
   }
-  return streams;
+  return section;
 }
 
 }  // namespace occlusion::detail

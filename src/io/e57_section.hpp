@@ -24,13 +24,19 @@ struct E57Stream {
   std::uint64_t bytes = 0;
 };
 
+// A section's bytestreams and where it lies (logical offsets, [start, end)).
+struct E57Section {
+  std::vector<E57Stream> streams;
+  std::uint64_t start = 0, end = 0;
+};
+
 // The `stream_count` bytestreams of the section at `physical_offset`; `what`
 // names the section's XML element in errors. InputError for a header that is
 // not a CompressedVector's, a section or packet that runs past the file or
 // the section, a data packet whose buffer count differs from the prototype's
 // fields or whose buffers overrun it, an unknown packet type. Nothing is
 // copied: the runs point into the file's bytes.
-std::vector<E57Stream> read_compressed_vector(const E57Pages& pages, std::uint64_t physical_offset,
-                                              std::size_t stream_count, const std::string& what);
+E57Section read_compressed_vector(const E57Pages& pages, std::uint64_t physical_offset,
+                                  std::size_t stream_count, const std::string& what);
 
 }  // namespace occlusion::detail

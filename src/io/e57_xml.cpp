@@ -186,19 +186,23 @@ class XmlReader {
     scan.record_count = static_cast<std::uint64_t>(count);
     const pugi::xml_node prototype = points.child("prototype");
     if (!prototype) fail(element, "has no prototype");
-    add_fields(prototype, element + "/prototype", "", scan);
+    add_fields(prototype, element + "/prototype", "", 0, scan);
     check_codecs(points.child("codecs"), element + "/codecs");
   }
 
-  // The prototype's leaves, depth first: the order of the bytestreams.
+  // The prototype's leaves, depth first: the order of the bytestreams. Real
+  // prototypes nest a level or two; the limit keeps a crafted file from
+  // exhausting the stack.
   void add_fields(const pugi::xml_node& node, const std::string& element, const std::string& name,
-                  E57Scan& scan) const {
+                  int depth, E57Scan& scan) const {
+    constexpr int kMaxDepth = 16;
     const std::string type = type_of(node);
     if (type == "Structure" || type == "Vector") {
+      if (depth > kMaxDepth) fail(element, "nests Structures more than 16 deep");
       for (const pugi::xml_node& child : node.children()) {
         if (child.type() != pugi::node_element) continue;
         add_fields(child, element + "/" + child.name(),
-                   name.empty() ? child.name() : name + "/" + child.name(), scan);
+                   name.empty() ? child.name() : name + "/" + child.name(), depth + 1, scan);
       }
       return;
     }

@@ -377,6 +377,26 @@ TEST(E57Errors, AStoredValueBeyondItsFieldsMaximum) {
                               "record 2: cartesianInvalidState is outside its field's");
 }
 
+TEST(E57Errors, ScansSharingASectionAreRefused) {
+  // Two scans whose XML points at the same bytes: a small file could
+  // otherwise claim its points any number of times.
+  const testing::ScratchDirectory dir;
+  E57FileSpec spec = many_points(3);
+  spec.scans.push_back(spec.scans[0]);
+  std::string bytes = test::e57_bytes(spec);
+  const std::string attribute = "fileOffset=\"";
+  const std::size_t second = bytes.find(attribute, bytes.find(attribute) + 1) + attribute.size();
+  const std::size_t quote = bytes.find('"', second);
+  ASSERT_GE(quote - second, 2u);
+  // fileOffset="NNN" becomes fileOffset="48" plus spaces: the XML keeps its length.
+  bytes.replace(second, quote + 1 - second, "48\"" + std::string(quote - second - 2, ' '));
+  test::fix_e57_checksums(bytes);
+  const std::string path = dir.file("shared.e57");
+  write_bytes(path, bytes);
+  testing::expect_input_error([&] { read_cloud(path); }, "shared.e57", 0,
+                              "data3D/1 ('scan_1'): its points' section overlaps that of data3D/0");
+}
+
 // The first section starts right after the 48-byte file header, its first
 // data packet after the 32-byte section header: byte 80 of page 0.
 std::string with_packet_bytes(const E57FileSpec& spec, std::size_t at, const std::string& values) {
