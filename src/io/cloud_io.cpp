@@ -32,7 +32,7 @@ PointCloud read_by_kind(const std::string& path, const CloudReadOptions& options
   }
   throw InputError(path, 0,
                    "unknown point cloud extension '" + extension +
-                       "'; supported: .pcd, .ply, .e57, .txt, .xyz, .pts, or an S3DIS room or Area "
+                       "'; supported: .pcd, .ply, .txt, .xyz, .pts, .e57, or an S3DIS room or Area "
                        "folder");
 }
 

@@ -92,9 +92,9 @@ void check_upload_name(const std::string& name) {
   }
   if (name[0] == '.') fail("must not start with '.'");
   const std::string extension = lower_extension(name);
-  const char* known[] = {".obj", ".ply", ".pcd", ".txt", ".xyz", ".pts"};
+  const char* known[] = {".obj", ".ply", ".pcd", ".txt", ".xyz", ".pts", ".e57"};
   if (std::find(std::begin(known), std::end(known), extension) == std::end(known)) {
-    fail("needs one of the extensions .obj .ply .pcd .txt .xyz .pts");
+    fail("needs one of the extensions .obj .ply .pcd .txt .xyz .pts .e57");
   }
 }
 

@@ -82,7 +82,7 @@ export class Loading {
       if (!uploadableName(file.name)) {
         this.ctx.notices.error(
           `Cannot upload ${file.name}`,
-          "Only .obj, .ply, .pcd, .txt, .xyz and .pts files can be loaded.",
+          "Only .obj, .ply, .pcd, .txt, .xyz, .pts and .e57 files can be loaded.",
         );
         continue;
       }

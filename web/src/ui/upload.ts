@@ -1,9 +1,9 @@
 // Drag-and-drop (anywhere on the page) and a file button for uploading the
-// user's own PCD / PLY / OBJ / text files.
+// user's own PCD / PLY / E57 / OBJ / text files.
 
 import { h } from "./dom";
 
-export const UPLOAD_EXTENSIONS = [".obj", ".ply", ".pcd", ".txt", ".xyz", ".pts"];
+export const UPLOAD_EXTENSIONS = [".obj", ".ply", ".pcd", ".txt", ".xyz", ".pts", ".e57"];
 
 export function uploadableName(name: string): boolean {
   const lower = name.toLowerCase();
