@@ -37,12 +37,13 @@ void E57Pages::fail(std::uint64_t physical, const std::string& reason) const {
 }
 
 void E57Pages::read_header(std::string_view bytes) {
-  if (bytes.size() < kE57HeaderSize || std::memcmp(bytes.data(), "ASTM-E57", 8) != 0) {
+  if (bytes.size() < 8 || std::memcmp(bytes.data(), "ASTM-E57", 8) != 0) {
+    throw InputError(path_, 0, "not an E57 file (it does not start with 'ASTM-E57')");
+  }
+  if (bytes.size() < kE57HeaderSize) {
     throw InputError(path_, 0,
-                     bytes.size() < 8 || std::memcmp(bytes.data(), "ASTM-E57", 8) != 0
-                         ? "not an E57 file (it does not start with 'ASTM-E57')"
-                         : "truncated E57 file: " + std::to_string(bytes.size()) +
-                               " bytes, shorter than the 48-byte file header");
+                     "truncated E57 file: " + std::to_string(bytes.size()) +
+                         " bytes, shorter than the 48-byte file header");
   }
   header_.major = e57_u32(data_ + 8);
   header_.minor = e57_u32(data_ + 12);
