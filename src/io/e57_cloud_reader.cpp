@@ -3,8 +3,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
+#include <map>
 #include <string>
-#include <tuple>
+#include <utility>
 #include <vector>
 
 #include "cloud_formats.hpp"
@@ -94,14 +96,21 @@ class E57CloudReader {
 
  private:
   // Each scan's points must have a section of their own: scans sharing bytes
-  // would let a small file claim the same points over and over.
+  // would let a small file claim the same points over and over. The sections
+  // kept do not overlap, so only the neighbours of a new one need checking
+  // (a file may hold many thousands of scans).
   void claim(const E57Scan& scan, const E57Section& section) {
-    for (const auto& [start, end, element] : sections_) {
-      if (section.start < end && start < section.end) {
-        fail(scan, "its points' section overlaps that of " + element);
+    const auto next = sections_.lower_bound(section.start);
+    if (next != sections_.end() && next->first < section.end) {
+      fail(scan, "its points' section overlaps that of " + next->second.second);
+    }
+    if (next != sections_.begin()) {
+      const auto previous = std::prev(next);
+      if (previous->second.first > section.start) {
+        fail(scan, "its points' section overlaps that of " + previous->second.second);
       }
     }
-    sections_.emplace_back(section.start, section.end, scan.element);
+    sections_.emplace(section.start, std::make_pair(section.end, scan.element));
   }
 
   [[noreturn]] void fail(const E57Scan& scan, const std::string& reason) const {
@@ -290,7 +299,8 @@ class E57CloudReader {
   CloudReadReport& report_;
   ShiftedPositions shifted_;
   PointCloud cloud_;
-  std::vector<std::tuple<std::uint64_t, std::uint64_t, std::string>> sections_;
+  // Sections read so far: start -> (end, the scan's element).
+  std::map<std::uint64_t, std::pair<std::uint64_t, std::string>> sections_;
   std::uint64_t free_records_ = 0;
 };
 
