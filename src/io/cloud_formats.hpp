@@ -58,6 +58,10 @@ PointCloud read_ply(const std::string& path, const CloudReadOptions& options,
                     CloudReadReport& report);
 PointCloud read_text_cloud(const std::string& path, const CloudReadOptions& options,
                            CloudReadReport& report);
+// Every data3D scan of an E57 file (ASTM E2807), each a station
+// (e57_cloud_reader.cpp; docs/formats.md).
+PointCloud read_e57(const std::string& path, const CloudReadOptions& options,
+                    CloudReadReport& report);
 // A room folder or an Area folder of rooms.
 PointCloud read_s3dis(const std::string& directory, const CloudReadOptions& options,
                       CloudReadReport& report);

@@ -28,7 +28,7 @@ struct CloudReader {
 const CloudReader kCloudReaders[] = {
     {".pcd", detail::read_pcd},        {".ply", detail::read_ply},
     {".txt", detail::read_text_cloud}, {".xyz", detail::read_text_cloud},
-    {".pts", detail::read_text_cloud},
+    {".pts", detail::read_text_cloud}, {".e57", detail::read_e57},
 };
 
 // The reader of the longest suffix `path` ends in (".frame.json" before ".json").

@@ -92,6 +92,15 @@ def test_real_scan_reads():
     assert np.isfinite(cloud.positions).all()
 
 
+def test_e57_reads():
+    cloud = occlusion.read_cloud(str(ROOT / "files" / "e57" / "ColouredCubeFloat.e57"))
+    assert len(cloud) == 7680  # the scan's recordCount
+    assert np.abs(cloud.positions).max() <= 0.5 + 1e-6  # its cartesianBounds
+    assert cloud.colours.shape == (7680, 3)
+    with pytest.raises(occlusion.InputError, match="page 0 .* is corrupt"):
+        occlusion.read_cloud(str(ROOT / "files" / "e57" / "bad-crc.e57"))
+
+
 def test_mesh_round_trip(tmp_path):
     vertices = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0, 0, 1]], dtype=np.float64) / 3
     faces = np.array([[0, 1, 2], [0, 2, 3], [0, 1, 4]])
