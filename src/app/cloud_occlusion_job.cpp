@@ -230,7 +230,8 @@ CloudOcclusionReport run_cloud_occlusion(const CloudOcclusionRequest& request,
   validate(request);
   const auto start = job::Clock::now();
   progress("loading", 0.0);
-  const job::LoadedCloud loaded = job::load_cloud(request.path, request.skip_bad_lines);
+  job::LoadedCloud loaded = job::load_cloud(request.path, request.skip_bad_lines);
+  job::name_classes(loaded.cloud, request.path, request.class_names_path);
   const std::vector<PlanarPolygon> openings = read_openings(request.polygon_path);
   const double load_seconds = job::seconds_since(start);
   progress.check_cancel();

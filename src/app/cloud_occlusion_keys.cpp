@@ -41,6 +41,7 @@ const Keys<CloudOcclusionRequest>& cloud_tracing_keys() {
           .implies("exterior", true)
           .doc("classes of the exterior structure"),
       skip_bad_lines_key(&R::skip_bad_lines),
+      class_names_key(&R::class_names_path),
       seed_key(&R::seed),
       threads_key(&R::threads),
   };

@@ -28,7 +28,8 @@ const Keys<EvaluateRequest>& evaluate_keys() {
            .metavar("D")
            .doc("a prediction on other points is transferred from its nearest point within D; "
                 "0: the points must be the ground truth's"),
-       skip_bad_lines_key(&R::skip_bad_lines), threads_key(&R::threads),
+       skip_bad_lines_key(&R::skip_bad_lines), class_names_key(&R::class_names_path),
+       threads_key(&R::threads),
        out_key(&R::out,
                "write GT.eval.json, .csv (per class) and .md (a table); with several scenes "
                "eval.json, eval.csv, eval.md")},

@@ -98,7 +98,8 @@ ScanReport run_scan(const ScanRequest& request, const Progress& progress) {
   validate(request);
   const auto start = job::Clock::now();
   progress("loading", 0.0);
-  const job::LoadedCloud loaded = job::load_cloud(request.path, request.skip_bad_lines);
+  job::LoadedCloud loaded = job::load_cloud(request.path, request.skip_bad_lines);
+  job::name_classes(loaded.cloud, request.path, request.class_names_path);
   const PointCloud& cloud = loaded.cloud;
   const double load_seconds = job::seconds_since(start);
   progress.check_cancel();

@@ -234,7 +234,7 @@ StudyReport run_study(const StudyRequest& request, const Progress& progress) {
   validate(request);
   const auto start = job::Clock::now();
   const StudyShard shard = parse_shard(request.shard);
-  job::StudyContext context{request, resolve_mapping(request.mapping_path, request.ignored_classes),
+  job::StudyContext context{request, resolve_mapping(request.class_mapping, request.mapping_path, request.ignored_classes),
                             read_openings(request.tracing.polygon_path),
                             (fs::path(request.out) / "runs").string(),
                             job::row_parameters(request)};
@@ -297,6 +297,7 @@ StudyReport run_study(const StudyRequest& request, const Progress& progress) {
       scene.reset();
       run_steps("loading the scene", 0.0);
       scene = job::load_cloud(request.scenes[s], request.tracing.skip_bad_lines);
+      job::name_classes(scene->cloud, request.scenes[s], request.tracing.class_names_path);
       loaded = s;
       job::check_ground_truth(request.scenes[s], scene->cloud, context.mapping);
       if (scene->dropped_nan + scene->skipped_lines > 0) {

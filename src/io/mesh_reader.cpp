@@ -9,12 +9,12 @@
 
 namespace occlusion {
 
-TriangleMesh read_mesh(const std::string& path) {
+TriangleMesh read_mesh(const std::string& path, MeshReadReport* report) {
   std::string extension = std::filesystem::path(path).extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  if (extension == ".obj") return read_obj(path);
-  if (extension == ".ply") return read_ply_mesh(path);
+  if (extension == ".obj") return read_obj(path, report);
+  if (extension == ".ply") return read_ply_mesh(path, report);
   throw InputError(path, 0,
                    "is not a mesh file this tool reads (.obj or .ply; a cloud goes to -poc)");
 }

@@ -77,6 +77,7 @@ class PlyCloudReader : public PlySink {
     cloud_.class_names = header_.class_names;
     extra_values_.assign(extra_.size(), 0.0f);
     read_ply_body(bytes_, path_, header_, *this);
+    if (float_colours_) cloud_.colours = colours_from_floats(float_rgb_, path_);
     for (std::size_t f = 0; f < extra_.size(); ++f) {
       report_.extra_fields.push_back(std::move(extra_[f]));
     }
@@ -124,10 +125,14 @@ class PlyCloudReader : public PlySink {
       }
       seen[static_cast<int>(role)] = true;
       const bool colour = role == Role::kRed || role == Role::kGreen || role == Role::kBlue;
-      if (colour && !is_integer(property.type)) {
-        throw InputError(path_, vertex.line,
-                         "colour property '" + property.name +
-                             "' is floating point; only integer colours 0..255 are read");
+      if (colour) {
+        const int kind = is_integer(property.type) ? 1 : 2;
+        if (colour_kind_ != 0 && colour_kind_ != kind) {
+          throw InputError(path_, vertex.line,
+                           "colour property '" + property.name +
+                               "' mixes integer and floating-point channels");
+        }
+        colour_kind_ = kind;
       }
     }
     for (const Role axis : {Role::kX, Role::kY, Role::kZ}) {
@@ -145,6 +150,7 @@ class PlyCloudReader : public PlySink {
                        "the vertex element has some but not all of red green blue");
     }
     has_colours_ = colours == 3;
+    float_colours_ = has_colours_ && colour_kind_ == 2;
     has_labels_ = seen[static_cast<int>(Role::kLabel)];
     has_instances_ = seen[static_cast<int>(Role::kInstance)];
 
@@ -152,7 +158,8 @@ class PlyCloudReader : public PlySink {
     // fails as truncated instead of exhausting memory first.
     const std::size_t reserve = std::min(vertex.count, bytes_.size() / 4);
     cloud_.positions.reserve(reserve);
-    if (has_colours_) cloud_.colours.reserve(reserve);
+    if (has_colours_ && !float_colours_) cloud_.colours.reserve(reserve);
+    if (float_colours_) float_rgb_.reserve(3 * reserve);
     if (has_labels_) cloud_.labels.reserve(reserve);
     if (has_instances_) cloud_.instances.reserve(reserve);
     for (ScalarField& field : extra_) field.values.reserve(reserve);
@@ -174,6 +181,11 @@ class PlyCloudReader : public PlySink {
         if (!(value >= 0 && value <= 255)) {
           return std::string(role_name(role)) + " value " + number_text(value) +
                  " is outside 0..255";
+        }
+        if (float_colours_) {
+          float_channels_[static_cast<int>(role) - static_cast<int>(Role::kRed)] =
+              static_cast<float>(value);
+          return "";
         }
         rgb_[static_cast<int>(role) - static_cast<int>(Role::kRed)] =
             static_cast<std::uint8_t>(value);
@@ -213,7 +225,11 @@ class PlyCloudReader : public PlySink {
       return;
     }
     cloud_.positions.push_back(position);
-    if (has_colours_) cloud_.colours.push_back(rgb_);
+    if (float_colours_) {
+      float_rgb_.insert(float_rgb_.end(), float_channels_, float_channels_ + 3);
+    } else if (has_colours_) {
+      cloud_.colours.push_back(rgb_);
+    }
     if (has_labels_) cloud_.labels.push_back(label_);
     if (has_instances_) cloud_.instances.push_back(instance_);
     for (std::size_t f = 0; f < extra_.size(); ++f) extra_[f].values.push_back(extra_values_[f]);
@@ -230,6 +246,10 @@ class PlyCloudReader : public PlySink {
   std::vector<std::size_t> extra_index_;  // per vertex property: its extra field, or kNone
   std::vector<ScalarField> extra_;
   bool has_colours_ = false;
+  int colour_kind_ = 0;  // of the colour properties seen: 0 none yet, 1 integer, 2 floating point
+  bool float_colours_ = false;
+  std::vector<float> float_rgb_;  // float colours, 3 per kept point, scaled once all are read
+  float float_channels_[3] = {0, 0, 0};
   bool has_labels_ = false;
   bool has_instances_ = false;
   ShiftedPositions shifted_;

@@ -44,6 +44,7 @@ struct CloudOcclusionRequest {
   bool exterior = false;  // also compute the exterior-structure variant
   std::vector<std::string> exterior_classes = {"wall", "floor", "ceiling"};
   bool skip_bad_lines = false;
+  std::string class_names_path;  // names the cloud's labels (io/class_names_file.hpp); "" = none
   // Box the pattern or grid is placed on: "robust" (per-axis quantiles, cuts
   // off stray points) or "bbox" (all points); see analysis/scene_frame.hpp.
   std::string frame = "robust";

@@ -31,6 +31,7 @@ struct ScanRequest {
   bool enable_acceleration = true;
   std::string format = "ply";  // of the written clouds: ply or pcd
   bool skip_bad_lines = false;
+  std::string class_names_path;  // names the cloud's labels (io/class_names_file.hpp); "" = none
   // Box the pattern or grid is placed on: "robust" (per-axis quantiles, cuts
   // off stray points) or "bbox" (all points); see analysis/scene_frame.hpp.
   std::string frame = "robust";

@@ -10,19 +10,21 @@
 // without it every face is in group "default". So the meshes -rgoc writes
 // (ply_mesh_writer.hpp) can be measured again with -moc.
 //
-// InputError naming the file for what the OBJ reader refuses too (an index
-// out of range, a face with fewer than 3 corners, a degenerate triangle, no
-// faces, a non-finite coordinate), with the line (ascii) or byte offset, and
-// for a PLY without a vertex element, x y z, or a face index list. An
-// extension other than .obj or .ply is an InputError saying which are read.
+// Degenerate triangles (no area) are dropped and counted in `report`, as the
+// OBJ reader does. InputError naming the file for what the OBJ reader refuses
+// too (an index out of range, a face with fewer than 3 corners, no faces or
+// none with an area, a non-finite coordinate), with the line (ascii) or byte
+// offset, and for a PLY without a vertex element, x y z, or a face index list.
+// An extension other than .obj or .ply is an InputError saying which are read.
 
 #include <string>
 
 #include "occlusion/core/mesh.hpp"
+#include "occlusion/io/mesh_read_report.hpp"
 
 namespace occlusion {
 
-TriangleMesh read_mesh(const std::string& path);
-TriangleMesh read_ply_mesh(const std::string& path);
+TriangleMesh read_mesh(const std::string& path, MeshReadReport* report = nullptr);
+TriangleMesh read_ply_mesh(const std::string& path, MeshReadReport* report = nullptr);
 
 }  // namespace occlusion
