@@ -108,8 +108,8 @@ EvaluateReport run_evaluate(const EvaluateRequest& request, const Progress& prog
     progress("loading", static_cast<double>(k) / static_cast<double>(count));
     const auto load_start = job::Clock::now();
     const job::LoadedScene loaded =
-        job::load_scene(request.ground_truth[k], request.predictions[k],
-                        request.skip_bad_lines, request.class_names_path);
+        job::load_scene(request.ground_truth[k], request.predictions[k], request.skip_bad_lines,
+                        request.class_names_path);
     report.load_seconds += job::seconds_since(load_start);
     progress.check_cancel();
 

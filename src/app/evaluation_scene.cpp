@@ -6,12 +6,12 @@
 #include <set>
 
 #include "evaluation_support.hpp"
-#include "occlusion/core/nyu40_classes.hpp"
 #include "job_support.hpp"
 #include "occlusion/analysis/label_transfer.hpp"
 #include "occlusion/app/errors.hpp"
 #include "occlusion/app/evaluate_job.hpp"
 #include "occlusion/core/exact_match.hpp"
+#include "occlusion/core/nyu40_classes.hpp"
 #include "occlusion/io/cloud_io.hpp"
 #include "occlusion/io/input_error.hpp"
 #include "occlusion/io/label_file.hpp"

@@ -75,10 +75,11 @@ MeshOcclusionReport run_mesh_occlusion(const MeshOcclusionRequest& request,
   report.degenerate_faces_skipped = read_report.degenerate_faces;
   if (read_report.degenerate_faces > 0) {
     const bool one = read_report.degenerate_faces == 1;
-    report.warnings.push_back(request.path + ": " + std::to_string(read_report.degenerate_faces) +
-                              (one ? " degenerate face (zero area) was" : " degenerate faces (zero area) were") +
-                              " skipped: no area to measure, no ray hits them (first, " +
-                              read_report.first_degenerate + ")");
+    report.warnings.push_back(
+        request.path + ": " + std::to_string(read_report.degenerate_faces) +
+        (one ? " degenerate face (zero area) was" : " degenerate faces (zero area) were") +
+        " skipped: no area to measure, no ray hits them (first, " + read_report.first_degenerate +
+        ")");
   }
 
   if (!request.out.empty()) {

@@ -234,10 +234,11 @@ StudyReport run_study(const StudyRequest& request, const Progress& progress) {
   validate(request);
   const auto start = job::Clock::now();
   const StudyShard shard = parse_shard(request.shard);
-  job::StudyContext context{request, resolve_mapping(request.class_mapping, request.mapping_path, request.ignored_classes),
-                            read_openings(request.tracing.polygon_path),
-                            (fs::path(request.out) / "runs").string(),
-                            job::row_parameters(request)};
+  job::StudyContext context{
+      request,
+      resolve_mapping(request.class_mapping, request.mapping_path, request.ignored_classes),
+      read_openings(request.tracing.polygon_path), (fs::path(request.out) / "runs").string(),
+      job::row_parameters(request)};
   ensure_directory(context.runs_dir);
   const std::string csv_path = (fs::path(request.out) / "study.csv").string();
   StudyReport report;

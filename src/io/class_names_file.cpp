@@ -54,15 +54,15 @@ void apply_class_names_file(PointCloud& cloud, const std::string& cloud_name,
     if (cloud.class_names == names) return;
     throw InputError(cloud_name, 0,
                      "names its own " + std::to_string(cloud.class_names.size()) +
-                         " classes, which differ from the class_names file " + names_path +
-                         "'s " + std::to_string(names.size()) +
+                         " classes, which differ from the class_names file " + names_path + "'s " +
+                         std::to_string(names.size()) +
                          " (leave the file out to use the cloud's names)");
   }
   const std::int32_t highest = *std::max_element(cloud.labels.begin(), cloud.labels.end());
   if (highest >= static_cast<std::int32_t>(names.size())) {
     throw InputError(names_path, 0,
-                     "names labels 0.." + std::to_string(names.size() - 1) + ", but " +
-                         cloud_name + " has label " + std::to_string(highest));
+                     "names labels 0.." + std::to_string(names.size() - 1) + ", but " + cloud_name +
+                         " has label " + std::to_string(highest));
   }
   cloud.class_names = std::move(names);
 }

@@ -11,8 +11,10 @@
 #include <string_view>
 #include <vector>
 
+#include "occlusion/core/mesh.hpp"
 #include "occlusion/core/point_cloud.hpp"
 #include "occlusion/io/cloud_io.hpp"
+#include "occlusion/io/mesh_read_report.hpp"
 
 namespace occlusion::detail {
 
@@ -80,6 +82,11 @@ std::optional<ScanNetScene> scannet_scene(const std::string& path);
 // positions) other than the mesh's.
 PointCloud read_scannet(const ScanNetScene& scene, const CloudReadOptions& options,
                         CloudReadReport& report);
+// The scene's mesh (the labels file's own faces when the mesh is missing),
+// each face in the group of its class: the label at least two of its corners
+// share (labelled as read_scannet labels them), else "mixed". Degenerate faces
+// are skipped and counted as read_mesh does.
+TriangleMesh read_scannet_mesh(const ScanNetScene& scene, MeshReadReport* report);
 
 // Parses `x y z [r g b] [label]` text. With required_columns, every line must
 // have exactly that many (S3DIS: 6); otherwise the first data line decides.

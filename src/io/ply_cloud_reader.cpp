@@ -128,9 +128,9 @@ class PlyCloudReader : public PlySink {
       if (colour) {
         const int kind = is_integer(property.type) ? 1 : 2;
         if (colour_kind_ != 0 && colour_kind_ != kind) {
-          throw InputError(path_, vertex.line,
-                           "colour property '" + property.name +
-                               "' mixes integer and floating-point channels");
+          throw InputError(
+              path_, vertex.line,
+              "colour property '" + property.name + "' mixes integer and floating-point channels");
         }
         colour_kind_ = kind;
       }

@@ -3,11 +3,13 @@
 // names ScanNet's labels are ids of (core/nyu40_classes.hpp).
 
 #include <filesystem>
+#include <map>
 #include <string_view>
 
 #include "cloud_formats.hpp"
 #include "occlusion/core/nyu40_classes.hpp"
 #include "occlusion/io/input_error.hpp"
+#include "occlusion/io/mesh_reader.hpp"
 
 namespace occlusion::detail {
 namespace {
@@ -26,8 +28,8 @@ std::string existing_file(const fs::path& path) {
 }
 
 std::string point_text(const Eigen::Vector3d& p) {
-  return "(" + std::to_string(p.x()) + ", " + std::to_string(p.y()) + ", " +
-         std::to_string(p.z()) + ")";
+  return "(" + std::to_string(p.x()) + ", " + std::to_string(p.y()) + ", " + std::to_string(p.z()) +
+         ")";
 }
 
 // NYU40 names for a labels file that does not name its classes; every label
@@ -89,6 +91,7 @@ PointCloud read_scannet(const ScanNetScene& scene, const CloudReadOptions& optio
     return cloud;
   }
   PointCloud cloud = read_ply(scene.mesh, options, report);
+  if (scene.labels.empty()) return cloud;  // a scene not annotated (ScanNet's test split)
   CloudReadOptions same_frame = options;
   same_frame.shift = cloud.shift;
   CloudReadReport labels_report;  // its alpha and other properties are the mesh's again
@@ -108,8 +111,8 @@ PointCloud read_scannet(const ScanNetScene& scene, const CloudReadOptions& optio
     if (labelled.positions[i] != cloud.positions[i]) {
       throw InputError(scene.labels, 0,
                        "vertex " + std::to_string(i) + " lies at " +
-                           point_text(labelled.original_position(i)) + ", the mesh " +
-                           scene.mesh + "'s at " + point_text(cloud.original_position(i)) +
+                           point_text(labelled.original_position(i)) + ", the mesh " + scene.mesh +
+                           "'s at " + point_text(cloud.original_position(i)) +
                            ": the labels are not for this mesh's vertices");
     }
   }
@@ -117,6 +120,33 @@ PointCloud read_scannet(const ScanNetScene& scene, const CloudReadOptions& optio
   cloud.class_names = std::move(labelled.class_names);
   name_nyu40(cloud, scene.labels);
   return cloud;
+}
+
+TriangleMesh read_scannet_mesh(const ScanNetScene& scene, MeshReadReport* report) {
+  const std::string& mesh_path = scene.mesh.empty() ? scene.labels : scene.mesh;
+  TriangleMesh mesh = read_ply_mesh(mesh_path, report);
+  if (scene.labels.empty()) return mesh;
+  CloudReadReport ignored;
+  const PointCloud labelled = read_scannet(scene, {}, ignored);
+  if (labelled.size() != mesh.vertices.size()) {
+    throw InputError(scene.labels, 0,
+                     "labels " + std::to_string(labelled.size()) + " vertices, but the mesh " +
+                         mesh_path + " has " + std::to_string(mesh.vertices.size()));
+  }
+  std::map<std::string, std::uint32_t> group_of;
+  mesh.group_names.clear();
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+    const auto& [a, b, c] = mesh.faces[f];
+    const std::int32_t la = labelled.labels[a], lb = labelled.labels[b], lc = labelled.labels[c];
+    const std::int32_t shared = (la == lb || la == lc) ? la : lb == lc ? lb : -1;
+    const std::string name =
+        shared < 0 ? "mixed" : labelled.class_names[static_cast<std::size_t>(shared)];
+    const auto [entry, inserted] =
+        group_of.try_emplace(name, static_cast<std::uint32_t>(mesh.group_names.size()));
+    if (inserted) mesh.group_names.push_back(name);
+    mesh.face_group[f] = entry->second;
+  }
+  return mesh;
 }
 
 }  // namespace occlusion::detail

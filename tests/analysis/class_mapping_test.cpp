@@ -81,11 +81,11 @@ TEST(ClassMapping, Scannet20IsTheBenchmarksValidClassIds) {
   const ClassMapping mapping = ClassMapping::scannet20();
   // evaluate_semantic_label.py: VALID_CLASS_IDS and CLASS_LABELS.
   const std::vector<std::pair<std::int32_t, std::string>> expected = {
-      {1, "wall"},          {2, "floor"},     {3, "cabinet"},      {4, "bed"},
-      {5, "chair"},         {6, "sofa"},      {7, "table"},        {8, "door"},
-      {9, "window"},        {10, "bookshelf"}, {11, "picture"},    {12, "counter"},
-      {14, "desk"},         {16, "curtain"},  {24, "refrigerator"}, {28, "shower curtain"},
-      {33, "toilet"},       {34, "sink"},     {36, "bathtub"},     {39, "otherfurniture"}};
+      {1, "wall"},    {2, "floor"},      {3, "cabinet"},       {4, "bed"},
+      {5, "chair"},   {6, "sofa"},       {7, "table"},         {8, "door"},
+      {9, "window"},  {10, "bookshelf"}, {11, "picture"},      {12, "counter"},
+      {14, "desk"},   {16, "curtain"},   {24, "refrigerator"}, {28, "shower curtain"},
+      {33, "toilet"}, {34, "sink"},      {36, "bathtub"},      {39, "otherfurniture"}};
   ASSERT_EQ(mapping.evaluation_classes().size(), expected.size());
   for (std::size_t i = 0; i < expected.size(); ++i) {
     EXPECT_EQ(mapping.evaluation_classes()[i].id, expected[i].first);

@@ -43,7 +43,8 @@ TEST(MeshDegenerateFaces, SkippedFacesChangeNoFigureAndAreReported) {
   const std::string interleaved = dir.file("interleaved.obj");
   testing::write_text(clean, std::string(kVertices) + kRoom + kBox);
   testing::write_text(appended, std::string(kVertices) + kRoom + kBox + kDegenerate);
-  testing::write_text(interleaved, std::string(kVertices) + kDegenerate + kRoom + "f 2 2 3\n" + kBox);
+  testing::write_text(interleaved,
+                      std::string(kVertices) + kDegenerate + kRoom + "f 2 2 3\n" + kBox);
 
   const MeshOcclusionReport reference = measure(clean);
   EXPECT_EQ(reference.result.faces, 24u);

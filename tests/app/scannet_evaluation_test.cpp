@@ -110,8 +110,7 @@ TEST(ScanNetEvaluation, TheSeedTableSaysToUseScannet20) {
     run_evaluate(request);
     ADD_FAILURE() << "table 3.1 cannot map NYU40 classes";
   } catch (const UsageError& e) {
-    EXPECT_NE(std::string(e.what()).find("class_mapping scannet20"), std::string::npos)
-        << e.what();
+    EXPECT_NE(std::string(e.what()).find("class_mapping scannet20"), std::string::npos) << e.what();
   }
 }
 

@@ -14,7 +14,9 @@ namespace occlusion {
 namespace {
 
 TEST(ClassNamesFile, LineKNamesLabelK) {
-  EXPECT_EQ(parse_class_names("\xEF\xBB\xBF" "ceiling\r\n  shower curtain \r\nwall\n\n\n", "n.txt"),
+  EXPECT_EQ(parse_class_names("\xEF\xBB\xBF"
+                              "ceiling\r\n  shower curtain \r\nwall\n\n\n",
+                              "n.txt"),
             (std::vector<std::string>{"ceiling", "shower curtain", "wall"}));
   EXPECT_EQ(parse_class_names("a\rb", "n.txt"), (std::vector<std::string>{"a", "b"}));
 }
@@ -22,8 +24,8 @@ TEST(ClassNamesFile, LineKNamesLabelK) {
 TEST(ClassNamesFile, WhatWouldShiftOrRepeatNamesIsRefused) {
   testing::expect_input_error([] { parse_class_names("floor\n\nwall\n", "n.txt"); }, "n.txt", 2,
                               "blank line");
-  testing::expect_input_error([] { parse_class_names("floor\nwall\nfloor\n", "n.txt"); },
-                              "n.txt", 3, "'floor' is named twice (first on line 1)");
+  testing::expect_input_error([] { parse_class_names("floor\nwall\nfloor\n", "n.txt"); }, "n.txt",
+                              3, "'floor' is named twice (first on line 1)");
   testing::expect_input_error([] { parse_class_names(" \n\n", "n.txt"); }, "n.txt", 0,
                               "no class names");
 }
@@ -40,8 +42,9 @@ TEST(ClassNamesFile, NamesACloudsBareLabels) {
   // The same names again are fine; other names contradict the cloud's.
   apply_class_names_file(cloud, "c.ply", dir.file("names.txt"));
   testing::write_text(dir.file("other.txt"), "ground\nroof\ntree\n");
-  testing::expect_input_error([&] { apply_class_names_file(cloud, "c.ply", dir.file("other.txt")); },
-                              "c.ply", 0, "differ from the class_names file");
+  testing::expect_input_error(
+      [&] { apply_class_names_file(cloud, "c.ply", dir.file("other.txt")); }, "c.ply", 0,
+      "differ from the class_names file");
 }
 
 TEST(ClassNamesFile, ALabelWithoutANameOrACloudWithoutLabelsIsRefused) {
@@ -50,11 +53,13 @@ TEST(ClassNamesFile, ALabelWithoutANameOrACloudWithoutLabelsIsRefused) {
   PointCloud cloud;
   cloud.positions = {{0, 0, 0}, {1, 0, 0}};
   cloud.labels = {0, 5};
-  testing::expect_input_error([&] { apply_class_names_file(cloud, "c.ply", dir.file("names.txt")); },
-                              "names.txt", 0, "names labels 0..1, but c.ply has label 5");
+  testing::expect_input_error(
+      [&] { apply_class_names_file(cloud, "c.ply", dir.file("names.txt")); }, "names.txt", 0,
+      "names labels 0..1, but c.ply has label 5");
   cloud.labels.clear();
-  testing::expect_input_error([&] { apply_class_names_file(cloud, "c.ply", dir.file("names.txt")); },
-                              "c.ply", 0, "has no labels");
+  testing::expect_input_error(
+      [&] { apply_class_names_file(cloud, "c.ply", dir.file("names.txt")); }, "c.ply", 0,
+      "has no labels");
 }
 
 }  // namespace

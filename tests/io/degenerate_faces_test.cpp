@@ -40,9 +40,8 @@ TEST(DegenerateFaces, CollinearCoincidentAndSliverTrianglesAreSkipped) {
 
 TEST(DegenerateFaces, AGroupLeftWithoutFacesDisappears) {
   MeshReadReport report;
-  const TriangleMesh mesh =
-      parse_obj(std::string(kTriangle) + "g a\nf 1 2 3\ng b\nf 1 1 2\ng c\nf 3 2 1\n", "t.obj",
-                &report);
+  const TriangleMesh mesh = parse_obj(
+      std::string(kTriangle) + "g a\nf 1 2 3\ng b\nf 1 1 2\ng c\nf 3 2 1\n", "t.obj", &report);
   ASSERT_EQ(mesh.face_count(), 2u);
   EXPECT_EQ(mesh.group_names, (std::vector<std::string>{"a", "c"}));
   EXPECT_EQ(mesh.face_group, (std::vector<std::uint32_t>{0, 1}));

@@ -27,7 +27,8 @@ TEST(PlyFloatColours, AveragedZeroTo255AreRounded) {
   testing::ScratchDirectory dir;
   const std::string path = dir.file("averaged.ply");
   // 127.5 rounds half away from zero; 0.4 is below 1 but 254.6 says the scale is 0..255.
-  testing::write_text(path, float_colour_ply("float", "0 0 0 127.5 0.4 254.6\n1 0 0 1 2 3.49\n", 2));
+  testing::write_text(path,
+                      float_colour_ply("float", "0 0 0 127.5 0.4 254.6\n1 0 0 1 2 3.49\n", 2));
   const PointCloud cloud = read_cloud(path);
   ASSERT_EQ(cloud.colours.size(), 2u);
   EXPECT_EQ(cloud.colours[0], (Rgb{128, 0, 255}));

@@ -11,6 +11,7 @@
 #include "io/scratch_directory.hpp"
 #include "occlusion/core/nyu40_classes.hpp"
 #include "occlusion/io/cloud_io.hpp"
+#include "occlusion/io/mesh_reader.hpp"
 #include "support/scannet_scene.hpp"
 
 namespace occlusion {
@@ -23,7 +24,8 @@ using Rgb = std::array<std::uint8_t, 3>;
 // unannotated (0) and shower curtain (28).
 testing::ScanNetScene small_scene() {
   testing::ScanNetScene scene;
-  scene.positions = {{0.5f, 1.25f, 0.0f}, {3.0f, 0.0f, 2.5f}, {0.0f, 2.0f, 0.1f}, {1.0f, 1.0f, 1.0f}};
+  scene.positions = {
+      {0.5f, 1.25f, 0.0f}, {3.0f, 0.0f, 2.5f}, {0.0f, 2.0f, 0.1f}, {1.0f, 1.0f, 1.0f}};
   scene.colours = {{10, 20, 30}, {40, 50, 60}, {70, 80, 90}, {100, 110, 120}};
   scene.labels = {2, 1, 0, 28};
   scene.faces = {{0, 1, 2}, {0, 2, 3}};
@@ -127,8 +129,33 @@ TEST(ScanNetReader, AFolderWithoutTheSceneFilesIsNoScanNetScene) {
   fs::create_directories(dir.path() / "scene0006_00");
   testing::write_text(dir.file("scene0006_00/scene0006_00_vh_clean.ply"), "not read");
   // Read as an S3DIS folder, which it is not either.
-  testing::expect_input_error([&] { read_cloud(dir.file("scene0006_00")); }, "scene0006_00", 0,
-                              "");
+  testing::expect_input_error([&] { read_cloud(dir.file("scene0006_00")); }, "scene0006_00", 0, "");
+}
+
+TEST(ScanNetReader, TheMeshGroupsItsFacesByClass) {
+  testing::ScratchDirectory dir;
+  testing::ScanNetScene scene = small_scene();
+  scene.positions.push_back({2.0f, 2.0f, 0.0f});
+  scene.colours.push_back({1, 2, 3});
+  scene.labels.push_back(2);
+  // Labels 2 1 0 28 2: faces (0 1 4) floor by two corners, (0 2 3) mixed,
+  // (1 3 3) degenerate, (4 0 1) floor.
+  scene.faces = {{0, 1, 4}, {0, 2, 3}, {1, 3, 3}, {4, 0, 1}};
+  const fs::path folder = testing::write_scannet_scene(dir.path(), "scene0008_00", scene);
+  MeshReadReport report;
+  const TriangleMesh mesh = read_mesh(folder.string(), &report);
+  ASSERT_EQ(mesh.face_count(), 3u);
+  EXPECT_EQ(report.degenerate_faces, 1u);
+  EXPECT_EQ(mesh.group_names, (std::vector<std::string>{"floor", "mixed"}));
+  EXPECT_EQ(mesh.face_group, (std::vector<std::uint32_t>{0, 1, 0}));
+  mesh.validate();
+  // The mesh file with its labels beside it is the same scene.
+  EXPECT_EQ(read_mesh((folder / "scene0008_00_vh_clean_2.ply").string()).group_names,
+            mesh.group_names);
+  // Without labels it is a plain PLY mesh.
+  fs::remove(folder / "scene0008_00_vh_clean_2.labels.ply");
+  EXPECT_EQ(read_mesh((folder / "scene0008_00_vh_clean_2.ply").string()).group_names,
+            (std::vector<std::string>{"default"}));
 }
 
 }  // namespace

@@ -24,11 +24,11 @@
 namespace occlusion {
 
 struct EvaluateRequest {
-  std::vector<std::string> ground_truth;     // labelled clouds with class names, one per scene
-  std::vector<std::string> predictions;      // same count and order: clouds or label files
+  std::vector<std::string> ground_truth;  // labelled clouds with class names, one per scene
+  std::vector<std::string> predictions;   // same count and order: clouds or label files
   std::string class_mapping = ClassMapping::kDefaultBuiltin;  // a built-in: table3.1 or scannet20
-  std::string mapping_path;                  // empty: class_mapping as it is
-  std::vector<std::string> ignored_classes;  // skipped on top of the mapping's
+  std::string mapping_path;                                   // empty: class_mapping as it is
+  std::vector<std::string> ignored_classes;                   // skipped on top of the mapping's
   double max_distance = 0.05;  // for label transfer; 0: points must be the ground truth's
   // Which classes mIoU and mean class accuracy average over (confusion_matrix.hpp).
   MeanOver mean_over = MeanOver::support;

@@ -83,8 +83,9 @@ KeyBuilder<R> class_names_key(std::string R::*field) {
   return key("class_names", field)
       .path()
       .metavar("FILE")
-      .doc("names of the labels of a cloud that does not name them: one name per line, line k "
-           "(from 0) naming label k");
+      .doc(
+          "names of the labels of a cloud that does not name them: one name per line, line k "
+          "(from 0) naming label k");
 }
 
 template <class R>

@@ -70,7 +70,7 @@ struct StudyRequest {
   // marked failed; 0: no limit.
   double segmenter_timeout = 0.0;
   RegionGrowingOptions estimation = default_study_estimation();  // the baseline's planes
-  std::string class_mapping = ClassMapping::kDefaultBuiltin;  // as -eval: table3.1 or scannet20
+  std::string class_mapping = ClassMapping::kDefaultBuiltin;     // as -eval: table3.1 or scannet20
   std::string mapping_path;  // as -eval; "" = class_mapping as it is
   std::vector<std::string> ignored_classes;
   MeanOver mean_over = MeanOver::support;  // as -eval: which classes mIoU averages

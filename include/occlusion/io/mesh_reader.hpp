@@ -1,5 +1,8 @@
 #pragma once
-// Triangle meshes from disk, by extension: `.obj` (obj_reader.hpp) or `.ply`.
+// Triangle meshes from disk, by extension: `.obj` (obj_reader.hpp) or `.ply`;
+// or a ScanNet scene (docs/formats.md: a scene folder, its labels file, or its
+// mesh with the labels file beside it), whose faces are grouped by the NYU40
+// class at least two of their corners share ("mixed" when none is shared).
 //
 // PLY (ascii or binary, either byte order): element `vertex` with float or
 // double x y z (other vertex properties ignored), element `face` with an
