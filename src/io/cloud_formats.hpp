@@ -84,8 +84,8 @@ PointCloud read_scannet(const ScanNetScene& scene, const CloudReadOptions& optio
                         CloudReadReport& report);
 // The scene's mesh (the labels file's own faces when the mesh is missing),
 // each face in the group of its class: the label at least two of its corners
-// share (labelled as read_scannet labels them), else "mixed". Degenerate faces
-// are skipped and counted as read_mesh does.
+// share (labelled as read_scannet labels them; "unlabelled" for -1), else
+// "mixed". Degenerate faces are skipped and counted as read_mesh does.
 TriangleMesh read_scannet_mesh(const ScanNetScene& scene, MeshReadReport* report);
 
 // Parses `x y z [r g b] [label]` text. With required_columns, every line must

@@ -138,9 +138,11 @@ TriangleMesh read_scannet_mesh(const ScanNetScene& scene, MeshReadReport* report
   for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
     const auto& [a, b, c] = mesh.faces[f];
     const std::int32_t la = labelled.labels[a], lb = labelled.labels[b], lc = labelled.labels[c];
-    const std::int32_t shared = (la == lb || la == lc) ? la : lb == lc ? lb : -1;
-    const std::string name =
-        shared < 0 ? "mixed" : labelled.class_names[static_cast<std::size_t>(shared)];
+    std::string name = "mixed";
+    if (la == lb || la == lc || lb == lc) {
+      const std::int32_t shared = (la == lb || la == lc) ? la : lb;
+      name = shared < 0 ? "unlabelled" : labelled.class_names[static_cast<std::size_t>(shared)];
+    }
     const auto [entry, inserted] =
         group_of.try_emplace(name, static_cast<std::uint32_t>(mesh.group_names.size()));
     if (inserted) mesh.group_names.push_back(name);
