@@ -70,7 +70,7 @@ TEST(ScanNetJobs, ScanAndCloudOcclusionNameTheNyu40Classes) {
   const CloudOcclusionReport closed = run_cloud_occlusion(occlusion);
   EXPECT_LE(closed.result.occlusion_level, 0.02);
   ASSERT_TRUE(closed.exterior.has_value());
-  EXPECT_EQ(closed.exterior->exterior_points, seen.result.points);
+  EXPECT_EQ(closed.exterior->exterior_points, seen.result.visible_count.size());
 }
 
 TEST(ScanNetJobs, TheStudyScoresAScanNetSceneWithScannet20) {
@@ -86,9 +86,19 @@ TEST(ScanNetJobs, TheStudyScoresAScanNetSceneWithScannet20) {
   const StudyReport report = run_study(request);
   ASSERT_EQ(report.table.rows.size(), 1u);
   EXPECT_EQ(report.runs_failed, 0u);
-  // The baseline finds the floor and the walls; the ceiling is not scored.
-  EXPECT_GT(std::stod(report.table.rows[0].at(report.table.column("iou_floor"))), 0.9);
-  EXPECT_GT(std::stod(report.table.rows[0].at(report.table.column("iou_wall"))), 0.9);
+  // Scored over the 20 benchmark classes: the baseline finds most of the
+  // floor and the walls (it gives the edges between them to one side), and
+  // the ceiling is not scored.
+  const auto cell = [&](const std::string& column) {
+    return report.table.rows[0].at(report.table.column(column));
+  };
+  std::size_t scored = 0;
+  for (const std::string& column : report.table.columns) scored += column.rfind("iou_", 0) == 0;
+  EXPECT_EQ(scored, 20u);
+  EXPECT_EQ(cell("status"), "ok");
+  EXPECT_GT(std::stod(cell("iou_floor")), 0.8);
+  EXPECT_GT(std::stod(cell("iou_wall")), 0.8);
+  EXPECT_EQ(cell("iou_bed"), "");  // no ground truth, no prediction
   EXPECT_EQ(report.table.column("iou_ceiling"), report.table.columns.size());
 }
 
