@@ -12,7 +12,7 @@ const Keys<EvaluateRequest>& evaluate_keys() {
            .path()
            .metavar("GT")
            .doc("labelled clouds with class names (PLY/PCD written by occlusion, S3DIS rooms or "
-                "Areas), one per scene"),
+                "Areas, ScanNet scenes, or any labelled cloud with class_names), one per scene"),
        key("predictions", &R::predictions)
            .path()
            .cli("--prediction")

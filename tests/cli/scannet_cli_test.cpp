@@ -16,12 +16,14 @@ using testing::run_cli;
 using testing::run_json;
 using testing::TempDir;
 
-// Two triangles on the floor (NYU40 2) and one on a wall (1), far apart.
+// Two triangles on the floor (NYU40 2) and one on a wall (1), far apart, and
+// an unannotated vertex (0) in no face.
 testing::ScanNetScene two_classes() {
   testing::ScanNetScene scene;
-  scene.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}, {3, 0, 0}, {3, 1, 0}, {3, 0, 1}};
+  scene.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0},
+                     {3, 0, 0}, {3, 1, 0}, {3, 0, 1}, {9, 9, 9}};
   scene.colours.assign(scene.positions.size(), {90, 90, 90});
-  scene.labels = {2, 2, 2, 2, 1, 1, 1};
+  scene.labels = {2, 2, 2, 2, 1, 1, 1, 0};
   scene.faces = {{0, 1, 2}, {1, 3, 2}, {4, 5, 6}};
   return scene;
 }
@@ -30,11 +32,12 @@ TEST(ScanNetCli, EvalTakesTheSceneAndTheBuiltInMapping) {
   const TempDir dir;
   const std::string scene =
       testing::write_scannet_scene(dir.path(), "scene0100_00", two_classes()).string();
-  dir.write("pred.txt", "2\n2\n1\n2\n1\n1\n0\n");
+  dir.write("pred.txt", "2\n2\n1\n2\n1\n1\n0\n1\n");
   const Json::Value json = run_json("-eval '" + scene + "' --prediction '" + dir.file("pred.txt") +
                                     "' --class-mapping scannet20");
   EXPECT_EQ(json["mapping"]["builtin"].asString(), "scannet20");
-  // floor: tp 3, fp 0, fn 1; wall: tp 2, fp 1, fn 1 (0 is a miss) -> (3/4 + 2/4) / 2.
+  // floor: tp 3, fp 0, fn 1; wall: tp 2, fp 1, fn 1 (0 is a miss; the
+  // unannotated point predicted wall is skipped) -> (3/4 + 2/4) / 2.
   EXPECT_DOUBLE_EQ(json["miou"].asDouble(), (3.0 / 4 + 2.0 / 4) / 2);
 
   const CliRun seed =
