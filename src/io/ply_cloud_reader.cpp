@@ -126,13 +126,14 @@ class PlyCloudReader : public PlySink {
       seen[static_cast<int>(role)] = true;
       const bool colour = role == Role::kRed || role == Role::kGreen || role == Role::kBlue;
       if (colour) {
-        const int kind = is_integer(property.type) ? 1 : 2;
-        if (colour_kind_ != 0 && colour_kind_ != kind) {
+        const ColourType kind =
+            is_integer(property.type) ? ColourType::kInteger : ColourType::kFloat;
+        if (colour_type_ != ColourType::kNone && colour_type_ != kind) {
           throw InputError(
               path_, vertex.line,
               "colour property '" + property.name + "' mixes integer and floating-point channels");
         }
-        colour_kind_ = kind;
+        colour_type_ = kind;
       }
     }
     for (const Role axis : {Role::kX, Role::kY, Role::kZ}) {
@@ -150,7 +151,7 @@ class PlyCloudReader : public PlySink {
                        "the vertex element has some but not all of red green blue");
     }
     has_colours_ = colours == 3;
-    float_colours_ = has_colours_ && colour_kind_ == 2;
+    float_colours_ = has_colours_ && colour_type_ == ColourType::kFloat;
     has_labels_ = seen[static_cast<int>(Role::kLabel)];
     has_instances_ = seen[static_cast<int>(Role::kInstance)];
 
@@ -246,7 +247,8 @@ class PlyCloudReader : public PlySink {
   std::vector<std::size_t> extra_index_;  // per vertex property: its extra field, or kNone
   std::vector<ScalarField> extra_;
   bool has_colours_ = false;
-  int colour_kind_ = 0;  // of the colour properties seen: 0 none yet, 1 integer, 2 floating point
+  enum class ColourType { kNone, kInteger, kFloat };
+  ColourType colour_type_ = ColourType::kNone;  // of the colour properties seen so far
   bool float_colours_ = false;
   std::vector<float> float_rgb_;  // float colours, 3 per kept point, scaled once all are read
   float float_channels_[3] = {0, 0, 0};
