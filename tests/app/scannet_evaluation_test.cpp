@@ -114,6 +114,23 @@ TEST(ScanNetEvaluation, TheSeedTableSaysToUseScannet20) {
   }
 }
 
+TEST(ScanNetEvaluation, TheSeedTableRefusesNyu40EvenWhenItKnowsEveryName) {
+  testing::ScratchDirectory dir;
+  testing::ScanNetScene scene;
+  scene.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  scene.colours.assign(3, {1, 2, 3});
+  scene.labels = {1, 2, 2};  // wall and floor: names table 3.1 has too, with other ids
+  scene.faces = {{0, 1, 2}};
+  const fs::path folder = testing::write_scannet_scene(dir.path(), "scene0012_00", scene);
+  testing::write_text(dir.file("pred.txt"), "1\n2\n2\n");
+  EvaluateRequest request;
+  request.ground_truth = {folder.string()};
+  request.predictions = {dir.file("pred.txt")};
+  EXPECT_THROW(run_evaluate(request), UsageError);
+  request.class_mapping = "scannet20";
+  EXPECT_DOUBLE_EQ(*run_evaluate(request).metrics.miou, 1.0);
+}
+
 TEST(ScanNetEvaluation, AMappingFileWithoutClassesNarrowsScannet20) {
   testing::ScratchDirectory dir;
   const fs::path scene = write_scene(dir.path());
