@@ -1,6 +1,8 @@
 #include "job_support.hpp"
 
 #include <algorithm>
+#include "occlusion/io/class_names_file.hpp"
+
 #include <cmath>
 #include <filesystem>
 #include <sstream>
@@ -256,6 +258,10 @@ LoadedCloud load_cloud(const std::string& path, bool skip_bad_lines,
   loaded.unverified_order = report.unverified_order;
   loaded.annotation_order = std::move(report.annotation_order);
   return loaded;
+}
+
+void name_classes(PointCloud& cloud, const std::string& path, const std::string& class_names_path) {
+  if (!class_names_path.empty()) apply_class_names_file(cloud, path, class_names_path);
 }
 
 }  // namespace occlusion::job

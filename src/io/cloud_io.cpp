@@ -54,6 +54,9 @@ PointCloud read_by_kind(const std::string& path, const CloudReadOptions& options
   std::error_code status;
   const auto kind = std::filesystem::status(path, status);
   if (!std::filesystem::exists(kind)) throw InputError(path, 0, "no such file or directory");
+  if (const auto scene = detail::scannet_scene(path)) {
+    return detail::read_scannet(*scene, options, report);
+  }
   if (std::filesystem::is_directory(kind)) return detail::read_s3dis(path, options, report);
   if (const CloudReader* reader = reader_for(path)) return reader->read(path, options, report);
   throw InputError(path, 0,

@@ -120,6 +120,33 @@ def test_mesh_round_trip(tmp_path):
         occlusion.write_mesh_ply(str(ply), mesh.vertices, mesh.faces, [0.0, 0.5])
 
 
+def test_degenerate_faces_are_skipped_and_counted(tmp_path):
+    path = tmp_path / "d.obj"
+    path.write_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 2 0 0\nf 1 2 3\nf 1 2 4\nf 3 3 1\n")
+    mesh = occlusion.read_mesh(str(path))
+    assert len(mesh) == 1 and mesh.degenerate_faces == 2
+
+
+def test_scannet_scene_reads_with_nyu40_names(tmp_path):
+    header = (
+        "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+        "property uchar red\nproperty uchar green\nproperty uchar blue\n{}element face 1\n"
+        "property list uchar int vertex_indices\nend_header\n"
+    )
+    scene = tmp_path / "scene0000_00"
+    scene.mkdir()
+    (scene / "scene0000_00_vh_clean_2.ply").write_text(
+        header.format("") + "0 0 0 10 20 30\n1 0 0 40 50 60\n0 1 0 70 80 90\n3 0 1 2\n"
+    )
+    (scene / "scene0000_00_vh_clean_2.labels.ply").write_text(
+        header.format("property ushort label\n") + "0 0 0 1 1 1 2\n1 0 0 1 1 1 1\n0 1 0 1 1 1 0\n3 0 1 2\n"
+    )
+    cloud = occlusion.read_cloud(str(scene))
+    np.testing.assert_array_equal(cloud.labels, [2, 1, 0])
+    np.testing.assert_array_equal(cloud.colours[1], [40, 50, 60])
+    assert cloud.class_names[:3] == ["unannotated", "wall", "floor"] and len(cloud.class_names) == 41
+
+
 def test_cornell_box_reads():
     mesh = occlusion.read_mesh(str(ROOT / "files" / "cornell_box" / "CornellBox-Original.obj"))
     assert mesh.faces.shape[1] == 3 and len(mesh.group_names) > 1
