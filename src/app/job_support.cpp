@@ -1,8 +1,6 @@
 #include "job_support.hpp"
 
 #include <algorithm>
-#include "occlusion/io/class_names_file.hpp"
-
 #include <cmath>
 #include <filesystem>
 #include <sstream>
@@ -11,6 +9,7 @@
 #include "occlusion/app/errors.hpp"
 #include "occlusion/app/json_output.hpp"
 #include "occlusion/io/atomic_file.hpp"
+#include "occlusion/io/class_names_file.hpp"
 #include "occlusion/io/cloud_io.hpp"
 #include "occlusion/io/input_error.hpp"
 
