@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "occlusion/core/nyu40_classes.hpp"
+
 namespace occlusion {
 
 namespace {
@@ -65,6 +67,32 @@ ClassMapping ClassMapping::seed_table() {
                        {"clutter", 25},
                        {"column", 26}},
                       {{1, "floor+ceiling"}});
+}
+
+ClassMapping ClassMapping::scannet20() {
+  const std::vector<std::string>& nyu40 = nyu40_class_names();
+  std::map<std::string, std::int32_t> ids;
+  std::map<std::int32_t, std::string> names;
+  for (const ScanNetBenchmarkClass& c : scannet20_classes()) {
+    ids[nyu40.at(static_cast<std::size_t>(c.nyu40_id))] = c.nyu40_id;
+    names[c.nyu40_id] = c.name;
+  }
+  std::set<std::string> ignored;
+  for (const std::string& name : nyu40) {
+    if (ids.count(name) == 0) ignored.insert(name);
+  }
+  return ClassMapping(ids, names, ignored);
+}
+
+std::optional<ClassMapping> ClassMapping::builtin(const std::string& name) {
+  if (name == "table3.1") return seed_table();
+  if (name == "scannet20") return scannet20();
+  return std::nullopt;
+}
+
+const std::vector<std::string>& ClassMapping::builtin_names() {
+  static const std::vector<std::string> names = {"table3.1", "scannet20"};
+  return names;
 }
 
 ClassMapping ClassMapping::with_ignored(const std::vector<std::string>& classes) const {

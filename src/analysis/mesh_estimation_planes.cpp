@@ -89,7 +89,7 @@ std::array<std::size_t, 3> wide_triangle(const std::vector<Eigen::Vector2f>& poi
 }
 
 // The hull's corners without float-rounding twins, which would make triangles
-// of no area that read_obj rejects in the written mesh.
+// of no area that read_obj would skip (and -moc warn about) in the written mesh.
 std::vector<Eigen::Vector2d> distinct_corners(const Cloud& corners) {
   std::vector<Eigen::Vector2d> polygon;
   polygon.reserve(corners.size());

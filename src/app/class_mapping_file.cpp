@@ -4,6 +4,7 @@
 
 #include <charconv>
 #include <limits>
+#include <set>
 #include <stdexcept>
 
 #include "occlusion/app/errors.hpp"
@@ -32,16 +33,17 @@ std::int32_t id_from_key(const std::string& key, const std::string& where) {
 
 }  // namespace
 
-ClassMapping parse_class_mapping(const Json::Value& root, const std::string& where) {
+ClassMapping parse_class_mapping(const Json::Value& root, const std::string& where,
+                                 const ClassMapping& base) {
   if (!root.isObject()) fail(where, "a class mapping is a JSON object");
   for (const auto& key : root.getMemberNames()) {
     if (key != "classes" && key != "names" && key != "ignore" && key != "ignored_classes") {
       fail(where, "unknown key '" + key + "' (classes, names, ignore, ignored_classes)");
     }
   }
-  const ClassMapping seed = ClassMapping::seed_table();
-  std::map<std::string, std::int32_t> ids = seed.ids();
+  std::map<std::string, std::int32_t> ids = base.ids();
   std::map<std::int32_t, std::string> names;
+  std::set<std::string> ignored;
   if (root.isMember("classes")) {
     const Json::Value& classes = root["classes"];
     if (!classes.isObject()) fail(where, "'classes' must be an object {\"name\": id, ...}");
@@ -51,7 +53,8 @@ ClassMapping parse_class_mapping(const Json::Value& root, const std::string& whe
       ids[name] = classes[name].asInt();
     }
   } else {
-    for (const auto& c : seed.evaluation_classes()) names[c.id] = c.name;
+    for (const auto& c : base.evaluation_classes()) names[c.id] = c.name;
+    ignored = base.ignored();
   }
   if (root.isMember("names")) {
     const Json::Value& given = root["names"];
@@ -61,12 +64,11 @@ ClassMapping parse_class_mapping(const Json::Value& root, const std::string& whe
       names[id_from_key(key, where)] = given[key].asString();
     }
   }
-  std::int32_t ignore = ClassMapping::kDefaultIgnoreId;
+  std::int32_t ignore = base.ignore_id();
   if (root.isMember("ignore")) {
     if (!is_int32(root["ignore"])) fail(where, "'ignore' must be an integer");
     ignore = root["ignore"].asInt();
   }
-  std::set<std::string> ignored;
   if (root.isMember("ignored_classes")) {
     const Json::Value& list = root["ignored_classes"];
     if (!list.isArray()) fail(where, "'ignored_classes' must be a list of class names");
@@ -82,9 +84,13 @@ ClassMapping parse_class_mapping(const Json::Value& root, const std::string& whe
   }
 }
 
-ClassMapping load_class_mapping(const std::string& path) {
+ClassMapping load_class_mapping(const std::string& path, const ClassMapping& base) {
   const Json::Value root = read_json_file(path, "class mapping file");
-  return parse_class_mapping(root, path);
+  return parse_class_mapping(root, path, base);
+}
+
+bool mapping_file_has_classes(const std::string& path) {
+  return read_json_file(path, "class mapping file").isMember("classes");
 }
 
 }  // namespace occlusion

@@ -241,6 +241,7 @@ CloudOcclusionReport run_cloud_occlusion(const CloudOcclusionRequest& request,
   job::LoadedCloud loaded = job::load_cloud(request.path, request.skip_bad_lines);
   const StationFilterReport filtered =
       apply_station_filter(loaded.cloud, station_filter(request), request.path);
+  job::name_classes(loaded.cloud, request.path, request.class_names_path);
   const std::vector<PlanarPolygon> openings = read_openings(request.polygon_path);
   const double load_seconds = job::seconds_since(start);
   progress.check_cancel();

@@ -44,6 +44,7 @@ const Keys<CloudOcclusionRequest>& cloud_tracing_keys() {
       scans_key(&R::scans),
       min_range_key(&R::min_range),
       max_range_key(&R::max_range),
+      class_names_key(&R::class_names_path),
       seed_key(&R::seed),
       threads_key(&R::threads),
   };

@@ -1,6 +1,7 @@
 #include "occlusion/app/evaluate_job.hpp"
 
 #include <algorithm>
+#include <optional>
 
 #include "evaluation_support.hpp"
 #include "job_support.hpp"
@@ -13,9 +14,10 @@ namespace occlusion {
 
 namespace {
 
-Json::Value mapping_json(const ClassMapping& mapping, const std::string& path) {
+Json::Value mapping_json(const ClassMapping& mapping, const EvaluateRequest& q) {
   Json::Value json(Json::objectValue);
-  json["source"] = path.empty() ? "seed table 3.1" : path;
+  json["builtin"] = q.class_mapping;
+  json["source"] = q.mapping_path.empty() ? "built-in " + q.class_mapping : q.mapping_path;
   json["ignore"] = mapping.ignore_id();
   json["ignored_classes"] =
       to_json(std::vector<std::string>(mapping.ignored().begin(), mapping.ignored().end()));
@@ -70,10 +72,20 @@ void validate(const EvaluateRequest& request) {
   check_keys(evaluate_keys(), request);
 }
 
-ClassMapping resolve_mapping(const std::string& mapping_path,
+ClassMapping resolve_mapping(const std::string& class_mapping, const std::string& mapping_path,
                              const std::vector<std::string>& ignored_classes) {
+  const std::optional<ClassMapping> base = ClassMapping::builtin(class_mapping);
+  if (!base) throw KeyError("class_mapping", "has no built-in mapping '" + class_mapping + "'");
+  if (!mapping_path.empty() && class_mapping != ClassMapping::kDefaultBuiltin &&
+      mapping_file_has_classes(mapping_path)) {
+    throw KeyError("class_mapping",
+                   "names the built-in mapping '" + class_mapping + "', but the mapping file " +
+                       mapping_path +
+                       " gives its own 'classes', which replace it: give one or the other (a "
+                       "file without 'classes' narrows the built-in mapping)");
+  }
   const ClassMapping mapping =
-      mapping_path.empty() ? ClassMapping::seed_table() : load_class_mapping(mapping_path);
+      mapping_path.empty() ? *base : load_class_mapping(mapping_path, *base);
   if (ignored_classes.empty()) return mapping;
   try {
     return mapping.with_ignored(ignored_classes);
@@ -87,7 +99,8 @@ EvaluateReport run_evaluate(const EvaluateRequest& request, const Progress& prog
   const auto start = job::Clock::now();
   EvaluateReport report;
   report.request = request;
-  report.mapping = resolve_mapping(request.mapping_path, request.ignored_classes);
+  report.mapping =
+      resolve_mapping(request.class_mapping, request.mapping_path, request.ignored_classes);
   report.confusion = ConfusionMatrix(report.mapping.evaluation_classes());
 
   const std::size_t count = request.ground_truth.size();
@@ -95,7 +108,8 @@ EvaluateReport run_evaluate(const EvaluateRequest& request, const Progress& prog
     progress("loading", static_cast<double>(k) / static_cast<double>(count));
     const auto load_start = job::Clock::now();
     const job::LoadedScene loaded =
-        job::load_scene(request.ground_truth[k], request.predictions[k], request.skip_bad_lines);
+        job::load_scene(request.ground_truth[k], request.predictions[k], request.skip_bad_lines,
+                        request.class_names_path);
     report.load_seconds += job::seconds_since(load_start);
     progress.check_cancel();
 
@@ -200,7 +214,7 @@ Json::Value to_json(const EvaluateReport& report) {
   json["beyond_distance_points"] = Json::UInt64(beyond);
   json["confusion"] = to_json(report.confusion);
   json["scenes"] = scenes;
-  json["mapping"] = mapping_json(report.mapping, q.mapping_path);
+  json["mapping"] = mapping_json(report.mapping, q);
 
   json["parameters"] = parameters_json(evaluate_keys(), q);
 

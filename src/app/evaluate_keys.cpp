@@ -12,7 +12,7 @@ const Keys<EvaluateRequest>& evaluate_keys() {
            .path()
            .metavar("GT")
            .doc("labelled clouds with class names (PLY/PCD written by occlusion, S3DIS rooms or "
-                "Areas), one per scene"),
+                "Areas, ScanNet scenes, or any labelled cloud with class_names), one per scene"),
        key("predictions", &R::predictions)
            .path()
            .cli("--prediction")
@@ -28,7 +28,8 @@ const Keys<EvaluateRequest>& evaluate_keys() {
            .metavar("D")
            .doc("a prediction on other points is transferred from its nearest point within D; "
                 "0: the points must be the ground truth's"),
-       skip_bad_lines_key(&R::skip_bad_lines), threads_key(&R::threads),
+       skip_bad_lines_key(&R::skip_bad_lines), class_names_key(&R::class_names_path),
+       threads_key(&R::threads),
        out_key(&R::out,
                "write GT.eval.json, .csv (per class) and .md (a table); with several scenes "
                "eval.json, eval.csv, eval.md")},

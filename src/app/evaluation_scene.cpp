@@ -11,6 +11,7 @@
 #include "occlusion/app/errors.hpp"
 #include "occlusion/app/evaluate_job.hpp"
 #include "occlusion/core/exact_match.hpp"
+#include "occlusion/core/nyu40_classes.hpp"
 #include "occlusion/io/cloud_io.hpp"
 #include "occlusion/io/input_error.hpp"
 #include "occlusion/io/label_file.hpp"
@@ -182,13 +183,27 @@ void check_ground_truth(const std::string& name, const PointCloud& cloud,
   }
   if (cloud.class_names.empty()) {
     throw InputError(name, 0,
-                     "its labels have no class names, so the class mapping cannot apply (PLY and "
-                     "PCD files written by occlusion keep them as header comments)");
+                     "its labels have no class names, so the class mapping cannot apply: give "
+                     "a class_names file (one name per line, line k naming label k), or a cloud "
+                     "that names them (PLY and PCD files written by occlusion keep them as header "
+                     "comments; ScanNet scenes get the NYU40 names)");
+  }
+  const bool nyu40 = cloud.class_names == nyu40_class_names();
+  // Table 3.1 knows wall, floor, chair, ... by the same names, so a ScanNet
+  // scene holding only those would be scored in table 3.1's ids, not the
+  // NYU40 ids its predictions use: a wrong mIoU with no error.
+  if (nyu40 && mapping.ids() == ClassMapping::seed_table().ids()) {
+    throw UsageError(name +
+                     ": its labels are NYU40 classes (a ScanNet scene), which the seed's table "
+                     "3.1 does not score: use class_mapping scannet20, or a mapping file with "
+                     "its own classes");
   }
   const auto unmapped = mapping.unmapped_classes(cloud.labels, cloud.class_names);
   if (!unmapped.empty()) {
     throw UsageError(name + ": classes not in the class mapping: " + joined(unmapped) +
-                     " (map them, or list them in ignored_classes)");
+                     (nyu40 ? " (its labels are NYU40 classes, as ScanNet's: score them with "
+                              "class_mapping scannet20, or map them in a mapping file)"
+                            : " (map them, or list them in ignored_classes)"));
   }
 }
 
@@ -270,9 +285,10 @@ void check_label_order(const std::string& prediction, const std::string& ground_
 }  // namespace
 
 LoadedScene load_scene(const std::string& ground_truth, const std::string& prediction,
-                       bool skip_bad_lines) {
+                       bool skip_bad_lines, const std::string& class_names_path) {
   LoadedScene scene;
   LoadedCloud truth = load_cloud(ground_truth, skip_bad_lines);
+  name_classes(truth.cloud, ground_truth, class_names_path);
   scene.input.ground_truth_name = ground_truth;
   scene.input.ground_truth = std::move(truth.cloud);
   scene.input.prediction_name = prediction;

@@ -32,8 +32,9 @@ Prediction load_prediction(const std::string& path, bool skip_bad_lines,
 // (io/label_file.hpp decides) or a cloud. InputError for unreadable files,
 // and for a label file when reading the ground truth dropped points (NaN or
 // skipped lines): its labels, given by point order, would no longer line up.
+// `class_names_path`, when not empty, names the ground truth's labels.
 LoadedScene load_scene(const std::string& ground_truth, const std::string& prediction,
-                       bool skip_bad_lines);
+                       bool skip_bad_lines, const std::string& class_names_path);
 
 // What a scene's evaluation should tell the user: ground-truth points left
 // without a prediction within max_distance, predicted ids that are no

@@ -9,6 +9,7 @@
 #include "occlusion/app/errors.hpp"
 #include "occlusion/app/json_output.hpp"
 #include "occlusion/io/atomic_file.hpp"
+#include "occlusion/io/class_names_file.hpp"
 #include "occlusion/io/cloud_io.hpp"
 #include "occlusion/io/input_error.hpp"
 
@@ -256,6 +257,10 @@ LoadedCloud load_cloud(const std::string& path, bool skip_bad_lines,
   loaded.unverified_order = report.unverified_order;
   loaded.annotation_order = std::move(report.annotation_order);
   return loaded;
+}
+
+void name_classes(PointCloud& cloud, const std::string& path, const std::string& class_names_path) {
+  if (!class_names_path.empty()) apply_class_names_file(cloud, path, class_names_path);
 }
 
 }  // namespace occlusion::job

@@ -163,5 +163,8 @@ struct LoadedCloud {
 // reader chooses it.
 LoadedCloud load_cloud(const std::string& path, bool skip_bad_lines,
                        const std::optional<Eigen::Vector3d>& shift = std::nullopt);
+// Names the labels of `cloud` (read from `path`) from the class_names file
+// `class_names_path` (io/class_names_file.hpp); nothing when it is empty.
+void name_classes(PointCloud& cloud, const std::string& path, const std::string& class_names_path);
 
 }  // namespace occlusion::job

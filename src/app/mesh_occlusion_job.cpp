@@ -65,12 +65,22 @@ MeshOcclusionReport run_mesh_occlusion(const MeshOcclusionRequest& request,
   const auto start = job::Clock::now();
 
   progress("loading", 0.0);
-  const TriangleMesh mesh = read_mesh(request.path);
+  MeshReadReport read_report;
+  const TriangleMesh mesh = read_mesh(request.path, &read_report);
   const double load_seconds = job::seconds_since(start);
   progress.check_cancel();
 
   MeshOcclusionReport report = run_mesh_occlusion_on(mesh, request, progress);
   report.load_seconds = load_seconds;
+  report.degenerate_faces_skipped = read_report.degenerate_faces;
+  if (read_report.degenerate_faces > 0) {
+    const bool one = read_report.degenerate_faces == 1;
+    report.warnings.push_back(
+        request.path + ": " + std::to_string(read_report.degenerate_faces) +
+        (one ? " degenerate face (zero area) was" : " degenerate faces (zero area) were") +
+        " skipped: no area to measure, no ray hits them (first, " + read_report.first_degenerate +
+        ")");
+  }
 
   if (!request.out.empty()) {
     ensure_directory(request.out);
@@ -102,6 +112,7 @@ Json::Value to_json(const MeshOcclusionReport& report) {
   json["visible_area"] = r.visible_area;
   json["total_area"] = r.total_area;
   json["faces"] = Json::UInt64(r.faces);
+  json["degenerate_faces_skipped"] = Json::UInt64(report.degenerate_faces_skipped);
   json["samples"] = Json::UInt64(r.samples);
   json["rays"] = Json::UInt64(r.rays);
 

@@ -106,6 +106,7 @@ ScanReport run_scan(const ScanRequest& request, const Progress& progress) {
   job::LoadedCloud loaded = job::load_cloud(request.path, request.skip_bad_lines);
   const StationFilterReport filtered =
       apply_station_filter(loaded.cloud, station_filter(request), request.path);
+  job::name_classes(loaded.cloud, request.path, request.class_names_path);
   const PointCloud& cloud = loaded.cloud;
   const double load_seconds = job::seconds_since(start);
   progress.check_cancel();

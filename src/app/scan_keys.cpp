@@ -17,8 +17,8 @@ const Keys<ScanRequest>& scan_keys() {
        enable_acceleration_key(&R::enable_acceleration),
        cloud_format_key(&R::format, "format of the written clouds"),
        skip_bad_lines_key(&R::skip_bad_lines), scans_key(&R::scans), min_range_key(&R::min_range),
-       max_range_key(&R::max_range), threads_key(&R::threads), max_memory_key(&R::max_memory_mb),
-       max_work_key(&R::max_work),
+       max_range_key(&R::max_range), class_names_key(&R::class_names_path),
+       threads_key(&R::threads), max_memory_key(&R::max_memory_mb), max_work_key(&R::max_work),
        out_key(&R::out,
                "write CLOUD.scan.FMT (the seen points, all attributes), CLOUD.scan_full.FMT "
                "(every point + visible_count) and CLOUD.fscan.json")},

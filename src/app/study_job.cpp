@@ -234,10 +234,11 @@ StudyReport run_study(const StudyRequest& request, const Progress& progress) {
   validate(request);
   const auto start = job::Clock::now();
   const StudyShard shard = parse_shard(request.shard);
-  job::StudyContext context{request, resolve_mapping(request.mapping_path, request.ignored_classes),
-                            read_openings(request.tracing.polygon_path),
-                            (fs::path(request.out) / "runs").string(),
-                            job::row_parameters(request)};
+  job::StudyContext context{
+      request,
+      resolve_mapping(request.class_mapping, request.mapping_path, request.ignored_classes),
+      read_openings(request.tracing.polygon_path), (fs::path(request.out) / "runs").string(),
+      job::row_parameters(request)};
   ensure_directory(context.runs_dir);
   const std::string csv_path = (fs::path(request.out) / "study.csv").string();
   StudyReport report;
@@ -297,6 +298,7 @@ StudyReport run_study(const StudyRequest& request, const Progress& progress) {
       scene.reset();
       run_steps("loading the scene", 0.0);
       scene = job::load_cloud(request.scenes[s], request.tracing.skip_bad_lines);
+      job::name_classes(scene->cloud, request.scenes[s], request.tracing.class_names_path);
       loaded = s;
       const StationFilterReport filtered =
           apply_station_filter(scene->cloud, station_filter(request.tracing), request.scenes[s]);

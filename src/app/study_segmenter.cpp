@@ -38,7 +38,7 @@ std::int32_t class_id(const ClassMapping& mapping, const std::string& name) {
   const auto id = mapping.find(name);
   if (!id) {
     throw UsageError(
-        "the baseline segmenter predicts wall, floor, ceiling and clutter, but the "
+        "the baseline segmenter predicts wall, floor and ceiling, but the "
         "class mapping has no '" +
         name + "'");
   }
@@ -66,7 +66,16 @@ Prediction baseline(const StudyContext& context, const PointCloud& scanned, cons
   options.floor_id = class_id(context.mapping, "floor");
   options.ceiling_id = class_id(context.mapping, "ceiling");
   options.wall_id = class_id(context.mapping, "wall");
-  options.clutter_id = class_id(context.mapping, "clutter");
+  // A mapping without clutter (scannet20: NYU40 names the objects instead)
+  // leaves the baseline nothing to call the rest: it declines, and those
+  // points count as misses of their classes.
+  const auto clutter = context.mapping.find("clutter");
+  options.clutter_id = clutter.value_or(context.mapping.ignore_id());
+  if (!clutter) {
+    warnings.push_back(stem +
+                       ": the class mapping has no 'clutter', so the baseline leaves the points "
+                       "it would call clutter unlabelled (each a miss of its class)");
+  }
   Prediction prediction;
   prediction.labels = segment_baseline(scanned, estimate, options).labels;
   prediction_path =

@@ -3,6 +3,7 @@
 // chooses among them), and the vocabulary they share: which property names
 // hold labels and instances, class-name comments, extra-field checks.
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -10,8 +11,10 @@
 #include <string_view>
 #include <vector>
 
+#include "occlusion/core/mesh.hpp"
 #include "occlusion/core/point_cloud.hpp"
 #include "occlusion/io/cloud_io.hpp"
+#include "occlusion/io/mesh_read_report.hpp"
 
 namespace occlusion::detail {
 
@@ -58,9 +61,36 @@ PointCloud read_ply(const std::string& path, const CloudReadOptions& options,
                     CloudReadReport& report);
 PointCloud read_text_cloud(const std::string& path, const CloudReadOptions& options,
                            CloudReadReport& report);
+// Every data3D scan of an E57 file (ASTM E2807), each a station
+// (e57_cloud_reader.cpp; docs/formats.md).
+PointCloud read_e57(const std::string& path, const CloudReadOptions& options,
+                    CloudReadReport& report);
 // A room folder or an Area folder of rooms.
 PointCloud read_s3dis(const std::string& directory, const CloudReadOptions& options,
                       CloudReadReport& report);
+
+// A ScanNet scene (docs/formats.md): the mesh `<scene>_vh_clean_2.ply` and the
+// labels file `<scene>_vh_clean_2.labels.ply` beside it (the same vertices,
+// a `label` per vertex holding its NYU40 id); either may be missing, not both.
+struct ScanNetScene {
+  std::string mesh;
+  std::string labels;
+};
+// What `path` names in the ScanNet layout: a scene folder <scene>/ holding
+// either file, a labels file, or a mesh with its labels file beside it.
+// Nothing for anything else (a mesh without labels is a plain PLY).
+std::optional<ScanNetScene> scannet_scene(const std::string& path);
+// The mesh's vertices and colours with the labels file's labels, named NYU40
+// unless the labels file names its own. InputError naming the labels file when
+// it has no label property, a label beyond 40, or vertices (count or
+// positions) other than the mesh's.
+PointCloud read_scannet(const ScanNetScene& scene, const CloudReadOptions& options,
+                        CloudReadReport& report);
+// The scene's mesh (the labels file's own faces when the mesh is missing),
+// each face in the group of its class: the label at least two of its corners
+// share (labelled as read_scannet labels them; "unlabelled" for -1), else
+// "mixed". Degenerate faces are skipped and counted as read_mesh does.
+TriangleMesh read_scannet_mesh(const ScanNetScene& scene, MeshReadReport* report);
 
 // Parses `x y z [r g b] [label]` text. With required_columns, every line must
 // have exactly that many (S3DIS: 6); otherwise the first data line decides.
@@ -138,6 +168,15 @@ std::string class_comment_lines(const std::vector<std::string>& names, std::stri
 // below -1 (the only negative id, meaning none), beyond int32, or a label with
 // no name when `class_count` names are known (0 = names unknown).
 std::string id_problem(std::int64_t id, bool is_label, std::size_t class_count);
+
+// Colours stored as floats (preprocessed ScanNet clouds average them, keeping
+// 0..255; other tools write 0..1), 3 per point, each already checked to lie
+// in 0..255, rounded to 0..255. The scale is read off the values: any above 1
+// means 0..255; otherwise, a value strictly between 0 and 1 means 0..1 (a
+// 0..255 cloud whose every channel is at most 1 would be black). Values all 0
+// or 1 with some 1 fit both scales, so they are an InputError naming `path`.
+std::vector<std::array<std::uint8_t, 3>> colours_from_floats(const std::vector<float>& rgb,
+                                                             const std::string& path);
 
 // Names a reader gives a meaning to (position, colour, label, instance). An
 // extra field may not use one even when the cloud has no such attribute, or

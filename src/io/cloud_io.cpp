@@ -28,7 +28,7 @@ struct CloudReader {
 const CloudReader kCloudReaders[] = {
     {".pcd", detail::read_pcd},        {".ply", detail::read_ply},
     {".txt", detail::read_text_cloud}, {".xyz", detail::read_text_cloud},
-    {".pts", detail::read_text_cloud},
+    {".pts", detail::read_text_cloud}, {".e57", detail::read_e57},
 };
 
 // The reader of the longest suffix `path` ends in (".frame.json" before ".json").
@@ -54,6 +54,9 @@ PointCloud read_by_kind(const std::string& path, const CloudReadOptions& options
   std::error_code status;
   const auto kind = std::filesystem::status(path, status);
   if (!std::filesystem::exists(kind)) throw InputError(path, 0, "no such file or directory");
+  if (const auto scene = detail::scannet_scene(path)) {
+    return detail::read_scannet(*scene, options, report);
+  }
   if (std::filesystem::is_directory(kind)) return detail::read_s3dis(path, options, report);
   if (const CloudReader* reader = reader_for(path)) return reader->read(path, options, report);
   throw InputError(path, 0,

@@ -15,15 +15,6 @@ namespace occlusion {
 
 namespace {
 
-constexpr std::string_view kByteOrderMark = "\xEF\xBB\xBF";
-
-std::string_view without_bom(std::string_view text) {
-  if (text.substr(0, kByteOrderMark.size()) == kByteOrderMark) {
-    text.remove_prefix(kByteOrderMark.size());
-  }
-  return text;
-}
-
 // The text cloud reader's comments too, so that telling the two apart by the
 // first data line sees the same line.
 bool is_skipped(std::string_view line) {
@@ -37,7 +28,7 @@ bool is_skipped(std::string_view line) {
 std::vector<std::int32_t> read_label_file(const std::string& path) {
   const std::string bytes = read_file_bytes(path);
   std::vector<std::int32_t> labels;
-  detail::Lines lines(without_bom(bytes));
+  detail::Lines lines(detail::without_byte_order_mark(bytes));
   std::string_view line;
   while (lines.next(line)) {
     if (is_skipped(line)) continue;
@@ -79,7 +70,7 @@ bool is_label_file(const std::string& path) {
   if (extension == ".labels" || extension == ".label") return true;
   if (extension != ".txt" || std::filesystem::is_directory(path)) return false;
   const std::string bytes = read_file_bytes(path);
-  detail::Lines lines(without_bom(bytes));
+  detail::Lines lines(detail::without_byte_order_mark(bytes));
   std::string_view line;
   while (lines.next(line)) {
     if (is_skipped(line)) continue;

@@ -1,5 +1,6 @@
 #include "occlusion/io/mesh_reader.hpp"
 
+#include "cloud_formats.hpp"
 #include "file_names.hpp"
 #include "occlusion/io/input_error.hpp"
 #include "occlusion/io/obj_reader.hpp"
@@ -9,7 +10,7 @@ namespace occlusion {
 namespace {
 struct MeshReader {
   const char* suffix;  // lower case, with its dot
-  TriangleMesh (*read)(const std::string&);
+  TriangleMesh (*read)(const std::string&, MeshReadReport*);
 };
 // The one list of the files read_mesh reads (the server and viewer take it from here).
 const MeshReader kMeshReaders[] = {{".obj", read_obj}, {".ply", read_ply_mesh}};
@@ -24,9 +25,12 @@ const std::vector<std::string>& mesh_file_suffixes() {
   return suffixes;
 }
 
-TriangleMesh read_mesh(const std::string& path) {
+TriangleMesh read_mesh(const std::string& path, MeshReadReport* report) {
+  if (const auto scene = detail::scannet_scene(path)) {
+    return detail::read_scannet_mesh(*scene, report);
+  }
   for (const MeshReader& reader : kMeshReaders) {
-    if (detail::has_suffix(path, reader.suffix)) return reader.read(path);
+    if (detail::has_suffix(path, reader.suffix)) return reader.read(path, report);
   }
   std::string list;
   for (const auto& suffix : mesh_file_suffixes()) list += (list.empty() ? "" : " or ") + suffix;

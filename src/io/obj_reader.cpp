@@ -49,13 +49,16 @@ bool valid_corner_suffix(std::string_view suffix) {
 
 class ObjParser {
  public:
-  ObjParser(std::string_view text, const std::string& source) : text_(text), source_(source) {}
+  ObjParser(std::string_view text, const std::string& source, MeshReadReport& report)
+      : text_(text), source_(source), report_(report) {}
 
   TriangleMesh run() {
     for_each_logical_line();
     if (mesh_.faces.empty()) fail(0, "no faces (the file has no 'f' statement)");
     check_indices_in_range();
-    check_no_degenerate_faces();
+    detail::drop_degenerate_faces(
+        mesh_, 1, [&](std::size_t f) { return "line " + std::to_string(face_line_[f]); }, source_,
+        report_);
     return std::move(mesh_);
   }
 
@@ -226,14 +229,9 @@ class ObjParser {
     }
   }
 
-  void check_no_degenerate_faces() const {
-    if (const auto degenerate = detail::find_degenerate_face(mesh_, 1)) {
-      fail(face_line_[degenerate->face], degenerate->reason);
-    }
-  }
-
   std::string_view text_;
   const std::string& source_;
+  MeshReadReport& report_;
   TriangleMesh mesh_;
   std::vector<std::size_t> face_line_;  // per triangle, for messages after parsing
   std::vector<std::uint32_t> corners_;  // scratch for the face being read
@@ -244,12 +242,14 @@ class ObjParser {
 
 }  // namespace
 
-TriangleMesh parse_obj(std::string_view text, const std::string& source_name) {
-  return ObjParser(text, source_name).run();
+TriangleMesh parse_obj(std::string_view text, const std::string& source_name,
+                       MeshReadReport* report) {
+  MeshReadReport local;
+  return ObjParser(text, source_name, report != nullptr ? *report : local).run();
 }
 
-TriangleMesh read_obj(const std::string& path) {
-  return parse_obj(read_file_bytes(path), path);
+TriangleMesh read_obj(const std::string& path, MeshReadReport* report) {
+  return parse_obj(read_file_bytes(path), path, report);
 }
 
 }  // namespace occlusion

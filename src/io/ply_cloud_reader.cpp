@@ -98,6 +98,7 @@ class PlyCloudReader : public PlySink {
     cloud_.stations = header_.stations;
     extra_values_.assign(extra_.size(), 0.0f);
     read_ply_body(bytes_, path_, header_, *this);
+    if (float_colours_) cloud_.colours = colours_from_floats(float_rgb_, path_);
     for (std::size_t f = 0; f < extra_.size(); ++f) {
       report_.extra_fields.push_back(std::move(extra_[f]));
     }
@@ -148,10 +149,15 @@ class PlyCloudReader : public PlySink {
       }
       seen[static_cast<int>(role)] = true;
       const bool colour = role == Role::kRed || role == Role::kGreen || role == Role::kBlue;
-      if (colour && !is_integer(property.type)) {
-        throw InputError(path_, vertex.line,
-                         "colour property '" + property.name +
-                             "' is floating point; only integer colours 0..255 are read");
+      if (colour) {
+        const ColourType kind =
+            is_integer(property.type) ? ColourType::kInteger : ColourType::kFloat;
+        if (colour_type_ != ColourType::kNone && colour_type_ != kind) {
+          throw InputError(
+              path_, vertex.line,
+              "colour property '" + property.name + "' mixes integer and floating-point channels");
+        }
+        colour_type_ = kind;
       }
     }
     for (const Role axis : {Role::kX, Role::kY, Role::kZ}) {
@@ -169,6 +175,7 @@ class PlyCloudReader : public PlySink {
                        "the vertex element has some but not all of red green blue");
     }
     has_colours_ = colours == 3;
+    float_colours_ = has_colours_ && colour_type_ == ColourType::kFloat;
     has_labels_ = seen[static_cast<int>(Role::kLabel)];
     has_instances_ = seen[static_cast<int>(Role::kInstance)];
     has_intensities_ = seen[static_cast<int>(Role::kIntensity)];
@@ -178,7 +185,8 @@ class PlyCloudReader : public PlySink {
     // fails as truncated instead of exhausting memory first.
     const std::size_t reserve = std::min(vertex.count, bytes_.size() / 4);
     cloud_.positions.reserve(reserve);
-    if (has_colours_) cloud_.colours.reserve(reserve);
+    if (has_colours_ && !float_colours_) cloud_.colours.reserve(reserve);
+    if (float_colours_) float_rgb_.reserve(3 * reserve);
     if (has_labels_) cloud_.labels.reserve(reserve);
     if (has_instances_) cloud_.instances.reserve(reserve);
     if (has_intensities_) cloud_.intensities.reserve(reserve);
@@ -202,6 +210,11 @@ class PlyCloudReader : public PlySink {
         if (!(value >= 0 && value <= 255)) {
           return std::string(role_name(role)) + " value " + number_text(value) +
                  " is outside 0..255";
+        }
+        if (float_colours_) {
+          float_channels_[static_cast<int>(role) - static_cast<int>(Role::kRed)] =
+              static_cast<float>(value);
+          return "";
         }
         rgb_[static_cast<int>(role) - static_cast<int>(Role::kRed)] =
             static_cast<std::uint8_t>(value);
@@ -252,7 +265,11 @@ class PlyCloudReader : public PlySink {
       return;
     }
     cloud_.positions.push_back(position);
-    if (has_colours_) cloud_.colours.push_back(rgb_);
+    if (float_colours_) {
+      float_rgb_.insert(float_rgb_.end(), float_channels_, float_channels_ + 3);
+    } else if (has_colours_) {
+      cloud_.colours.push_back(rgb_);
+    }
     if (has_labels_) cloud_.labels.push_back(label_);
     if (has_instances_) cloud_.instances.push_back(instance_);
     if (has_intensities_) cloud_.intensities.push_back(intensity_);
@@ -271,6 +288,11 @@ class PlyCloudReader : public PlySink {
   std::vector<std::size_t> extra_index_;  // per vertex property: its extra field, or kNone
   std::vector<ScalarField> extra_;
   bool has_colours_ = false;
+  enum class ColourType { kNone, kInteger, kFloat };
+  ColourType colour_type_ = ColourType::kNone;  // of the colour properties seen so far
+  bool float_colours_ = false;
+  std::vector<float> float_rgb_;  // float colours, 3 per kept point, scaled once all are read
+  float float_channels_[3] = {0, 0, 0};
   bool has_labels_ = false;
   bool has_instances_ = false;
   bool has_intensities_ = false;

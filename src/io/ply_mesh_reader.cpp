@@ -41,7 +41,8 @@ std::size_t find_property(const PlyElement& element, std::initializer_list<const
 
 class PlyMeshReader : public detail::PlySink {
  public:
-  PlyMeshReader(const std::string& bytes, const std::string& path) : bytes_(bytes), path_(path) {}
+  PlyMeshReader(const std::string& bytes, const std::string& path, MeshReadReport& report)
+      : bytes_(bytes), path_(path), report_(report) {}
 
   TriangleMesh run() {
     header_ = detail::parse_header(bytes_, path_);
@@ -59,11 +60,9 @@ class PlyMeshReader : public detail::PlySink {
         }
       }
     }
-    if (const auto degenerate = detail::find_degenerate_face(mesh_, 0)) {
-      throw InputError(
-          path_, 0,
-          "face " + std::to_string(polygon_of_[degenerate->face]) + ": " + degenerate->reason);
-    }
+    detail::drop_degenerate_faces(
+        mesh_, 0, [&](std::size_t f) { return "face " + std::to_string(polygon_of_[f]); }, path_,
+        report_);
     return std::move(mesh_);
   }
 
@@ -173,6 +172,7 @@ class PlyMeshReader : public detail::PlySink {
 
   const std::string& bytes_;
   const std::string& path_;
+  MeshReadReport& report_;
   PlyHeader header_;
   TriangleMesh mesh_;
   std::size_t vertex_ = kNone;
@@ -190,9 +190,10 @@ class PlyMeshReader : public detail::PlySink {
 
 }  // namespace
 
-TriangleMesh read_ply_mesh(const std::string& path) {
+TriangleMesh read_ply_mesh(const std::string& path, MeshReadReport* report) {
   const std::string bytes = read_file_bytes(path);
-  return PlyMeshReader(bytes, path).run();
+  MeshReadReport local;
+  return PlyMeshReader(bytes, path, report != nullptr ? *report : local).run();
 }
 
 }  // namespace occlusion

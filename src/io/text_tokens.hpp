@@ -86,6 +86,15 @@ class Lines {
   std::size_t number_ = 0;
 };
 
+// Text files saved by Windows tools may start with a UTF-8 byte-order mark.
+inline std::string_view without_byte_order_mark(std::string_view text) {
+  constexpr std::string_view kByteOrderMark = "\xEF\xBB\xBF";
+  if (text.substr(0, kByteOrderMark.size()) == kByteOrderMark) {
+    text.remove_prefix(kByteOrderMark.size());
+  }
+  return text;
+}
+
 inline bool is_blank_line(std::string_view line) {
   for (const char c : line) {
     if (!is_blank(c)) return false;

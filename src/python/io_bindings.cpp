@@ -52,6 +52,7 @@ struct MeshArrays {
   py::array faces;       // uint32 (M, 3)
   py::array face_group;  // uint32 (M,)
   std::vector<std::string> group_names;
+  std::size_t degenerate_faces = 0;  // skipped by the reader (mesh_read_report.hpp)
 };
 
 py::object optional_array(py::array array, bool present) {
@@ -157,11 +158,13 @@ void write_cloud_arrays(const std::string& path, const py::handle& positions,
 
 MeshArrays read_mesh_arrays(const std::string& path) {
   TriangleMesh mesh;
+  MeshReadReport report;
   {
     py::gil_scoped_release release;
-    mesh = read_obj(path);
+    mesh = read_obj(path, &report);
   }
   MeshArrays out;
+  out.degenerate_faces = report.degenerate_faces;
   out.vertices = to_numpy<double>(std::move(mesh.vertices));
   out.faces = to_numpy<std::uint32_t>(std::move(mesh.faces));
   out.face_group = to_numpy<std::uint32_t>(std::move(mesh.face_group));
@@ -229,6 +232,8 @@ void bind_io(py::module_& m) {
       .def_readonly("faces", &MeshArrays::faces, "uint32 (M, 3) vertex indices")
       .def_readonly("face_group", &MeshArrays::face_group, "uint32 (M,) index into group_names")
       .def_readonly("group_names", &MeshArrays::group_names, "OBJ g/o groups that have faces")
+      .def_readonly("degenerate_faces", &MeshArrays::degenerate_faces,
+                    "triangles of no area the reader skipped")
       .def("__len__", [](const MeshArrays& mesh) { return mesh.faces.shape(0); })
       .def("__repr__", [](const MeshArrays& mesh) {
         return "<occlusion.Mesh of " + std::to_string(mesh.faces.shape(0)) + " faces>";
@@ -260,7 +265,8 @@ pcd_binary, pcd_ascii, ply_binary (.ply default), ply_ascii.)doc");
 
   m.def("read_mesh", &read_mesh_arrays, py::arg("path"),
         "Reads a Wavefront OBJ mesh; polygons are fan-triangulated. InputError with path and "
-        "line for a malformed file (a bad index, a degenerate face, no faces).");
+        "line for a malformed file (a bad index, no faces with an area); degenerate (zero-area) "
+        "faces are skipped and counted in degenerate_faces.");
   m.def(
       "write_obj",
       [](const std::string& path, py::handle vertices, py::handle faces, py::handle face_group,

@@ -77,5 +77,41 @@ TEST(ClassMapping, NamesAndChecks) {
   EXPECT_EQ(minkowski.find("stairs"), -100);
 }
 
+TEST(ClassMapping, Scannet20IsTheBenchmarksValidClassIds) {
+  const ClassMapping mapping = ClassMapping::scannet20();
+  // evaluate_semantic_label.py: VALID_CLASS_IDS and CLASS_LABELS.
+  const std::vector<std::pair<std::int32_t, std::string>> expected = {
+      {1, "wall"},    {2, "floor"},      {3, "cabinet"},       {4, "bed"},
+      {5, "chair"},   {6, "sofa"},       {7, "table"},         {8, "door"},
+      {9, "window"},  {10, "bookshelf"}, {11, "picture"},      {12, "counter"},
+      {14, "desk"},   {16, "curtain"},   {24, "refrigerator"}, {28, "shower curtain"},
+      {33, "toilet"}, {34, "sink"},      {36, "bathtub"},      {39, "otherfurniture"}};
+  ASSERT_EQ(mapping.evaluation_classes().size(), expected.size());
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    EXPECT_EQ(mapping.evaluation_classes()[i].id, expected[i].first);
+    EXPECT_EQ(mapping.evaluation_classes()[i].name, expected[i].second);
+  }
+  // Ground truth named by NYU40 maps to its own id; the other NYU40 classes
+  // and unannotated are skipped, as the script skips ids outside the 20.
+  EXPECT_EQ(mapping.find("refridgerator"), 24);
+  EXPECT_EQ(mapping.find("ceiling"), mapping.ignore_id());
+  EXPECT_EQ(mapping.find("otherprop"), mapping.ignore_id());
+  EXPECT_EQ(mapping.find("unannotated"), mapping.ignore_id());
+  EXPECT_EQ(mapping.ignored().size(), 21u);
+  EXPECT_FALSE(mapping.find("clutter").has_value());
+  const std::vector<std::string> nyu40 = {"unannotated", "wall", "floor"};
+  EXPECT_EQ(mapping.map_labels({2, 0, 1, -1}, nyu40),
+            (std::vector<std::int32_t>{2, mapping.ignore_id(), 1, mapping.ignore_id()}));
+}
+
+TEST(ClassMapping, BuiltinsByName) {
+  EXPECT_EQ(ClassMapping::builtin("table3.1")->evaluation_classes(),
+            ClassMapping::seed_table().evaluation_classes());
+  EXPECT_EQ(ClassMapping::builtin("scannet20")->evaluation_classes(),
+            ClassMapping::scannet20().evaluation_classes());
+  EXPECT_FALSE(ClassMapping::builtin("scannet200").has_value());
+  EXPECT_EQ(ClassMapping::builtin_names(), (std::vector<std::string>{"table3.1", "scannet20"}));
+}
+
 }  // namespace
 }  // namespace occlusion

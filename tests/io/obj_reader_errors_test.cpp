@@ -130,32 +130,10 @@ TEST(ObjReaderErrors, MalformedCorner) {
   expect_error(std::string(kTriangle) + "f /1 2 3\n", 4, "not a valid reference");
 }
 
-TEST(ObjReaderErrors, RepeatedVertexIsDegenerate) {
-  expect_error(std::string(kTriangle) + "f 1 2 3\nf 1 2 2\n", 5, "degenerate face (zero area)");
-  // The same vertex reached through a relative index.
-  expect_error(std::string(kTriangle) + "f 3 1 -1\n", 4, "degenerate face (zero area)");
-}
-
-TEST(ObjReaderErrors, CollinearTriangleIsDegenerate) {
-  expect_error(std::string(kTriangle) + "v 2 0 0\nf 1 2 3\nf 1 2 4\n", 6,
-               "degenerate face (zero area)");
-}
-
-TEST(ObjReaderErrors, DistinctVerticesAtOnePointAreDegenerate) {
-  expect_error(std::string(kTriangle) + "v 1 0 0\nf 1 2 3\nf 1 2 4\n", 6,
-               "degenerate face (zero area)");
-}
-
-TEST(ObjReaderErrors, AreaJustBelowTheRelativeThresholdIsDegenerate) {
-  // Diagonal^2 = 2, threshold 2e-12; this sliver has area 0.5 * 1e-12.
-  expect_error(std::string(kTriangle) + "v 0.5 1e-12 0\nf 1 2 3\nf 1 2 4\n", 6,
-               "degenerate face (zero area)");
-}
-
-TEST(ObjReaderErrors, DegenerateFanTriangleNamesThePolygonLine) {
-  // The quad's second fan triangle (1, 3, 4) is collinear: vertex 4 lies on edge 1-3.
-  expect_error(std::string(kTriangle) + "v 0 0.5 0\n\nf 1 2 3 4\n", 6,
-               "degenerate face (zero area)");
+TEST(ObjReaderErrors, OnlyDegenerateFacesLeaveNoMesh) {
+  expect_error(std::string(kTriangle) + "f 1 2 2\nf 3 1 -1\n", 0,
+               "no faces with an area: all 2 are degenerate (first, line 4: degenerate face "
+               "(zero area): vertex 2 is used twice in one triangle)");
 }
 
 TEST(ObjReaderErrors, LineNumbersCountContinuedAndCrlfLines) {

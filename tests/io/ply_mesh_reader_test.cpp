@@ -64,7 +64,8 @@ TEST(PlyMeshReader, Errors) {
   expect("range.ply", kPlyHead + face + points + "3 0 1 4\n",
          "face 0: vertex index 4 is out of range");
   expect("flat.ply", kPlyHead + face + "0 0 0\n1 0 0\n2 0 0\n3 0 0\n3 0 1 2\n",
-         "face 0: degenerate face (zero area): vertices 0, 1, 2 are collinear");
+         "no faces with an area: all 1 are degenerate (first, face 0: degenerate face (zero "
+         "area): vertices 0, 1, 2 are collinear)");
   expect("mesh.stl", "solid x\n", "(.obj or .ply");
   testing::write_text(dir.file("two.ply"), kPlyHead + face + points + "2 0 1\n");
   testing::expect_input_error([&] { read_mesh(dir.file("two.ply")); }, "two.ply", 14,

@@ -169,8 +169,9 @@ TEST(PlyReader, HeaderErrorsNameTheLine) {
   testing::write_text(path,
                       "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n"
                       "property float y\nproperty float z\nproperty float red\n"
-                      "property float green\nproperty float blue\nend_header\n1 2 3 0.1 0.2 0.3\n");
-  testing::expect_input_error([&] { read_cloud(path); }, "head.ply", 3, "floating point");
+                      "property uchar green\nproperty float blue\nend_header\n1 2 3 0.1 2 0.3\n");
+  testing::expect_input_error([&] { read_cloud(path); }, "head.ply", 3,
+                              "mixes integer and floating-point");
   testing::write_text(path, "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n");
   testing::expect_input_error([&] { read_cloud(path); }, "head.ply", 0, "no end_header");
   testing::write_text(path,

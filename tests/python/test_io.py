@@ -92,6 +92,15 @@ def test_real_scan_reads():
     assert np.isfinite(cloud.positions).all()
 
 
+def test_e57_reads():
+    cloud = occlusion.read_cloud(str(ROOT / "files" / "e57" / "ColouredCubeFloat.e57"))
+    assert len(cloud) == 7680  # the scan's recordCount
+    assert np.abs(cloud.positions).max() <= 0.5 + 1e-6  # its cartesianBounds
+    assert cloud.colours.shape == (7680, 3)
+    with pytest.raises(occlusion.InputError, match="page 0 .* is corrupt"):
+        occlusion.read_cloud(str(ROOT / "files" / "e57" / "bad-crc.e57"))
+
+
 def test_mesh_round_trip(tmp_path):
     vertices = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0, 0, 1]], dtype=np.float64) / 3
     faces = np.array([[0, 1, 2], [0, 2, 3], [0, 1, 4]])
@@ -109,6 +118,33 @@ def test_mesh_round_trip(tmp_path):
     assert ply.read_bytes().startswith(b"ply\n")
     with pytest.raises(ValueError, match="face_values"):
         occlusion.write_mesh_ply(str(ply), mesh.vertices, mesh.faces, [0.0, 0.5])
+
+
+def test_degenerate_faces_are_skipped_and_counted(tmp_path):
+    path = tmp_path / "d.obj"
+    path.write_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 2 0 0\nf 1 2 3\nf 1 2 4\nf 3 3 1\n")
+    mesh = occlusion.read_mesh(str(path))
+    assert len(mesh) == 1 and mesh.degenerate_faces == 2
+
+
+def test_scannet_scene_reads_with_nyu40_names(tmp_path):
+    header = (
+        "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+        "property uchar red\nproperty uchar green\nproperty uchar blue\n{}element face 1\n"
+        "property list uchar int vertex_indices\nend_header\n"
+    )
+    scene = tmp_path / "scene0000_00"
+    scene.mkdir()
+    (scene / "scene0000_00_vh_clean_2.ply").write_text(
+        header.format("") + "0 0 0 10 20 30\n1 0 0 40 50 60\n0 1 0 70 80 90\n3 0 1 2\n"
+    )
+    (scene / "scene0000_00_vh_clean_2.labels.ply").write_text(
+        header.format("property ushort label\n") + "0 0 0 1 1 1 2\n1 0 0 1 1 1 1\n0 1 0 1 1 1 0\n3 0 1 2\n"
+    )
+    cloud = occlusion.read_cloud(str(scene))
+    np.testing.assert_array_equal(cloud.labels, [2, 1, 0])
+    np.testing.assert_array_equal(cloud.colours[1], [40, 50, 60])
+    assert cloud.class_names[:3] == ["unannotated", "wall", "floor"] and len(cloud.class_names) == 41
 
 
 def test_cornell_box_reads():

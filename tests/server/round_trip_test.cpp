@@ -145,6 +145,21 @@ TEST_F(RoundTrip, LoadS3disRoomStreamsPointsColoursLabels) {
   EXPECT_EQ(labels, cloud.labels);
 }
 
+TEST_F(RoundTrip, LoadE57StreamsItsPointsAndRefusesACorruptOne) {
+  const std::string samples = std::string(OCCLUSION_SOURCE_DIR) + "/files/e57/";
+  fs::copy_file(samples + "ColouredCubeFloat.e57", files().file("cube.e57"));
+  fs::copy_file(samples + "bad-crc.e57", files().file("bad-crc.e57"));
+  const Reply reply = client_->request(8, "load", params(R"({"path": "cube.e57"})"));
+  ASSERT_TRUE(reply.ok()) << reply.final;
+  EXPECT_EQ(reply.final["result"]["kind"].asString(), "cloud");
+  EXPECT_EQ(reply.final["result"]["points"].asUInt64(), 7680u);  // the scan's recordCount
+  EXPECT_EQ(frame_values<std::uint8_t>(*find_frame(reply, "colours")).size(), 3u * 7680u);
+  const Reply corrupt = client_->request(9, "load", params(R"({"path": "bad-crc.e57"})"));
+  EXPECT_EQ(corrupt.error_code(), "input_error");
+  EXPECT_NE(corrupt.final["message"].asString().find("page 0"), std::string::npos)
+      << corrupt.final["message"];
+}
+
 TEST_F(RoundTrip, MeshOcclusionEqualsTheCli) {
   const Reply reply = client_->request(
       10, "mesh_occlusion",

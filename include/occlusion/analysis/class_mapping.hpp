@@ -25,6 +25,8 @@ namespace occlusion {
 class ClassMapping {
  public:
   static constexpr std::int32_t kDefaultIgnoreId = 255;
+  // The built-in mapping jobs score with when none is named.
+  static constexpr const char* kDefaultBuiltin = "table3.1";
 
   // ids: ground-truth class name -> evaluation id (>= 0, not ignore_id).
   // names: names of evaluation ids; an id without one is named by its
@@ -44,6 +46,19 @@ class ClassMapping {
   // table 6, door 7, window 8, bookcase 9, beam 20, board 21, clutter 25,
   // column 26 (S3DIS names), ignore id 255.
   static ClassMapping seed_table();
+
+  // The ScanNet v2 benchmark's 20 classes over NYU40 ground truth
+  // (core/nyu40_classes.hpp): each of the 20 NYU40 classes it scores maps to
+  // its NYU40 id (wall 1, floor 2, ..., otherfurniture 39: the ids a benchmark
+  // submission predicts), named as the benchmark prints it; the other 20
+  // NYU40 classes and "unannotated" are ignored, as the benchmark skips every
+  // ground truth outside VALID_CLASS_IDS. Ignore id 255.
+  static ClassMapping scannet20();
+
+  // The built-in mappings by name: "table3.1" (seed_table) and "scannet20";
+  // nothing for another name.
+  static std::optional<ClassMapping> builtin(const std::string& name);
+  static const std::vector<std::string>& builtin_names();
 
   // The same mapping with more ignored classes.
   ClassMapping with_ignored(const std::vector<std::string>& classes) const;

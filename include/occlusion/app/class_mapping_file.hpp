@@ -10,7 +10,9 @@
 //   }
 //
 // - classes: ground-truth class name -> evaluation id (an integer >= 0).
-//   Absent: the seed's table 3.1 (ClassMapping::seed_table), names included.
+//   Absent: the base mapping (the built-in one the job's class_mapping key
+//   names, table 3.1 by default), its names, ignored classes and ignore id
+//   included, so a file can narrow a built-in mapping.
 // - names: evaluation id (a decimal string, JSON keys are strings) -> name.
 // - ignore: the ignore id, an integer (default 255).
 // - ignored_classes: ground-truth classes whose points are skipped.
@@ -27,7 +29,11 @@ namespace occlusion {
 // UsageError naming `where` (the file) and the key for a wrong key, type or
 // value, and for a file that cannot be opened or is not JSON: a mapping is
 // configuration, like --config.
-ClassMapping parse_class_mapping(const Json::Value& root, const std::string& where);
-ClassMapping load_class_mapping(const std::string& path);
+ClassMapping parse_class_mapping(const Json::Value& root, const std::string& where,
+                                 const ClassMapping& base = ClassMapping::seed_table());
+ClassMapping load_class_mapping(const std::string& path,
+                                const ClassMapping& base = ClassMapping::seed_table());
+// Whether the file gives its own "classes" (and so replaces any base).
+bool mapping_file_has_classes(const std::string& path);
 
 }  // namespace occlusion

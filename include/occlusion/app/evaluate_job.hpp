@@ -24,14 +24,16 @@
 namespace occlusion {
 
 struct EvaluateRequest {
-  std::vector<std::string> ground_truth;     // labelled clouds with class names, one per scene
-  std::vector<std::string> predictions;      // same count and order: clouds or label files
-  std::string mapping_path;                  // empty: the seed's table 3.1
-  std::vector<std::string> ignored_classes;  // skipped on top of the mapping's
+  std::vector<std::string> ground_truth;  // labelled clouds with class names, one per scene
+  std::vector<std::string> predictions;   // same count and order: clouds or label files
+  std::string class_mapping = ClassMapping::kDefaultBuiltin;  // a built-in: table3.1 or scannet20
+  std::string mapping_path;                                   // empty: class_mapping as it is
+  std::vector<std::string> ignored_classes;                   // skipped on top of the mapping's
   double max_distance = 0.05;  // for label transfer; 0: points must be the ground truth's
   // Which classes mIoU and mean class accuracy average over (confusion_matrix.hpp).
   MeanOver mean_over = MeanOver::support;
   bool skip_bad_lines = false;
+  std::string class_names_path;  // names the ground truths' labels; "" = none
   unsigned threads = 0;
   std::string out;
 };
@@ -97,9 +99,11 @@ struct EvaluateReport {
 void validate(const EvaluateRequest& request);
 // Every key of the job (config section occlusion.evaluate), declared once.
 const Keys<EvaluateRequest>& evaluate_keys();
-// A mapping file (or, for "", table 3.1) with `ignored_classes` added.
-// UsageError for a bad file.
-ClassMapping resolve_mapping(const std::string& mapping_path,
+// The built-in mapping `class_mapping` names (ClassMapping::builtin), narrowed
+// by a mapping file (or replaced by one that gives its own classes), with
+// `ignored_classes` added. UsageError for a bad file, and for a file with its
+// own classes beside a built-in other than the default (one would be ignored).
+ClassMapping resolve_mapping(const std::string& class_mapping, const std::string& mapping_path,
                              const std::vector<std::string>& ignored_classes);
 
 // Evaluates one scene. Predictions on the ground truth's own points (same

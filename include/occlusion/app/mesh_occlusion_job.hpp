@@ -39,6 +39,8 @@ struct MeshOcclusionReport {
   std::vector<std::string> viewpoint_names;  // "centre", ... or "viewpoint_1", ...
   std::vector<std::string> outputs;          // files written
   std::vector<std::string> warnings;
+  // Triangles of no area the reader left out (mesh_read_report.hpp).
+  std::size_t degenerate_faces_skipped = 0;
   double load_seconds = 0.0;
   double total_seconds = 0.0;
 };

@@ -39,6 +39,7 @@ struct ScanRequest {
   std::vector<std::string> scans;
   double min_range = 0.0;
   double max_range = 0.0;
+  std::string class_names_path;  // names the cloud's labels (io/class_names_file.hpp); "" = none
   // Box the pattern or grid is placed on: "robust" (per-axis quantiles, cuts
   // off stray points) or "bbox" (all points); see analysis/scene_frame.hpp.
   std::string frame = "robust";

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "occlusion/analysis/class_mapping.hpp"
 #include "occlusion/analysis/confusion_matrix.hpp"
 #include "occlusion/analysis/point_spacing.hpp"
 #include "occlusion/analysis/surfel_estimation.hpp"
@@ -75,6 +76,17 @@ KeyBuilder<R> enable_acceleration_key(bool R::*field) {
 template <class R>
 KeyBuilder<R> skip_bad_lines_key(bool R::*field) {
   return key("skip_bad_lines", field).doc("skip (and count) malformed lines of text inputs");
+}
+
+// For clouds whose integer labels have no names (io/class_names_file.hpp).
+template <class R>
+KeyBuilder<R> class_names_key(std::string R::*field) {
+  return key("class_names", field)
+      .path()
+      .metavar("FILE")
+      .doc(
+          "names of the labels of a cloud that does not name them: one name per line, line k "
+          "(from 0) naming label k");
 }
 
 template <class R>
@@ -217,11 +229,17 @@ KeyBuilder<R> cloud_format_key(std::string R::*field, std::string doc) {
 template <class R>
 Keys<R> scoring_keys() {
   return {
+      key("class_mapping", &R::class_mapping)
+          .choices(ClassMapping::builtin_names())
+          .doc("built-in class mapping: table3.1 (the seed's, S3DIS names) or scannet20 (the "
+               "ScanNet v2 benchmark's 20 classes over NYU40 names, scored as their NYU40 ids); "
+               "docs/metrics.md"),
       key("mapping_path", &R::mapping_path)
           .path()
           .alias("--mapping")
           .metavar("FILE")
-          .doc("class mapping (JSON, docs/metrics.md); empty: the seed's table 3.1"),
+          .doc("class mapping file (JSON, docs/metrics.md): without 'classes' it narrows "
+               "class_mapping, with them it replaces it"),
       key("ignored_classes", &R::ignored_classes)
           .metavar("A,B,...")
           .doc("classes left out of the scores, on top of the mapping's"),

@@ -25,6 +25,7 @@
 #include <string>
 #include <vector>
 
+#include "occlusion/analysis/class_mapping.hpp"
 #include "occlusion/analysis/confusion_matrix.hpp"
 #include "occlusion/analysis/correlation.hpp"
 #include "occlusion/analysis/mesh_estimation.hpp"
@@ -69,7 +70,8 @@ struct StudyRequest {
   // marked failed; 0: no limit.
   double segmenter_timeout = 0.0;
   RegionGrowingOptions estimation = default_study_estimation();  // the baseline's planes
-  std::string mapping_path;  // as -eval; "" = the seed's table 3.1
+  std::string class_mapping = ClassMapping::kDefaultBuiltin;     // as -eval: table3.1 or scannet20
+  std::string mapping_path;  // as -eval; "" = class_mapping as it is
   std::vector<std::string> ignored_classes;
   MeanOver mean_over = MeanOver::support;  // as -eval: which classes mIoU averages
   std::string shard = "0/1";               // "i/n"

@@ -36,6 +36,11 @@ struct SensorFrame {
 // camera): each is a default viewpoint of the cloud and the origin its points'
 // ranges are measured from. `frame` is in the cloud's local frame; its
 // width x height is the scan's grid (columns x rows) when the scan has one.
+// For a laser scanner (E57), frame.orientation is the scan's pose rotation:
+// it turns the scanner's own frame (E57's: z up, the azimuth measured from x
+// towards y, elevation from the xy plane) into the cloud's, so it is *not* the
+// camera convention of SensorFrame (+z forward, +y down) that depth frames and
+// PCD viewpoints use. frame.origin is the pose's translation.
 struct Station {
   std::string name;
   SensorFrame frame;

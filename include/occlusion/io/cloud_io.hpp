@@ -6,6 +6,9 @@
 // read_cloud chooses the reader by what `path` is:
 //   .pcd                ascii, binary or binary_compressed (PCL); fields x y z,
 //                       rgb/rgba (packed) or r g b, label, instance or object
+//   .e57                every data3D scan (ASTM E2807): cartesian or spherical
+//                       coordinates with the scan's pose applied, colour,
+//                       intensity; each scan a station (PointCloud::stations)
 //   .ply                ascii, binary_little_endian or binary_big_endian; vertex
 //                       x y z, red green blue, label or class, instance or object;
 //                       `comment class <id> <name>` header lines give class names
@@ -66,8 +69,11 @@ struct CloudReadOptions {
 };
 
 struct CloudReadReport {
-  std::size_t dropped_nan = 0;     // points dropped for a non-finite coordinate
-  std::size_t skipped_lines = 0;   // bad text lines skipped (skip_bad_lines)
+  std::size_t dropped_nan = 0;    // points dropped for a non-finite coordinate
+  std::size_t skipped_lines = 0;  // bad text lines skipped (skip_bad_lines)
+  // E57 points whose scan marks them invalid or direction-only (invalid state
+  // 2 or 1: no range was measured), dropped.
+  std::size_t dropped_invalid = 0;
   std::vector<std::string> rooms;  // S3DIS room folder names, in reading order
   // S3DIS rooms whose points are in Annotations order because <room>.txt is
   // missing or holds other points, one sentence each saying which and why.

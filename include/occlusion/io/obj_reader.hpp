@@ -13,22 +13,24 @@
 //
 // Everything else is an InputError naming the file and the 1-based line: an index
 // that is 0 or out of range, a missing, non-numeric or non-finite coordinate, a
-// face with fewer than 3 corners, a degenerate triangle (a repeated vertex, or
-// area <= 1e-12 * squared diagonal of the bounding box of the face vertices),
-// and a file with no faces. A degenerate face is reported, not dropped, because
-// silently changing the surface would change the occlusion result.
+// face with fewer than 3 corners, and a file with no faces, or none with an
+// area. A degenerate triangle (a repeated vertex, or area <= 1e-12 * squared
+// diagonal of the bounding box of the face vertices) is dropped and counted in
+// `report` (mesh_read_report.hpp): it has no area and no ray hits it.
 
 #include <string>
 #include <string_view>
 
 #include "occlusion/core/mesh.hpp"
+#include "occlusion/io/mesh_read_report.hpp"
 
 namespace occlusion {
 
 // read_mesh (mesh_reader.hpp) chooses this or the PLY reader by extension.
-TriangleMesh read_obj(const std::string& path);
+TriangleMesh read_obj(const std::string& path, MeshReadReport* report = nullptr);
 
 // Parses OBJ text; `source_name` is only used in error messages.
-TriangleMesh parse_obj(std::string_view text, const std::string& source_name);
+TriangleMesh parse_obj(std::string_view text, const std::string& source_name,
+                       MeshReadReport* report = nullptr);
 
 }  // namespace occlusion

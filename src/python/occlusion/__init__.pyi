@@ -170,6 +170,7 @@ class Mesh:
     faces: npt.NDArray[np.uint32]  # (M, 3)
     face_group: npt.NDArray[np.uint32]  # (M,)
     group_names: list[str]
+    degenerate_faces: int  # zero-area triangles the reader skipped
     def __len__(self) -> int: ...
 
 def read_cloud(path: _Path, *, skip_bad_lines: bool = False) -> Cloud: ...
