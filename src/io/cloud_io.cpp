@@ -7,6 +7,7 @@
 
 #include "cloud_formats.hpp"
 #include "file_names.hpp"
+#include "frame_descriptor.hpp"
 #include "occlusion/io/input_error.hpp"
 
 namespace occlusion {
@@ -23,16 +24,29 @@ PointCloud read_by_kind(const std::string& path, const CloudReadOptions& options
   const auto kind = std::filesystem::status(path, status);
   if (!std::filesystem::exists(kind)) throw InputError(path, 0, "no such file or directory");
   if (std::filesystem::is_directory(kind)) return detail::read_s3dis(path, options, report);
+  if (detail::has_lower_suffix(path, detail::kFrameDescriptorSuffix)) {
+    return detail::read_depth_frame(path, options, report);
+  }
   const std::string extension = detail::lower_extension(path);
   if (extension == ".pcd") return detail::read_pcd(path, options, report);
+  if (extension == ".las" || extension == ".laz") return detail::read_las(path, options, report);
+  if (extension == ".png") {
+    throw InputError(path, 0,
+                     "a depth image alone cannot say its depth unit nor its camera's "
+                     "intrinsics: describe it in a frame descriptor, NAME" +
+                         std::string(detail::kFrameDescriptorSuffix) +
+                         " ({\"depth\": \"depth.png\", \"intrinsics\": {\"fx\": ..., "
+                         "\"fy\": ..., \"cx\": ..., \"cy\": ...}, \"depth_scale\": 1000}; "
+                         "docs/formats.md), and give that");
+  }
   if (extension == ".ply") return detail::read_ply(path, options, report);
   if (extension == ".txt" || extension == ".xyz" || extension == ".pts") {
     return detail::read_text_cloud(path, options, report);
   }
   throw InputError(path, 0,
                    "unknown point cloud extension '" + extension +
-                       "'; supported: .pcd, .ply, .txt, .xyz, .pts, or an S3DIS room or Area "
-                       "folder");
+                       "'; supported: .pcd, .ply, .txt, .xyz, .pts, .las, a depth frame's "
+                       ".frame.json, or an S3DIS room or Area folder");
 }
 
 // A shift chosen from the first point helps a cloud that lies far from the

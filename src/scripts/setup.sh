@@ -10,6 +10,8 @@ packages=(
   libeigen3-dev libjsoncpp-dev libgtest-dev
   libpcl-dev libflann-dev
   libwebsocketpp-dev libboost-dev libboost-system-dev
+  # Depth frames' PNG images (src/io/png_image.cpp).
+  libpng-dev
   # The study's sharding recipes, run for real by tests/scripts/study_*_test.sh.
   slurm-wlm munge parallel
   # libFuzzer targets with ASan + UBSan (src/scripts/fuzz.sh).
