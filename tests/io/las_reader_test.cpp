@@ -74,7 +74,8 @@ TEST(LasReader, ReadsEveryPointFormatOfEveryVersion) {
           EXPECT_EQ(cloud.labels[i], p.classification);
         }
         // Legacy formats: the flags above the 5-bit class are masked off.
-        const bool coloured = format == 2 || format == 3 || format == 5 || format >= 7;
+        const bool coloured = format == 2 || format == 3 || format == 5 || format == 7 ||
+                              format == 8 || format == 10;
         ASSERT_EQ(cloud.has_colours(), coloured);
         if (coloured) {
           // 16-bit colours: the top byte.
