@@ -51,9 +51,9 @@ PointCloud read_depth_frame(const std::string& path, const CloudReadOptions& opt
     }
   }
   if (cloud.positions.empty()) {
-    throw InputError(path, 0,
-                     "no points: every pixel of the depth image " + frame.depth_path +
-                         " is 0 (no measurement)");
+    throw InputError(
+        path, 0,
+        "no points: every pixel of the depth image " + frame.depth_path + " is 0 (no measurement)");
   }
   cloud.shift = shifted.checked_shift(path);
   SensorFrame sensor;

@@ -80,7 +80,8 @@ class DescriptorParser {
 
   // The line where `value` starts in the file.
   std::size_t line_of(const Json::Value& value) const {
-    const auto offset = static_cast<std::size_t>(std::max<std::ptrdiff_t>(0, value.getOffsetStart()));
+    const auto offset =
+        static_cast<std::size_t>(std::max<std::ptrdiff_t>(0, value.getOffsetStart()));
     const auto end = text_.begin() + static_cast<std::ptrdiff_t>(std::min(offset, text_.size()));
     return 1 + static_cast<std::size_t>(std::count(text_.begin(), end, '\n'));
   }
@@ -156,8 +157,8 @@ class DescriptorParser {
     frame.translation = Eigen::Vector3d(v[0], v[1], v[2]);
     const Eigen::Quaterniond q(v[6], v[3], v[4], v[5]);
     if (std::fabs(q.norm() - 1.0) > kRotationTolerance) {
-      fail(pose, "the quaternion qx qy qz qw of 'pose_tum' has length " +
-                     std::to_string(q.norm()) + ", not 1: is the order tx ty tz qx qy qz qw?");
+      fail(pose, "the quaternion qx qy qz qw of 'pose_tum' has length " + std::to_string(q.norm()) +
+                     ", not 1: is the order tx ty tz qx qy qz qw?");
     }
     frame.rotation = q.normalized();
   }
@@ -172,8 +173,9 @@ class DescriptorParser {
       for (Json::ArrayIndex c = 0; c < 4; ++c) {
         const Json::Value& x = pose[r][c];
         if (x.isNumeric() && !std::isfinite(x.asDouble())) {
-          fail(x, "'camera_to_world' holds a value that is not finite: ScanNet marks frames "
-                  "whose pose was lost with -inf; such a frame has no pose to use");
+          fail(x,
+               "'camera_to_world' holds a value that is not finite: ScanNet marks frames "
+               "whose pose was lost with -inf; such a frame has no pose to use");
         }
         m(r, c) = number(x, "camera_to_world");
       }
@@ -184,8 +186,9 @@ class DescriptorParser {
     const Eigen::Matrix3d r = m.topLeftCorner<3, 3>();
     const double off = (r.transpose() * r - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
     if (off > kRotationTolerance || r.determinant() <= 0) {
-      fail(pose, "the upper-left 3x3 of 'camera_to_world' is not a rotation (it scales, shears "
-                 "or mirrors): a camera pose is a rigid motion");
+      fail(pose,
+           "the upper-left 3x3 of 'camera_to_world' is not a rotation (it scales, shears "
+           "or mirrors): a camera pose is a rigid motion");
     }
     frame.rotation = Eigen::Quaterniond(r).normalized();
     frame.translation = m.topRightCorner<3, 1>();

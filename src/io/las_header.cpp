@@ -29,7 +29,9 @@ constexpr std::size_t kHeaderSize13 = 235;
 constexpr std::size_t kHeaderSize14 = 375;
 constexpr std::size_t kVlrHeaderSize = 54;
 
-std::string at_byte(std::size_t offset) { return "byte " + std::to_string(offset) + ": "; }
+std::string at_byte(std::size_t offset) {
+  return "byte " + std::to_string(offset) + ": ";
+}
 
 // The LASzip compressor marks its files by setting bit 7 (and, for some
 // versions, bit 6) of the point format and by a "laszip encoded" VLR.
@@ -80,8 +82,7 @@ LasHeader read_las_header(const std::string& path, std::string_view bytes) {
   if (bytes.size() < kHeaderSize12) {
     throw InputError(path, 0,
                      "truncated: the file ends at byte " + std::to_string(bytes.size()) +
-                         ", inside the " + std::to_string(kHeaderSize12) +
-                         "-byte LAS header");
+                         ", inside the " + std::to_string(kHeaderSize12) + "-byte LAS header");
   }
   LasHeader header;
   const int major = data[kVersionMajorAt];
@@ -144,9 +145,8 @@ LasHeader read_las_header(const std::string& path, std::string_view bytes) {
     if (count != 0 && legacy_count != 0 && count != legacy_count) {
       throw InputError(path, 0,
                        at_byte(kCountAt) + "the point count " + std::to_string(count) +
-                           " differs from the legacy point count " +
-                           std::to_string(legacy_count) + " at byte " +
-                           std::to_string(kLegacyCountAt));
+                           " differs from the legacy point count " + std::to_string(legacy_count) +
+                           " at byte " + std::to_string(kLegacyCountAt));
     }
     if (count != 0) header.point_count = count;
   }

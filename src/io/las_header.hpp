@@ -11,8 +11,8 @@
 namespace occlusion::detail {
 
 struct LasHeader {
-  int version_minor = 0;  // LAS 1.<minor>
-  int point_format = 0;   // 0..10
+  int version_minor = 0;          // LAS 1.<minor>
+  int point_format = 0;           // 0..10
   std::size_t record_length = 0;  // bytes per point, at least the format's own
   std::uint64_t point_count = 0;
   std::uint64_t point_offset = 0;  // byte where the point records start

@@ -13,14 +13,18 @@ inline std::uint64_t load_le(const unsigned char* at, int bytes) {
   for (int k = 0; k < bytes; ++k) value |= std::uint64_t{at[k]} << (8 * k);
   return value;
 }
-inline std::uint8_t le_u8(const unsigned char* at) { return at[0]; }
+inline std::uint8_t le_u8(const unsigned char* at) {
+  return at[0];
+}
 inline std::uint16_t le_u16(const unsigned char* at) {
   return static_cast<std::uint16_t>(load_le(at, 2));
 }
 inline std::uint32_t le_u32(const unsigned char* at) {
   return static_cast<std::uint32_t>(load_le(at, 4));
 }
-inline std::uint64_t le_u64(const unsigned char* at) { return load_le(at, 8); }
+inline std::uint64_t le_u64(const unsigned char* at) {
+  return load_le(at, 8);
+}
 inline std::int32_t le_i32(const unsigned char* at) {
   return static_cast<std::int32_t>(le_u32(at));
 }

@@ -115,10 +115,10 @@ class PngReader {
     if (decoded > kMaxDeflateRatio * bytes_.size()) {
       throw InputError(path_, 0,
                        "corrupt: a " + std::to_string(layout_.width) + " x " +
-                           std::to_string(layout_.height) + " image of " +
-                           std::to_string(decoded) + " bytes cannot be compressed into " +
-                           std::to_string(bytes_.size()) + " bytes (deflate shrinks at most " +
-                           std::to_string(kMaxDeflateRatio) + "-fold)");
+                           std::to_string(layout_.height) + " image of " + std::to_string(decoded) +
+                           " bytes cannot be compressed into " + std::to_string(bytes_.size()) +
+                           " bytes (deflate shrinks at most " + std::to_string(kMaxDeflateRatio) +
+                           "-fold)");
     }
     pixels.resize(static_cast<std::size_t>(layout_.height) * row_bytes);
     std::vector<png_bytep> rows(layout_.height);

@@ -30,11 +30,11 @@ std::string write_room_frame(const TempDir& dir, const std::string& pose_tum) {
   testing::write_depth_png(dir.file("room_depth.png"), kWidth, kHeight, depth);
   // kinect_like_frame puts pixel (u, v)'s centre at u + 0.5 - width / 2.
   const double focal = 0.5 * kWidth / std::tan(0.5 * 57.0 * M_PI / 180.0);
-  dir.write("room.frame.json", "{\"depth\": \"room_depth.png\", \"depth_scale\": 1000,\n"
-                               " \"intrinsics\": {\"fx\": " +
-                                   std::to_string(focal) + ", \"fy\": " + std::to_string(focal) +
-                                   ", \"cx\": 79.5, \"cy\": 59.5},\n \"pose_tum\": " + pose_tum +
-                                   "}\n");
+  dir.write("room.frame.json",
+            "{\"depth\": \"room_depth.png\", \"depth_scale\": 1000,\n"
+            " \"intrinsics\": {\"fx\": " +
+                std::to_string(focal) + ", \"fy\": " + std::to_string(focal) +
+                ", \"cx\": 79.5, \"cy\": 59.5},\n \"pose_tum\": " + pose_tum + "}\n");
   return dir.file("room.frame.json");
 }
 

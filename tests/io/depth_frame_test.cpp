@@ -68,7 +68,9 @@ class DepthFrame : public ::testing::Test {
 
 // Where pixel i went, given the order the reader keeps (row by row, no
 // pixel skipped but (0, 0)).
-std::size_t index_of(std::size_t u, std::size_t v) { return v * kWidth + u - 1; }
+std::size_t index_of(std::size_t u, std::size_t v) {
+  return v * kWidth + u - 1;
+}
 
 TEST_F(DepthFrame, BackProjectsEveryMeasuredPixelThroughTheIntrinsics) {
   const PointCloud cloud = read_cloud(valid());
@@ -79,8 +81,7 @@ TEST_F(DepthFrame, BackProjectsEveryMeasuredPixelThroughTheIntrinsics) {
   // plane pixel (7, 0): (3.5 * 0.2, -2.5 * 0.2, 2)
   EXPECT_TRUE(cloud.positions[index_of(7, 0)].isApprox(Eigen::Vector3f(0.7f, -0.5f, 2.0f)));
   // box pixel (3, 2): (-0.5 * 0.15, -0.5 * 0.15, 1.5)
-  EXPECT_TRUE(
-      cloud.positions[index_of(3, 2)].isApprox(Eigen::Vector3f(-0.075f, -0.075f, 1.5f)));
+  EXPECT_TRUE(cloud.positions[index_of(3, 2)].isApprox(Eigen::Vector3f(-0.075f, -0.075f, 1.5f)));
   std::size_t box = 0;
   for (const Eigen::Vector3f& p : cloud.positions) box += std::fabs(p.z() - 1.5f) < 1e-6f;
   EXPECT_EQ(box, 9u);
@@ -115,8 +116,8 @@ TEST_F(DepthFrame, ColoursComeFromTheSamePixel) {
 TEST_F(DepthFrame, PoseMovesPointsAndSensorAlike) {
   // 90 degrees about z, then (1, 2, 3): camera (x, y, z) -> (1 - y, 2 + x, 3 + z).
   const double s = std::sqrt(0.5);
-  const std::string tum = ",\n  \"pose_tum\": [1, 2, 3, 0, 0, " + std::to_string(s) + ", " +
-                          std::to_string(s) + "]";
+  const std::string tum =
+      ",\n  \"pose_tum\": [1, 2, 3, 0, 0, " + std::to_string(s) + ", " + std::to_string(s) + "]";
   const std::string matrix =
       ",\n  \"camera_to_world\": [[0, -1, 0, 1], [1, 0, 0, 2], [0, 0, 1, 3], [0, 0, 0, 1]]";
   for (const std::string& pose : {tum, matrix}) {
@@ -134,7 +135,8 @@ TEST_F(DepthFrame, PoseMovesPointsAndSensorAlike) {
 }
 
 TEST_F(DepthFrame, FarPosesKeepPrecisionThroughTheGlobalShift) {
-  const PointCloud cloud = read_cloud(valid(",\n  \"pose_tum\": [500000, 5400000, 300, 0, 0, 0, 1]"));
+  const PointCloud cloud =
+      read_cloud(valid(",\n  \"pose_tum\": [500000, 5400000, 300, 0, 0, 0, 1]"));
   ASSERT_TRUE(cloud.shifted());
   EXPECT_TRUE(cloud.original_position(index_of(3, 2))
                   .isApprox(Eigen::Vector3d(500000 - 0.075, 5400000 - 0.075, 301.5), 1e-12));
@@ -151,8 +153,7 @@ TEST_F(DepthFrame, RefusesImagesThatCannotBeADepthFrame) {
   testing::write_8bit_png(scratch.file("small.png"), kWidth - 1, kHeight, 3,
                           colour_ramp(kWidth - 1, kHeight));
   testing::expect_input_error([&] { read_cloud(valid(",\n  \"colour\": \"small.png\"")); },
-                              "frame_a.frame.json", 0,
-                              "is 7 x 6 pixels, the depth image");
+                              "frame_a.frame.json", 0, "is 7 x 6 pixels, the depth image");
   // An 8-bit image holds no depth unit.
   testing::write_8bit_png(scratch.file("depth.png"), kWidth, kHeight, 1,
                           std::vector<std::uint8_t>(kWidth * kHeight, 9));
@@ -163,8 +164,7 @@ TEST_F(DepthFrame, RefusesImagesThatCannotBeADepthFrame) {
   testing::expect_input_error([&] { read_cloud(valid()); }, "frame_a.frame.json", 0,
                               "every pixel of the depth image");
   write_text(scratch.file("depth.png"), "\x89PNG\r\n\x1a\n truncated");
-  testing::expect_input_error([&] { read_cloud(valid()); }, "depth.png", 0,
-                              "not a valid PNG file");
+  testing::expect_input_error([&] { read_cloud(valid()); }, "depth.png", 0, "not a valid PNG file");
   std::filesystem::remove(scratch.file("depth.png"));
   testing::expect_input_error([&] { read_cloud(valid()); }, "depth.png", 0, "");
 }
@@ -198,8 +198,7 @@ TEST_F(DepthFrame, RefusesBadDescriptorFieldsNamingTheirLine) {
       {base + ",\n  \"camera_to_world\": [[1, 0, 0, -Infinity], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, "
               "0, 1]]",
        5, "pose was lost"},
-      {base + ",\n  \"pose_tum\": [0, 0, 0, 0, 0, 0, 1],\n  \"camera_to_world\": 1", 6,
-       "keep one"},
+      {base + ",\n  \"pose_tum\": [0, 0, 0, 0, 0, 0, 1],\n  \"camera_to_world\": 1", 6, "keep one"},
       {base + ",\n  \"name\": 3", 5, "'name' is a non-empty string"},
   };
   for (const Case& c : cases) {

@@ -5,8 +5,8 @@
 
 #include <cmath>
 #include <cstring>
-#include <functional>
 #include <fstream>
+#include <functional>
 #include <map>
 
 #include "io/cloud_test_support.hpp"
@@ -37,8 +37,8 @@ std::vector<LasTestPoint> three_points(bool extended) {
   std::vector<LasTestPoint> points(3);
   points[0] = {1.5, -2.25, 3.125, 100, 2, {0xFF00, 0x8001, 0x0100}};
   points[1] = {10.001, 20.002, -0.5, 65535, 6, {0x0000, 0x7FFF, 0xFFFF}};
-  points[2] = {-7.0, 8.0, 9.0, 0, static_cast<std::uint8_t>(extended ? 200 : 31),
-               {0x1234, 0x5678, 0x9ABC}};
+  points[2] = {
+      -7.0, 8.0, 9.0, 0, static_cast<std::uint8_t>(extended ? 200 : 31), {0x1234, 0x5678, 0x9ABC}};
   return points;
 }
 
@@ -67,15 +67,15 @@ TEST(LasReader, ReadsEveryPointFormatOfEveryVersion) {
         EXPECT_FALSE(cloud.shifted());
         for (std::size_t i = 0; i < 3; ++i) {
           const LasTestPoint& p = file.points[i];
-          EXPECT_EQ(cloud.positions[i], Eigen::Vector3f(static_cast<float>(p.x),
-                                                        static_cast<float>(p.y),
-                                                        static_cast<float>(p.z)));
+          EXPECT_EQ(cloud.positions[i],
+                    Eigen::Vector3f(static_cast<float>(p.x), static_cast<float>(p.y),
+                                    static_cast<float>(p.z)));
           EXPECT_EQ(cloud.intensities[i], static_cast<float>(p.intensity));
           EXPECT_EQ(cloud.labels[i], p.classification);
         }
         // Legacy formats: the flags above the 5-bit class are masked off.
-        const bool coloured = format == 2 || format == 3 || format == 5 || format == 7 ||
-                              format == 8 || format == 10;
+        const bool coloured =
+            format == 2 || format == 3 || format == 5 || format == 7 || format == 8 || format == 10;
         ASSERT_EQ(cloud.has_colours(), coloured);
         if (coloured) {
           // 16-bit colours: the top byte.
@@ -180,8 +180,8 @@ TEST(LasReader, ReadsLaspysSimpleSampleAsItsHeaderSays) {
   std::map<int, int> classes;
   for (int label : cloud.labels) ++classes[label];
   EXPECT_EQ(classes, (std::map<int, int>{{1, 789}, {2, 276}}));
-  EXPECT_EQ(cloud.class_names, (std::vector<std::string>{"never_classified", "unclassified",
-                                                         "ground"}));
+  EXPECT_EQ(cloud.class_names,
+            (std::vector<std::string>{"never_classified", "unclassified", "ground"}));
   // Its colours are 8-bit values in the 16-bit fields (at most 249): kept.
   ASSERT_TRUE(cloud.has_colours());
   int brightest = 0;
@@ -260,7 +260,7 @@ TEST(LasReader, RefusesCorruptOrLyingHeadersNamingTheByte) {
         b[testing::kLasHeaderSizeAt] = static_cast<char>(227);
         b[testing::kLasHeaderSizeAt + 1] = 0;
       },
-                 "byte 94: header size 227 is less than the 375 bytes of a LAS 1.4 header", 4);
+      "byte 94: header size 227 is less than the 375 bytes of a LAS 1.4 header", 4);
   expect_corrupt([](std::string& b) { put_u32(b, testing::kLasPointOffsetAt, 100000); },
                  "byte 96: the points are said to start at byte 100000");
   expect_corrupt([](std::string& b) { b[testing::kLasPointFormatAt] = 11; },

@@ -76,7 +76,8 @@ std::string las_bytes(const LasTestFile& file) {
     const std::size_t at = point_offset + i * record;
     const double v[3] = {p.x, p.y, p.z};
     for (int a = 0; a < 3; ++a) {
-      const auto stored = static_cast<std::int64_t>(std::llround((v[a] - file.offset[a]) / file.scale[a]));
+      const auto stored =
+          static_cast<std::int64_t>(std::llround((v[a] - file.offset[a]) / file.scale[a]));
       put(bytes, at + 4 * a, static_cast<std::uint32_t>(static_cast<std::int32_t>(stored)), 4);
     }
     put(bytes, at + 12, p.intensity, 2);
@@ -89,7 +90,8 @@ std::string las_bytes(const LasTestFile& file) {
       bytes[at + 15] = static_cast<char>((p.classification & 0x1Fu) | flags);
     }
     if (kColourAt[file.point_format] != 0) {
-      for (int c = 0; c < 3; ++c) put(bytes, at + kColourAt[file.point_format] + 2 * c, p.rgb[c], 2);
+      for (int c = 0; c < 3; ++c)
+        put(bytes, at + kColourAt[file.point_format] + 2 * c, p.rgb[c], 2);
     }
     for (std::size_t k = 0; k < file.extra_bytes; ++k) {
       bytes[at + kRecordSize[file.point_format] + k] = static_cast<char>(0xA5);

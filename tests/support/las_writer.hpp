@@ -14,7 +14,7 @@ namespace occlusion::testing {
 struct LasTestPoint {
   double x = 0, y = 0, z = 0;  // stored as round((v - offset) / scale)
   std::uint16_t intensity = 0;
-  std::uint8_t classification = 0;  // formats 0-5: 0..31, written below the flags
+  std::uint8_t classification = 0;     // formats 0-5: 0..31, written below the flags
   std::array<std::uint16_t, 3> rgb{};  // formats with colour only
 };
 

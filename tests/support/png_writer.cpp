@@ -8,8 +8,8 @@ namespace occlusion::testing {
 namespace {
 
 // libpng's simplified API: no longjmp to handle here.
-void write_png(const std::string& path, std::size_t width, std::size_t height,
-               png_uint_32 format, const void* pixels) {
+void write_png(const std::string& path, std::size_t width, std::size_t height, png_uint_32 format,
+               const void* pixels) {
   png_image image{};
   image.version = PNG_IMAGE_VERSION;
   image.width = static_cast<png_uint_32>(width);
