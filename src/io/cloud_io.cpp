@@ -36,8 +36,9 @@ PointCloud read_by_kind(const std::string& path, const CloudReadOptions& options
                      "intrinsics: describe it in a frame descriptor, NAME" +
                          std::string(detail::kFrameDescriptorSuffix) +
                          " ({\"depth\": \"depth.png\", \"intrinsics\": {\"fx\": ..., "
-                         "\"fy\": ..., \"cx\": ..., \"cy\": ...}, \"depth_scale\": 1000}; "
-                         "docs/formats.md), and give that");
+                         "\"fy\": ..., \"cx\": ..., \"cy\": ...}, \"depth_scale\": ...}, "
+                         "the scale in depth values per metre, e.g. TUM 5000, ScanNet 1000; "
+                         "docs/formats.md), and give that file");
   }
   if (extension == ".ply") return detail::read_ply(path, options, report);
   if (extension == ".txt" || extension == ".xyz" || extension == ".pts") {
