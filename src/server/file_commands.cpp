@@ -35,7 +35,8 @@ std::string lower_extension(const fs::path& path) {
 std::string file_kind(const fs::path& path) {
   const std::string extension = lower_extension(path);
   if (extension == ".obj") return "mesh";
-  if (extension == ".ply" || extension == ".pcd" || extension == ".xyz" || extension == ".pts") {
+  if (extension == ".ply" || extension == ".pcd" || extension == ".xyz" || extension == ".pts" ||
+      extension == ".las" || lower_extension(path.stem()) + extension == ".frame.json") {
     return "cloud";
   }
   if (extension == ".txt") return "text";
