@@ -18,18 +18,54 @@ bool is_pcd(CloudFormat format) {
          format == CloudFormat::kPcdBinaryCompressed;
 }
 
+using CloudReaderFunction = PointCloud (*)(const std::string&, const CloudReadOptions&,
+                                           CloudReadReport&);
+struct CloudReader {
+  const char* suffix;  // lower case, with its dot
+  CloudReaderFunction read;
+};
+// The one list of the files read_cloud reads: the server's file kinds, its
+// uploads and the viewer (through hello) take their suffixes from here.
+const CloudReader kCloudReaders[] = {
+    {".pcd", detail::read_pcd},
+    {".ply", detail::read_ply},
+    {".txt", detail::read_text_cloud},
+    {".xyz", detail::read_text_cloud},
+    {".pts", detail::read_text_cloud},
+    {".las", detail::read_las},
+    {detail::kFrameDescriptorSuffix, detail::read_depth_frame},
+};
+
+// The reader of the longest suffix `path` ends in (".frame.json" before ".json").
+const CloudReader* reader_for(const std::string& path) {
+  const CloudReader* best = nullptr;
+  for (const CloudReader& reader : kCloudReaders) {
+    if (detail::has_suffix(path, reader.suffix) &&
+        (best == nullptr || std::string(reader.suffix).size() > std::string(best->suffix).size())) {
+      best = &reader;
+    }
+  }
+  return best;
+}
+
+std::string joined(const std::vector<std::string>& items) {
+  std::string text;
+  for (const auto& item : items) text += (text.empty() ? "" : ", ") + item;
+  return text;
+}
+
 PointCloud read_by_kind(const std::string& path, const CloudReadOptions& options,
                         CloudReadReport& report) {
   std::error_code status;
   const auto kind = std::filesystem::status(path, status);
   if (!std::filesystem::exists(kind)) throw InputError(path, 0, "no such file or directory");
   if (std::filesystem::is_directory(kind)) return detail::read_s3dis(path, options, report);
-  if (detail::has_lower_suffix(path, detail::kFrameDescriptorSuffix)) {
-    return detail::read_depth_frame(path, options, report);
-  }
+  if (const CloudReader* reader = reader_for(path)) return reader->read(path, options, report);
+  // Files no reader reads that users give anyway: each is refused saying
+  // why and what to do (they are not in the table, so not offered either).
   const std::string extension = detail::lower_extension(path);
-  if (extension == ".pcd") return detail::read_pcd(path, options, report);
-  if (extension == ".las" || extension == ".laz") return detail::read_las(path, options, report);
+  // A LAZ file: the LAS reader refuses it, saying how to decompress it.
+  if (extension == ".laz") return detail::read_las(path, options, report);
   if (extension == ".png") {
     throw InputError(path, 0,
                      "a depth image alone cannot say its depth unit nor its camera's "
@@ -40,14 +76,9 @@ PointCloud read_by_kind(const std::string& path, const CloudReadOptions& options
                          "the scale in depth values per metre, e.g. TUM 5000, ScanNet 1000; "
                          "docs/formats.md), and give that file");
   }
-  if (extension == ".ply") return detail::read_ply(path, options, report);
-  if (extension == ".txt" || extension == ".xyz" || extension == ".pts") {
-    return detail::read_text_cloud(path, options, report);
-  }
   throw InputError(path, 0,
-                   "unknown point cloud extension '" + extension +
-                       "'; supported: .pcd, .ply, .txt, .xyz, .pts, .las, a depth frame's "
-                       ".frame.json, or an S3DIS room or Area folder");
+                   "unknown point cloud extension '" + extension + "'; supported: " +
+                       joined(cloud_file_suffixes()) + ", or an S3DIS room or Area folder");
 }
 
 // A shift chosen from the first point helps a cloud that lies far from the
@@ -80,6 +111,19 @@ PointCloud read_shifted(const std::string& path, const CloudReadOptions& options
 }
 
 }  // namespace
+
+const std::vector<std::string>& cloud_file_suffixes() {
+  static const std::vector<std::string> suffixes = [] {
+    std::vector<std::string> list;
+    for (const CloudReader& reader : kCloudReaders) list.emplace_back(reader.suffix);
+    return list;
+  }();
+  return suffixes;
+}
+
+bool is_cloud_file(const std::string& path) {
+  return reader_for(path) != nullptr;
+}
 
 PointCloud read_cloud(const std::string& path, const CloudReadOptions& options,
                       CloudReadReport* report) {

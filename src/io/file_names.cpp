@@ -13,13 +13,12 @@ std::string lower_extension(const std::string& path) {
   return extension;
 }
 
-bool has_lower_suffix(const std::string& path, const std::string& suffix) {
+bool has_suffix(const std::string& path, const std::string& suffix) {
   const std::string name = std::filesystem::path(path).filename().string();
-  if (name.size() < suffix.size()) return false;
-  return std::equal(suffix.begin(), suffix.end(),
-                    name.end() - static_cast<std::ptrdiff_t>(suffix.size()), [](char a, char b) {
-                      return a == static_cast<char>(std::tolower(static_cast<unsigned char>(b)));
-                    });
+  if (name.size() <= suffix.size()) return false;
+  return std::equal(suffix.rbegin(), suffix.rend(), name.rbegin(), [](char expected, char c) {
+    return expected == static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  });
 }
 
 }  // namespace occlusion::detail

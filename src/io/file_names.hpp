@@ -8,8 +8,9 @@ namespace occlusion::detail {
 
 // The extension with its dot, lower-cased: "scan.PCD" -> ".pcd", "room" -> "".
 std::string lower_extension(const std::string& path);
-// Whether the file name ends with `suffix` (lower case, e.g. ".frame.json")
-// in any letter case.
-bool has_lower_suffix(const std::string& path, const std::string& suffix);
+// Whether the file name of `path` ends in `suffix` (lower case, with its dot),
+// in any letter case: "Frame.E57" ends in ".e57". A suffix may hold several
+// dots, which an extension cannot.
+bool has_suffix(const std::string& path, const std::string& suffix);
 
 }  // namespace occlusion::detail

@@ -14,6 +14,7 @@
 #include "command_table.hpp"
 #include "occlusion/app/json_output.hpp"
 #include "occlusion/io/atomic_file.hpp"
+#include "occlusion/io/cloud_io.hpp"
 #include "occlusion/io/polygon_file.hpp"
 #include "occlusion/server/protocol_error.hpp"
 
@@ -35,11 +36,9 @@ std::string lower_extension(const fs::path& path) {
 std::string file_kind(const fs::path& path) {
   const std::string extension = lower_extension(path);
   if (extension == ".obj") return "mesh";
-  if (extension == ".ply" || extension == ".pcd" || extension == ".xyz" || extension == ".pts" ||
-      extension == ".las" || lower_extension(path.stem()) + extension == ".frame.json") {
-    return "cloud";
-  }
+  // A .txt is a label or openings file as often as a text cloud.
   if (extension == ".txt") return "text";
+  if (is_cloud_file(path.string())) return "cloud";
   if (extension == ".json") return "json";
   return "other";
 }

@@ -14,6 +14,7 @@
 #include "occlusion/io/atomic_file.hpp"
 #include "occlusion/io/cloud_io.hpp"
 #include "occlusion/io/input_error.hpp"
+#include "occlusion/io/mesh_reader.hpp"
 #include "occlusion/io/obj_reader.hpp"
 #include "occlusion/server/protocol_error.hpp"
 #include "upload.hpp"
@@ -24,17 +25,16 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string lower_extension(const std::string& name) {
-  std::string extension = fs::path(name).extension().string();
-  for (auto& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return extension;
+std::string lower_case(std::string text) {
+  for (auto& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return text;
 }
 
 // `display` is how errors name the file (the client's path, not ours).
 std::shared_ptr<LoadedScene> read_scene(const fs::path& path, const std::string& display,
                                         bool skip_bad_lines) {
   try {
-    if (lower_extension(path.string()) == ".obj" && !fs::is_directory(path)) {
+    if (lower_case(fs::path(path).extension().string()) == ".obj" && !fs::is_directory(path)) {
       return mesh_scene(read_obj(path.string()));
     }
     CloudReadOptions options;
@@ -82,6 +82,17 @@ Json::Value load(CommandContext& context) {
 
 }  // namespace
 
+const std::vector<std::string>& upload_suffixes() {
+  static const std::vector<std::string> suffixes = [] {
+    std::vector<std::string> list = mesh_file_suffixes();
+    for (const auto& suffix : cloud_file_suffixes()) {
+      if (std::find(list.begin(), list.end(), suffix) == list.end()) list.push_back(suffix);
+    }
+    return list;
+  }();
+  return suffixes;
+}
+
 void check_upload_name(const std::string& name) {
   const auto fail = [&](const std::string& why) {
     throw ProtocolError("invalid_request", "upload name '" + name + "' " + why);
@@ -91,10 +102,16 @@ void check_upload_name(const std::string& name) {
     fail("must be a plain file name");
   }
   if (name[0] == '.') fail("must not start with '.'");
-  const std::string extension = lower_extension(name);
-  const char* known[] = {".obj", ".ply", ".pcd", ".txt", ".xyz", ".pts"};
-  if (std::find(std::begin(known), std::end(known), extension) == std::end(known)) {
-    fail("needs one of the extensions .obj .ply .pcd .txt .xyz .pts");
+  const auto& known = upload_suffixes();
+  const bool readable = std::any_of(known.begin(), known.end(), [&](const std::string& suffix) {
+    const std::string lower = lower_case(name);
+    return lower.size() > suffix.size() &&
+           lower.compare(lower.size() - suffix.size(), suffix.size(), suffix) == 0;
+  });
+  if (!readable) {
+    std::string list;
+    for (const auto& suffix : known) list += " " + suffix;
+    fail("needs one of the endings" + list);
   }
 }
 

@@ -48,6 +48,9 @@ std::string hello_message(const Limits& limits) {
   limit["max_work"] = limits.max_work;
   limit["max_running_per_client"] = Json::UInt64(limits.max_running_per_client);
   json["limits"] = limit;
+  Json::Value suffixes(Json::arrayValue);
+  for (const auto& suffix : upload_suffixes()) suffixes.append(suffix);
+  json["upload_suffixes"] = suffixes;
   return write_json(json);
 }
 

@@ -6,13 +6,18 @@
 
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "command_context.hpp"
 
 namespace occlusion::server {
 
+// The file name endings `load` and uploads take: every mesh and cloud reader's
+// (io), sent in hello so the viewer offers exactly these.
+const std::vector<std::string>& upload_suffixes();
+
 // Throws ProtocolError "invalid_request" unless `name` is a plain file name
-// (no '/', not hidden) with an extension `load` reads.
+// (no '/', not hidden) with an ending `load` reads.
 void check_upload_name(const std::string& name);
 
 // Reads `bytes` as the file `name`, stores it as DATA/uploads/<name> and

@@ -5,9 +5,11 @@
 
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 #include "occlusion/io/cloud_io.hpp"
+#include "occlusion/io/mesh_reader.hpp"
 #include "occlusion/io/obj_reader.hpp"
 #include "occlusion/io/polygon_file.hpp"
 #include "server_fixture.hpp"
@@ -45,6 +47,15 @@ TEST_F(RoundTrip, HelloListsCommandsAndLimits) {
     EXPECT_TRUE(hello["commands"][command].asBool()) << command;
   }
   EXPECT_EQ(hello["limits"]["max_text_bytes"].asUInt64(), 1u << 20);
+  // Every ending a reader takes, and nothing else: the viewer offers these uploads.
+  std::set<std::string> suffixes;
+  for (const auto& suffix : hello["upload_suffixes"]) suffixes.insert(suffix.asString());
+  for (const auto& suffix : cloud_file_suffixes()) EXPECT_EQ(suffixes.count(suffix), 1u) << suffix;
+  for (const auto& suffix : mesh_file_suffixes()) EXPECT_EQ(suffixes.count(suffix), 1u) << suffix;
+  EXPECT_EQ(suffixes.size(), hello["upload_suffixes"].size());
+  EXPECT_EQ(suffixes.count(".obj"), 1u);
+  EXPECT_EQ(suffixes.count(".pcd"), 1u);
+  EXPECT_EQ(suffixes.count(".json"), 0u);
 }
 
 TEST_F(RoundTrip, Ping) {

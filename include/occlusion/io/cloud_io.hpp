@@ -94,6 +94,11 @@ struct CloudReadReport {
 PointCloud read_cloud(const std::string& path, const CloudReadOptions& options = {},
                       CloudReadReport* report = nullptr);
 
+// The file name endings read_cloud reads, lower case with their dot (".pcd"),
+// and whether it reads `path` as a file (any letter case).
+const std::vector<std::string>& cloud_file_suffixes();
+bool is_cloud_file(const std::string& path);
+
 enum class CloudFormat { kPcdBinaryCompressed, kPcdBinary, kPcdAscii, kPlyBinary, kPlyAscii };
 
 // Writes x y z (float), the colour (PCD: packed float `rgb`, as PCL does; PLY:

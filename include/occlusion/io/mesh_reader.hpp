@@ -17,12 +17,15 @@
 // extension other than .obj or .ply is an InputError saying which are read.
 
 #include <string>
+#include <vector>
 
 #include "occlusion/core/mesh.hpp"
 
 namespace occlusion {
 
 TriangleMesh read_mesh(const std::string& path);
+// The file name endings read_mesh reads, lower case with their dot (".obj").
+const std::vector<std::string>& mesh_file_suffixes();
 TriangleMesh read_ply_mesh(const std::string& path);
 
 }  // namespace occlusion

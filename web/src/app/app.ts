@@ -26,7 +26,7 @@ import { ResultsPanel } from "../ui/results_panel";
 import { StatsPanel } from "../ui/stats_panel";
 import { Toolbar } from "../ui/toolbar";
 import type { ToolbarButton } from "../ui/toolbar";
-import { installUpload } from "../ui/upload";
+import { installUpload, type UploadControl } from "../ui/upload";
 import { adoptServerKeys } from "../settings_defaults";
 import { FrameDecoder } from "../worker/decoder";
 import type { Vec3 } from "../decode/types";
@@ -57,6 +57,7 @@ export class App {
   readonly evaluation: Evaluation;
   private readonly stats: StatsPanel;
   private readonly toolbar: Toolbar;
+  private readonly upload: UploadControl;
   private readonly pickerMaterials = new PickerMaterials();
   private readonly connection = byId("connection");
   private reconnecting = false;
@@ -238,7 +239,7 @@ export class App {
     pickerMaterials.useShader = gui.settings.useShaderMaterial;
 
     listenForClicks(viewer.renderer.domElement, (click) => this.openingFlow.onClick(click));
-    installUpload(
+    this.upload = installUpload(
       document.body,
       this.toolbar.get("upload"),
       (list) => void this.loading.upload(list),
@@ -262,6 +263,7 @@ export class App {
       const hello = await this.ctx.client.connect();
       this.reconnecting = false;
       this.setConnection("online", hello.server);
+      this.upload.setSuffixes(hello.upload_suffixes);
       // Defaults and ranges from the server's key declarations, where it has them.
       this.ctx.gui.refreshDeclared(adoptServerKeys({ keys: hello.keys }));
       this.syncAvailability();

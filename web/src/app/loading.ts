@@ -78,11 +78,13 @@ export class Loading {
   /** Uploads files one by one; each that reads is shown (the last stays). */
   async upload(files: File[]): Promise<void> {
     const limit = this.ctx.client.hello?.limits.max_upload_bytes ?? 256 * 1024 * 1024;
+    const suffixes = this.ctx.client.hello?.upload_suffixes ?? [];
     for (const file of files) {
-      if (!uploadableName(file.name)) {
+      // A server that does not list its readers checks the name itself.
+      if (suffixes.length && !uploadableName(file.name, suffixes)) {
         this.ctx.notices.error(
           `Cannot upload ${file.name}`,
-          "Only .obj, .ply, .pcd, .txt, .xyz and .pts files can be loaded.",
+          `The server reads only ${suffixes.join(", ")} files.`,
         );
         continue;
       }

@@ -19,6 +19,8 @@ export interface HelloMessage {
   server: string;
   commands: Record<string, boolean>;
   limits: Limits;
+  /** File name endings `load` and `upload` read (every reader's); empty from a server that does not say. */
+  upload_suffixes: string[];
 }
 
 export interface ProgressMessage {
@@ -122,6 +124,9 @@ export function parseServerMessage(text: string): ServerMessage {
           max_upload_bytes: Number(limits.max_upload_bytes ?? 256 << 20),
           progress_per_second: Number(limits.progress_per_second ?? 10),
         },
+        upload_suffixes: Array.isArray(value.upload_suffixes)
+          ? value.upload_suffixes.filter((s): s is string => typeof s === "string")
+          : [],
       };
     }
     case "progress": {

@@ -1,20 +1,25 @@
 // Drag-and-drop (anywhere on the page) and a file button for uploading the
-// user's own PCD / PLY / OBJ / text files.
+// user's own meshes and clouds. Which files the server reads comes from its
+// hello (`upload_suffixes`); the server checks every upload again.
 
 import { h } from "./dom";
 
-export const UPLOAD_EXTENSIONS = [".obj", ".ply", ".pcd", ".txt", ".xyz", ".pts"];
-
-export function uploadableName(name: string): boolean {
+/** Whether `name` ends in one of `suffixes` (lower case, with their dot), in any letter case. */
+export function uploadableName(name: string, suffixes: readonly string[]): boolean {
   const lower = name.toLowerCase();
-  return UPLOAD_EXTENSIONS.some((ext) => lower.endsWith(ext));
+  return suffixes.some((suffix) => lower.endsWith(suffix) && lower.length > suffix.length);
+}
+
+/** The upload input; `setSuffixes` narrows its file picker once hello says what the server reads. */
+export interface UploadControl {
+  setSuffixes(suffixes: readonly string[]): void;
 }
 
 export function installUpload(
   dropTarget: HTMLElement,
   button: HTMLElement,
   onFiles: (files: File[]) => void,
-): void {
+): UploadControl {
   const overlay = h(
     "div",
     {
@@ -25,7 +30,7 @@ export function installUpload(
     },
     [
       h("div", { class: "rounded-2xl border-2 border-dashed border-sky-300 px-12 py-10" }, [
-        "Drop a PCD, PLY, OBJ or text cloud to upload it",
+        "Drop a mesh or a point cloud to upload it",
       ]),
     ],
   );
@@ -53,7 +58,7 @@ export function installUpload(
   });
 
   const input = h("input", {
-    attrs: { type: "file", accept: UPLOAD_EXTENSIONS.join(","), multiple: "" },
+    attrs: { type: "file", multiple: "" },
     class: "hidden",
     testid: "upload-input",
   });
@@ -64,4 +69,10 @@ export function installUpload(
   });
   button.after(input);
   button.addEventListener("click", () => input.click());
+  return {
+    setSuffixes(suffixes) {
+      if (suffixes.length) input.setAttribute("accept", suffixes.join(","));
+      else input.removeAttribute("accept");
+    },
+  };
 }

@@ -19,7 +19,20 @@ describe("parseServerMessage", () => {
       commands: { load: true, study: false },
       keys: {},
       limits: { max_text_bytes: 1048576, max_upload_bytes: 268435456, progress_per_second: 10 },
+      upload_suffixes: [],
     });
+  });
+
+  test("hello keeps the upload suffixes the server reads", () => {
+    const m = parseServerMessage(
+      JSON.stringify({
+        type: "hello",
+        protocol: 1,
+        commands: {},
+        upload_suffixes: [".obj", ".e57", 3, ".frame.json"],
+      }),
+    );
+    expect(m).toMatchObject({ upload_suffixes: [".obj", ".e57", ".frame.json"] });
   });
 
   test("hello keeps key declarations, top-level or per command", () => {
