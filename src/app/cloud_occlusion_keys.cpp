@@ -55,8 +55,8 @@ const Keys<CloudOcclusionRequest>& cloud_occlusion_keys() {
   using R = CloudOcclusionRequest;
   static const Keys<R> keys = join<R>({
       {input_key(&R::path,
-                 "point cloud: .pcd, .ply, .txt (x y z [r g b] [label]) or an S3DIS "
-                 "room/Area folder")},
+                 "point cloud: a file in any format of docs/formats.md (.pcd, .ply, .e57, .las, "
+                 "...), or an S3DIS room/Area or ScanNet scene folder")},
       viewpoint_keys(&R::viewpoints),
       cloud_tracing_keys(),
       {frame_key(&R::frame), up_key(&R::up),

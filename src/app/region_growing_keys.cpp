@@ -9,7 +9,9 @@
 namespace occlusion {
 
 namespace {
-const char kCloudDoc[] = "point cloud: .pcd, .ply, .txt or an S3DIS room/Area folder";
+const char kCloudDoc[] =
+    "point cloud: a file in any format of docs/formats.md (.pcd, .ply, .e57, .las, ...), or an "
+    "S3DIS room/Area or ScanNet scene folder";
 }
 
 const Keys<RegionGrowingRequest>& region_growing_keys() {

@@ -8,7 +8,9 @@ namespace occlusion {
 const Keys<ScanRequest>& scan_keys() {
   using R = ScanRequest;
   static const Keys<R> keys = join<R>({
-      {input_key(&R::path, "point cloud: .pcd, .ply, .txt or an S3DIS room/Area folder")},
+      {input_key(&R::path,
+                 "point cloud: a file in any format of docs/formats.md (.pcd, .ply, .e57, .las, "
+                 "...), or an S3DIS room/Area or ScanNet scene folder")},
       viewpoint_keys(&R::viewpoints),
       {primitive_key(&R::primitive), point_radius_key(&R::point_radius),
        disc_coverage_key(&R::disc_coverage), normal_neighbours_key(&R::normal_neighbours),

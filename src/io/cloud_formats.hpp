@@ -65,6 +65,14 @@ PointCloud read_text_cloud(const std::string& path, const CloudReadOptions& opti
 // (e57_cloud_reader.cpp; docs/formats.md).
 PointCloud read_e57(const std::string& path, const CloudReadOptions& options,
                     CloudReadReport& report);
+// LAS 1.0-1.4, point formats 0-10 (las_header.hpp); LAZ is refused, saying
+// how to decompress it.
+PointCloud read_las(const std::string& path, const CloudReadOptions& options,
+                    CloudReadReport& report);
+// A depth frame's descriptor, NAME.frame.json (frame_descriptor.hpp): its
+// depth PNG back-projected, seen from its camera (the sensor and one station).
+PointCloud read_depth_frame(const std::string& path, const CloudReadOptions& options,
+                            CloudReadReport& report);
 // A room folder or an Area folder of rooms.
 PointCloud read_s3dis(const std::string& directory, const CloudReadOptions& options,
                       CloudReadReport& report);

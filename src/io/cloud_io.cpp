@@ -7,6 +7,7 @@
 
 #include "cloud_formats.hpp"
 #include "file_names.hpp"
+#include "frame_descriptor.hpp"
 #include "occlusion/io/input_error.hpp"
 
 namespace occlusion {
@@ -29,6 +30,7 @@ const CloudReader kCloudReaders[] = {
     {".pcd", detail::read_pcd},        {".ply", detail::read_ply},
     {".txt", detail::read_text_cloud}, {".xyz", detail::read_text_cloud},
     {".pts", detail::read_text_cloud}, {".e57", detail::read_e57},
+    {".las", detail::read_las},        {detail::kFrameDescriptorSuffix, detail::read_depth_frame},
 };
 
 // The reader of the longest suffix `path` ends in (".frame.json" before ".json").
@@ -59,10 +61,24 @@ PointCloud read_by_kind(const std::string& path, const CloudReadOptions& options
   }
   if (std::filesystem::is_directory(kind)) return detail::read_s3dis(path, options, report);
   if (const CloudReader* reader = reader_for(path)) return reader->read(path, options, report);
+  // Files no reader reads that users give anyway: each is refused saying
+  // why and what to do (they are not in the table, so not offered either).
+  const std::string extension = detail::lower_extension(path);
+  // A LAZ file: the LAS reader refuses it, saying how to decompress it.
+  if (extension == ".laz") return detail::read_las(path, options, report);
+  if (extension == ".png") {
+    throw InputError(path, 0,
+                     "a depth image alone cannot say its depth unit nor its camera's "
+                     "intrinsics: describe it in a frame descriptor, NAME" +
+                         std::string(detail::kFrameDescriptorSuffix) +
+                         " ({\"depth\": \"depth.png\", \"intrinsics\": {\"fx\": ..., "
+                         "\"fy\": ..., \"cx\": ..., \"cy\": ...}, \"depth_scale\": ...}, "
+                         "the scale in depth values per metre, e.g. TUM 5000, ScanNet 1000; "
+                         "docs/formats.md), and give that file");
+  }
   throw InputError(path, 0,
-                   "unknown point cloud extension '" + detail::lower_extension(path) +
-                       "'; supported: " + joined(cloud_file_suffixes()) +
-                       ", or an S3DIS room or Area folder");
+                   "unknown point cloud extension '" + extension + "'; supported: " +
+                       joined(cloud_file_suffixes()) + ", or an S3DIS room or Area folder");
 }
 
 // A shift chosen from the first point helps a cloud that lies far from the

@@ -241,7 +241,8 @@ void bind_io(py::module_& m) {
 
   m.def("read_cloud", &read_cloud_arrays, py::arg("path"), py::kw_only(),
         py::arg("skip_bad_lines") = false,
-        R"doc(Reads a point cloud: .pcd, .ply, .txt/.xyz/.pts, an S3DIS room folder or Area.
+        R"doc(Reads a point cloud: .pcd, .ply, .txt/.xyz/.pts, .las, a depth frame's
+NAME.frame.json, an S3DIS room folder or Area (docs/formats.md).
 
 Points with a coordinate that is not finite are dropped (counted in
 dropped_nan). skip_bad_lines skips text lines that do not parse (real S3DIS

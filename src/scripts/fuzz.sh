@@ -16,7 +16,8 @@ seconds="${FUZZ_SECONDS:-15}"
 targets=("$@")
 if ((${#targets[@]} == 0)); then
   targets=(fuzz_obj fuzz_ply fuzz_pcd_ascii fuzz_pcd_binary fuzz_pcd_compressed fuzz_text_cloud
-           fuzz_e57 fuzz_s3dis fuzz_labels fuzz_class_names fuzz_scannet fuzz_openings fuzz_config
+           fuzz_e57 fuzz_las fuzz_depth_frame fuzz_s3dis fuzz_labels fuzz_class_names fuzz_scannet
+           fuzz_openings fuzz_config
            fuzz_server_message fuzz_binary_frame)
 fi
 

@@ -12,6 +12,8 @@ packages=(
   libwebsocketpp-dev libboost-dev libboost-system-dev
   # The E57 reader's XML section (src/io/e57_xml.cpp).
   libpugixml-dev
+  # Depth frames' PNG images (src/io/png_image.cpp).
+  libpng-dev
   # The study's sharding recipes, run for real by tests/scripts/study_*_test.sh.
   slurm-wlm munge parallel
   # libFuzzer targets with ASan + UBSan (src/scripts/fuzz.sh).

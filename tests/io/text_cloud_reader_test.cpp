@@ -121,10 +121,14 @@ TEST(TextCloudReader, FileWithNoPointsIsAnError) {
 
 TEST(ReadCloud, UnknownExtensionListsTheSupportedOnes) {
   testing::ScratchDirectory dir;
-  const std::string path = dir.file("scan.las");
-  testing::write_text(path, "LASF");
-  testing::expect_input_error([&] { read_cloud(path); }, "scan.las", 0,
+  // A FARO scanner's own format, which no reader here reads.
+  const std::string path = dir.file("scan.fls");
+  testing::write_text(path, "FARO");
+  testing::expect_input_error([&] { read_cloud(path); }, "scan.fls", 0,
                               "supported: .pcd, .ply, .txt, .xyz, .pts");
+  for (const char* suffix : {".las", ".frame.json"}) {
+    testing::expect_input_error([&] { read_cloud(path); }, "scan.fls", 0, suffix);
+  }
 }
 
 TEST(ReadCloud, MissingPathIsAnInputError) {

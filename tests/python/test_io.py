@@ -101,6 +101,22 @@ def test_e57_reads():
         occlusion.read_cloud(str(ROOT / "files" / "e57" / "bad-crc.e57"))
 
 
+def test_las_sample_reads_with_its_classes():
+    cloud = occlusion.read_cloud(str(ROOT / "files" / "las" / "simple.las"))
+    assert len(cloud) == 1065
+    assert cloud.class_names == ["never_classified", "unclassified", "ground"]
+    assert np.bincount(cloud.labels).tolist() == [0, 789, 276]
+    # The header's x range, in the file's frame (State Plane feet).
+    x = cloud.positions[:, 0].astype(np.float64) + cloud.shift[0]
+    assert abs(x.min() - 635619.85) < 0.005 and abs(x.max() - 638982.55) < 0.005
+
+
+def test_laz_is_refused_saying_how_to_decompress():
+    with pytest.raises(occlusion.InputError, match="LASzip-compressed") as error:
+        occlusion.read_cloud(str(ROOT / "files" / "las" / "simple.laz"))
+    assert "pdal translate" in str(error.value)
+
+
 def test_mesh_round_trip(tmp_path):
     vertices = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0, 0, 1]], dtype=np.float64) / 3
     faces = np.array([[0, 1, 2], [0, 2, 3], [0, 1, 4]])

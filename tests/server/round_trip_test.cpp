@@ -160,6 +160,23 @@ TEST_F(RoundTrip, LoadE57StreamsItsPointsAndRefusesACorruptOne) {
       << corrupt.final["message"];
 }
 
+TEST_F(RoundTrip, ListsAndLoadsALasFile) {
+  fs::create_directories(files().file("las"));
+  fs::copy_file(fs::path(OCCLUSION_SOURCE_DIR) / "files/las/simple.las",
+                files().file("las/simple.las"), fs::copy_options::overwrite_existing);
+  const Reply listing = client_->request(11, "list_files", params(R"({"dir": "las"})"));
+  ASSERT_TRUE(listing.ok()) << listing.final;
+  ASSERT_EQ(listing.final["result"]["entries"].size(), 1u);
+  EXPECT_EQ(listing.final["result"]["entries"][0]["kind"].asString(), "cloud");
+  const PointCloud cloud = read_cloud(files().file("las/simple.las"));
+  const Reply reply = client_->request(12, "load", params(R"({"path": "las/simple.las"})"));
+  ASSERT_TRUE(reply.ok()) << reply.final;
+  const Json::Value& result = reply.final["result"];
+  EXPECT_EQ(result["points"].asUInt64(), 1065u);
+  EXPECT_EQ(result["class_names"].size(), 3u);
+  EXPECT_EQ(frame_values<std::int32_t>(*find_frame(reply, "labels")), cloud.labels);
+}
+
 TEST_F(RoundTrip, MeshOcclusionEqualsTheCli) {
   const Reply reply = client_->request(
       10, "mesh_occlusion",

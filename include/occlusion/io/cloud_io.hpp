@@ -15,6 +15,13 @@
 //   .txt .xyz .pts      `x y z`, `x y z label`, `x y z r g b` or `x y z r g b label`,
 //                       the same column count on every line; `#` and `//` lines
 //                       are comments
+//   .las                LAS 1.0-1.4, point formats 0-10: coordinates (scale and
+//                       offset), intensity, RGB, classification as labels named
+//                       by the ASPRS classes; .laz is refused with how to
+//                       decompress it
+//   NAME.frame.json     a depth frame: a 16-bit depth PNG with its intrinsics,
+//                       depth unit, optional colour PNG and camera pose; an
+//                       organised cloud whose camera is its sensor and station
 //   a directory         an S3DIS room (<room>/Annotations/<class>_<k>.txt) or an
 //                       S3DIS Area (a directory of rooms, concatenated)
 // The order of a folder's points, which a label file (one label per point, by
