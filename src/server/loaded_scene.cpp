@@ -57,6 +57,17 @@ std::shared_ptr<LoadedScene> cloud_scene(const PointCloud& cloud) {
   // point of the file is a position plus `shift` (PointCloud::shift).
   summary["shift"] = to_json(cloud.shift);
   summary["bounds"] = bounds_json(lo.cast<double>(), hi.cast<double>());
+  // Where the scanner stood (the file's stations, or a single-view frame's
+  // sensor), in the positions' frame: the viewer puts its viewpoints there, as
+  // -poc and -fscan take them by default.
+  Json::Value stations(Json::arrayValue);
+  for (const Station& station : scan_stations(cloud)) {
+    Json::Value entry(Json::objectValue);
+    entry["name"] = station.name;
+    entry["position"] = to_json(station.frame.origin);
+    stations.append(entry);
+  }
+  summary["stations"] = stations;
   scene->frames = cloud_frames(cloud);
   return scene;
 }

@@ -160,6 +160,27 @@ TEST_F(RoundTrip, LoadE57StreamsItsPointsAndRefusesACorruptOne) {
       << corrupt.final["message"];
 }
 
+TEST_F(RoundTrip, LoadNamesTheCloudsStationsWhereItsViewpointsGo) {
+  PointCloud cloud;
+  cloud.positions = {{0, 0, 0}, {4, 0, 0}, {4, 3, 0}, {0, 3, 2.5f}};
+  cloud.stations = {{"north tripod", {}}, {"south tripod", {}}};
+  cloud.stations[0].frame.origin = Eigen::Vector3d(1, 2, 1.5);
+  cloud.stations[1].frame.origin = Eigen::Vector3d(3, 0.5, 1.25);
+  cloud.station_ids = {0, 0, 1, 1};
+  write_cloud(files().file("stations.ply"), cloud);
+  const Reply reply = client_->request(13, "load", params(R"({"path": "stations.ply"})"));
+  ASSERT_TRUE(reply.ok()) << reply.final;
+  const Json::Value& stations = reply.final["result"]["stations"];
+  ASSERT_EQ(stations.size(), 2u) << reply.final;
+  EXPECT_EQ(stations[0]["name"].asString(), "north tripod");
+  EXPECT_EQ(stations[1]["position"][1].asDouble(), 0.5);
+  EXPECT_EQ(stations[1]["position"][2].asDouble(), 1.25);
+  // A cloud that records none says so.
+  const Reply plain = client_->request(14, "load", params(R"({"path": "sample_room.obj"})"));
+  ASSERT_TRUE(plain.ok()) << plain.final;
+  EXPECT_FALSE(plain.final["result"].isMember("stations"));
+}
+
 TEST_F(RoundTrip, ListsAndLoadsALasFile) {
   fs::create_directories(files().file("las"));
   fs::copy_file(fs::path(OCCLUSION_SOURCE_DIR) / "files/las/simple.las",

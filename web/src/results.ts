@@ -23,6 +23,8 @@ export interface LoadResult {
   /** The server's robust frame (issue 12), when it sends one. */
   robust_box?: Bounds;
   frame?: Record<string, unknown>;
+  /** Where the scanner stood (a cloud's stations or its sensor), in the positions' frame. */
+  stations?: { name: string; position: Vec3 }[];
 }
 
 export interface ViewpointReport {

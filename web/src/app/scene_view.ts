@@ -99,6 +99,7 @@ export class SceneView {
     }
     this.viewer.frame(extent);
     this.markers.reset(extent);
+    if (result.stations?.length) this.markers.placeStations(result.stations);
     this.applyCut();
     // A new scene is shown whole, whatever the last one hid.
     this.gui.set("showCloud", true);

@@ -166,6 +166,21 @@ export class ViewpointMarkers {
     this.onChange?.();
   }
 
+  /**
+   * The markers at a scan's stations instead of the pattern's three (the
+   * default viewpoints of -poc and -fscan for such a cloud), named after them.
+   */
+  placeStations(stations: readonly { name: string; position: Vec3 }[]): void {
+    this.deselect();
+    for (const name of [...this.markers.keys()]) this.remove(name);
+    stations.forEach((station, k) => {
+      const marker = this.create(`station${k + 1}`, station.name);
+      marker.object.position.set(...station.position);
+      marker.object.scale.setScalar(this.size);
+    });
+    this.onChange?.();
+  }
+
   setEnabled(name: MarkerId, enabled: boolean): void {
     const marker = this.markers.get(name);
     if (!marker) return;

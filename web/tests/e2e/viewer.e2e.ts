@@ -570,6 +570,41 @@ describe("viewer (e2e)", () => {
     await screenshot(page, "07-dropped-upload-page");
   });
 
+  test("a cloud that records its scanner stations gets its viewpoints there", async () => {
+    const points: string[] = [];
+    for (let i = 0; i < 400; ++i) points.push(`${(i % 20) * 0.2} ${Math.floor(i / 20) * 0.15} 0`);
+    const ply = [
+      "ply",
+      "format ascii 1.0",
+      'comment station "north tripod" 1 2 1.5 1 0 0 0 0 0',
+      'comment station "south tripod" 3 0.5 1.25 1 0 0 0 0 0',
+      `element vertex ${points.length}`,
+      "property float x",
+      "property float y",
+      "property float z",
+      "end_header",
+      ...points,
+    ].join("\n");
+    const dataTransfer = await page.evaluateHandle((text) => {
+      const transfer = new DataTransfer();
+      transfer.items.add(new File([text], "two_stations.ply", { type: "text/plain" }));
+      return transfer;
+    }, ply + "\n");
+    await page.dispatchEvent("body", "drop", { dataTransfer });
+    await expect
+      .poll(() => page.locator("[data-testid=status-scene]").textContent(), { timeout: 30_000 })
+      .toContain("uploads/two_stations.ply — 400 points");
+    const rows = page.locator("[data-testid=viewpoint-row]");
+    await expect.poll(() => rows.count()).toBe(2);
+    expect(await rows.nth(0).textContent()).toContain("north tripod");
+    expect(await rows.nth(1).textContent()).toContain("south tripod");
+    const south = await rows
+      .nth(1)
+      .locator("input[data-axis]")
+      .evaluateAll((inputs) => inputs.map((input) => Number((input as HTMLInputElement).value)));
+    expect(south).toEqual([3, 0.5, 1.25]);
+  });
+
   test("no uncaught errors in the page", () => {
     const unexpected = problems.filter(
       (p) => !/input_error|path_outside_data|GPU stall|Failed to load resource/.test(p),
