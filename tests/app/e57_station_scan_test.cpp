@@ -55,7 +55,7 @@ test::E57ScanSpec as_scanner_stores(const SampledCloud& scan, const Eigen::Quate
                  test::e57_double("sphericalElevation", elevation),
                  test::e57_integer("rowIndex", 0, rows - 1, row),
                  test::e57_integer("columnIndex", 0, columns - 1, column)};
-  spec.packets = 5;
+  spec.packets = 256;  // a data packet holds at most 64 KiB
   return spec;
 }
 
