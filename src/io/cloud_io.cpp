@@ -131,12 +131,16 @@ PointCloud read_cloud(const std::string& path, const CloudReadOptions& options,
   CloudReadReport& counts = report != nullptr ? *report : local;
   const std::size_t dropped_before = counts.dropped_nan;
   const std::size_t skipped_before = counts.skipped_lines;
+  const std::size_t invalid_before = counts.dropped_invalid;
   PointCloud cloud = read_shifted(path, options, counts);
   if (cloud.size() == 0) {
     std::string reason = "no points";
     if (counts.dropped_nan > dropped_before) {
       reason += " (all " + std::to_string(counts.dropped_nan - dropped_before) +
                 " had a NaN or infinite coordinate)";
+    } else if (counts.dropped_invalid > invalid_before) {
+      reason += " (all " + std::to_string(counts.dropped_invalid - invalid_before) +
+                " are marked invalid or direction-only by the file)";
     } else if (counts.skipped_lines > skipped_before) {
       reason +=
           " (" + std::to_string(counts.skipped_lines - skipped_before) + " bad lines were skipped)";
