@@ -152,7 +152,13 @@ TEST(TransportLimits, WholeOversizedTextMessageClosesThatConnectionOnly) {
   auto client = server.connect();
   client->send_text(std::string(8 << 20, ' '));
   EXPECT_TRUE(client->wait_closed(Millis(60000)));
-  EXPECT_EQ(client->close_code(), 1009);
+  // WebSocket++ drops the TCP connection right after its 1009 close frame (a
+  // terminal close), with most of this message still unread: the reset that
+  // follows can reach a client still sending before it has read that frame,
+  // which it then reports as 1006 (CI saw it once in many runs). Which code
+  // arrives is the network's race, not the server's choice; the tests above
+  // hold the server to 1009 where the client reads before the reset.
+  EXPECT_TRUE(client->close_code() == 1009 || client->close_code() == 1006) << client->close_code();
   EXPECT_TRUE(server.connect()->request(1, "ping").ok());
 }
 
