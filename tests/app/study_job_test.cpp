@@ -422,7 +422,8 @@ TEST(StudyJob, ResumingWithOtherParametersIsRefusedNamingThem) {
     EXPECT_NE(std::string(e.what()).find("configuration 'pattern_1'"), std::string::npos)
         << e.what();
   }
-  // The station keys, declared after studies existed, join the fingerprint only once set
+  // Keys declared after studies existed (stations, class mapping) join the fingerprint only once
+  // set
   // ("was absent"): at their defaults a study run before them still resumes. (The office
   // has no stations, so the range would be refused at load, after the fingerprints.)
   StudyRequest ranged = request;
@@ -432,6 +433,15 @@ TEST(StudyJob, ResumingWithOtherParametersIsRefusedNamingThem) {
     FAIL() << "no error";
   } catch (const UsageError& e) {
     EXPECT_NE(std::string(e.what()).find("min_range (was absent, now 0.5)"), std::string::npos)
+        << e.what();
+  }
+  StudyRequest named = request;
+  named.tracing.class_names_path = dir.file("names.txt");
+  try {
+    run_study(named);
+    FAIL() << "no error";
+  } catch (const UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find("class_names (was absent, now"), std::string::npos)
         << e.what();
   }
   // Threads do not change the figures, nor where the openings file is: the same study.
