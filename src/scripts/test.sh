@@ -113,7 +113,7 @@ stage "ASan+UBSan ctest"
 guard 3600 bash "$root/src/scripts/sanitize.sh"
 # Every reader under libFuzzer, 15 s each (docs/fuzzing.md); libFuzzer stops
 # each by itself, and a slow input is a finding (-timeout=10).
-stage "fuzz (14 targets)"
+stage "fuzz (every target)"
 FUZZ_SECONDS="${FUZZ_SECONDS:-15}" guard 3600 bash "$root/src/scripts/fuzz.sh"
 
 stage "pytest"
