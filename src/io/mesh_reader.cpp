@@ -25,6 +25,13 @@ const std::vector<std::string>& mesh_file_suffixes() {
   return suffixes;
 }
 
+bool is_mesh_file(const std::string& path) {
+  for (const MeshReader& reader : kMeshReaders) {
+    if (detail::has_suffix(path, reader.suffix)) return true;
+  }
+  return false;
+}
+
 TriangleMesh read_mesh(const std::string& path, MeshReadReport* report) {
   if (const auto scene = detail::scannet_scene(path)) {
     return detail::read_scannet_mesh(*scene, report);

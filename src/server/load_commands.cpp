@@ -102,15 +102,9 @@ void check_upload_name(const std::string& name) {
     fail("must be a plain file name");
   }
   if (name[0] == '.') fail("must not start with '.'");
-  const auto& known = upload_suffixes();
-  const bool readable = std::any_of(known.begin(), known.end(), [&](const std::string& suffix) {
-    const std::string lower = lower_case(name);
-    return lower.size() > suffix.size() &&
-           lower.compare(lower.size() - suffix.size(), suffix.size(), suffix) == 0;
-  });
-  if (!readable) {
+  if (!is_mesh_file(name) && !is_cloud_file(name)) {
     std::string list;
-    for (const auto& suffix : known) list += " " + suffix;
+    for (const auto& suffix : upload_suffixes()) list += " " + suffix;
     fail("needs one of the endings" + list);
   }
 }

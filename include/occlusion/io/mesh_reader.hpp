@@ -31,6 +31,8 @@ namespace occlusion {
 TriangleMesh read_mesh(const std::string& path, MeshReadReport* report = nullptr);
 // The file name endings read_mesh reads, lower case with their dot (".obj").
 const std::vector<std::string>& mesh_file_suffixes();
+// Whether read_mesh reads `path` by its name (any letter case; ScanNet folders aside).
+bool is_mesh_file(const std::string& path);
 TriangleMesh read_ply_mesh(const std::string& path, MeshReadReport* report = nullptr);
 
 }  // namespace occlusion
