@@ -17,6 +17,10 @@ Json::Value read_json_file(const std::string& path, const std::string& what) {
   } catch (const InputError& e) {
     throw UsageError(path + ": cannot read " + what + ": " + e.reason);
   }
+  return parse_json_text(body, path);
+}
+
+Json::Value parse_json_text(const std::string& body, const std::string& source) {
   Json::CharReaderBuilder builder;
   builder["collectComments"] = false;
   builder["rejectDupKeys"] = true;
@@ -33,7 +37,7 @@ Json::Value read_json_file(const std::string& path, const std::string& what) {
   }
   if (!parsed) {
     while (!errors.empty() && (errors.back() == '\n' || errors.back() == ' ')) errors.pop_back();
-    throw UsageError(path + ": not valid JSON: " + errors);
+    throw UsageError(source + ": not valid JSON: " + errors);
   }
   return root;
 }

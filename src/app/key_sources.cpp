@@ -5,6 +5,7 @@
 #include <map>
 
 #include "occlusion/app/errors.hpp"
+#include "occlusion/app/json_file.hpp"
 
 namespace occlusion {
 
@@ -108,9 +109,9 @@ Json::Value from_text(const KeyInfo& info, const std::string& option, const std:
     case ValueType::kPointList:
       return parse_point(option, text);
     case ValueType::kViewpointSets:
-      break;
+      return parse_json_text(text, option);
   }
-  throw UsageError(option + " cannot be given on the command line: set it in a config file");
+  throw UsageError(option + ": a value of an unknown type");
 }
 
 std::string group_spellings(const KeySource& source, const std::vector<KeyInfo>& infos,

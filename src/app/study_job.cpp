@@ -13,6 +13,7 @@
 #include "occlusion/app/errors.hpp"
 #include "occlusion/app/json_output.hpp"
 #include "occlusion/io/atomic_file.hpp"
+#include "occlusion/io/cloud_io.hpp"
 #include "region_growing_support.hpp"
 #include "study_support.hpp"
 
@@ -28,7 +29,7 @@ std::vector<std::string> scene_names(const std::vector<std::string>& scenes) {
   const auto name = [](const std::string& scene, bool with_parent) {
     fs::path path(scene);
     if (path.filename().empty()) path = path.parent_path();
-    const std::string stem = path.stem().string();
+    const std::string stem = cloud_file_stem(path.string());
     return with_parent ? path.parent_path().filename().string() + "/" + stem : stem;
   };
   std::map<std::string, std::size_t> count;

@@ -55,8 +55,9 @@ const Keys<StudyRequest>& study_keys() {
              return list;
            })
            .exclusive("configurations")
+           .metavar("JSON")
            .doc("viewpoint configurations: [{\"name\": ..., \"pattern\" | \"num_vp\" | "
-                "\"viewpoints\": ...}]"),
+                "\"viewpoints\": ...}] (on the command line: that JSON text, quoted)"),
        custom_key<R>(
            "patterns", ValueType::kIntegerList,
            [](R& r, const Json::Value& v) {

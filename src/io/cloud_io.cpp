@@ -125,6 +125,15 @@ bool is_cloud_file(const std::string& path) {
   return reader_for(path) != nullptr;
 }
 
+std::string cloud_file_stem(const std::string& path) {
+  std::filesystem::path file(path);
+  if (file.filename().empty()) file = file.parent_path();
+  const std::string name = file.filename().string();
+  const CloudReader* reader = reader_for(name);
+  return reader == nullptr ? name
+                           : name.substr(0, name.size() - std::string(reader->suffix).size());
+}
+
 PointCloud read_cloud(const std::string& path, const CloudReadOptions& options,
                       CloudReadReport* report) {
   CloudReadReport local;

@@ -4,6 +4,7 @@
 // by all three, each naming the key as that face spells it.
 
 #include <gtest/gtest.h>
+#include <json/writer.h>
 
 #include <cmath>
 #include <functional>
@@ -147,6 +148,11 @@ std::vector<std::string> cli_arguments(const JobInfo& job, const KeyInfo& info,
     return args;
   }
   if (info.type == ValueType::kBool) return {option + "=" + item_text(value)};
+  if (info.type == ValueType::kViewpointSets) {  // JSON text, as a shell would pass it
+    Json::StreamWriterBuilder writer;
+    writer["indentation"] = "";
+    return {option, Json::writeString(writer, value)};
+  }
   if (is_list(info.type) && info.repeatable) {
     for (const auto& item : value) {
       args.push_back(option);
@@ -197,7 +203,6 @@ TEST(KeyVocabulary, EveryKeyMeansTheSameOnEveryFace) {
   std::size_t checked = 0;
   for (const JobInfo& job : jobs()) {
     for (const KeyInfo& info : job.keys) {
-      if (info.type == ValueType::kViewpointSets) continue;  // config files only
       SCOPED_TRACE(job.name + "." + info.name);
       const Json::Value value = sample_value(info);
       const KeySource cli = source_from_arguments(cli_arguments(job, info, value), job.keys,
@@ -385,6 +390,22 @@ TEST(KeyVocabulary, StudyPatternsAreNamedAsTheCommandLineNamesThem) {
   expected.append(Json::UInt64(3));
   expected.append(Json::UInt64(7));
   EXPECT_EQ(held(cli, "patterns"), expected);
+}
+
+TEST(KeyVocabulary, StudyConfigurationsOnTheCommandLineAreJsonTextAndBadTextIsRefused) {
+  const JobInfo& study = *find_job("study");
+  const KeySource cli = source_from_arguments(
+      {"--configurations",
+       R"([{"name": "low", "viewpoints": [[1, 2, 0.5]]}, {"name": "g", "num_vp": 4}])"},
+      study.keys, "study", "");
+  const Json::Value held_sets = held(cli, "configurations");
+  ASSERT_EQ(held_sets.size(), 2u);
+  EXPECT_EQ(held_sets[0]["name"].asString(), "low");
+  EXPECT_EQ(held_sets[1]["num_vp"].asUInt64(), 4u);
+  const std::string message = thrown_message([&] {
+    source_from_arguments({"--configurations", "[{\"name\": "}, study.keys, "study", "");
+  });
+  EXPECT_TRUE(contains(message, "--configurations: not valid JSON")) << message;
 }
 
 TEST(KeyVocabulary, HelpListsEveryKeyWithItsDefault) {

@@ -12,5 +12,8 @@ namespace occlusion {
 // "<path>: cannot read <what>: ..." or "<path>: not valid JSON: ...", as a
 // file given on the command line is part of the usage (exit 2).
 Json::Value read_json_file(const std::string& path, const std::string& what);
+// The same rules for JSON text given elsewhere (a command-line value);
+// `source` names it in the UsageError.
+Json::Value parse_json_text(const std::string& text, const std::string& source);
 
 }  // namespace occlusion

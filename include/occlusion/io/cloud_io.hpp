@@ -104,6 +104,10 @@ PointCloud read_cloud(const std::string& path, const CloudReadOptions& options =
 // and whether it reads `path` as a file (any letter case).
 const std::vector<std::string>& cloud_file_suffixes();
 bool is_cloud_file(const std::string& path);
+// The file name of `path` without the suffix read_cloud reads it by
+// ("a/room.frame.json" -> "room"); the whole name when no reader reads it (a
+// folder such as "genA0_s10_sp0.04" keeps its dots).
+std::string cloud_file_stem(const std::string& path);
 
 enum class CloudFormat { kPcdBinaryCompressed, kPcdBinary, kPcdAscii, kPlyBinary, kPlyAscii };
 
