@@ -38,8 +38,9 @@ ScanReport scan_in_memory(const PointCloud& cloud, const ScanRequest& request,
   StationFilterReport dropped;
   const PointCloud& filtered =
       filter_in_memory(cloud, station_filter(request), request.path, copy, dropped);
-  ScanReport report = run_scan_on(filtered, job::resolve_for_cloud(request.viewpoints, filtered),
-                                  request, progress);
+  ScanReport report = run_scan_on(
+      filtered, job::resolve_for_cloud(request.viewpoints, filtered, request.frame, request.up),
+      request, progress);
   report.station_filter = dropped;
   return report;
 }
@@ -53,9 +54,9 @@ CloudOcclusionReport cloud_occlusion_in_memory(const PointCloud& cloud,
   StationFilterReport dropped;
   const PointCloud& filtered =
       filter_in_memory(cloud, station_filter(request), request.path, copy, dropped);
-  CloudOcclusionReport report =
-      run_cloud_occlusion_on(filtered, job::resolve_for_cloud(request.viewpoints, filtered),
-                             read_openings(request.polygon_path), request, progress);
+  CloudOcclusionReport report = run_cloud_occlusion_on(
+      filtered, job::resolve_for_cloud(request.viewpoints, filtered, request.frame, request.up),
+      read_openings(request.polygon_path), request, progress);
   report.station_filter = dropped;
   return report;
 }

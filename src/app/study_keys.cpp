@@ -108,6 +108,10 @@ const Keys<StudyRequest>& study_keys() {
        max_memory_key(&R::max_memory_mb),
        out_key(&R::out, "study.csv, study.md, study.svg, study.json, runs/")},
       mount(cloud_tracing_keys(), &R::tracing),
+      // Where each configuration's pattern or grid stands, as -poc and -fscan place it.
+      mount(Keys<CloudOcclusionRequest>{frame_key(&CloudOcclusionRequest::frame),
+                                        up_key(&CloudOcclusionRequest::up)},
+            &R::tracing),
       {self_tolerance_key(&R::self_tolerance)},
       scoring_keys<R>(),
       mount(estimation_keys(), &R::estimation),

@@ -30,7 +30,8 @@ ViewpointChoice::Resolved measuring_viewpoints(const StudyRequest& request, cons
                                                const ViewpointChoice::Resolved& scanning) {
   if (request.occlusion_num_vp == 0) return scanning;
   // On the whole scene's box, so every configuration is measured from the same points.
-  return resolve_for_cloud(ViewpointChoice::from_grid(request.occlusion_num_vp), scene);
+  return resolve_for_cloud(ViewpointChoice::from_grid(request.occlusion_num_vp), scene,
+                           request.tracing.frame, request.tracing.up);
 }
 
 // The analyses' own stages would flood a study's log; it reports its four
@@ -81,7 +82,8 @@ StudyRow run_study_once(const StudyContext& context, const StudyRunInput& run,
 
   progress("scanning", 0.0);
   auto start = Clock::now();
-  const ViewpointChoice::Resolved viewpoints = resolve_for_cloud(run.configuration->choice, cloud);
+  const ViewpointChoice::Resolved viewpoints = resolve_for_cloud(
+      run.configuration->choice, cloud, request.tracing.frame, request.tracing.up);
   for (const auto& position : viewpoints.positions) {
     row.viewpoints.push_back(cloud.to_original(position));  // the table is in the file's frame
   }

@@ -7,6 +7,7 @@
 #include <atomic>
 #include <chrono>
 #include <filesystem>
+#include <sstream>
 #include <stdexcept>
 
 #include "io/scratch_directory.hpp"
@@ -584,6 +585,61 @@ TEST(StudyJob, ConfigurationsComeFromTheConfig) {
   write_text(dir.file("typo.json"), R"({"occlusion": {"study": {"configurations": [
       {"name": "x", "patern": 1}]}}})");
   EXPECT_THROW(load_config(dir.file("typo.json")), UsageError);
+}
+
+}  // namespace
+}  // namespace occlusion
+
+namespace occlusion {
+namespace {
+
+// "x y z;x y z;..." of the table's viewpoint_positions column.
+std::vector<Eigen::Vector3d> row_viewpoints(const CsvTable& table, std::size_t row) {
+  std::vector<Eigen::Vector3d> points;
+  std::istringstream text(table.rows.at(row).at(table.column("viewpoint_positions")));
+  std::string item;
+  while (std::getline(text, item, ';')) {
+    std::istringstream coordinates(item);
+    Eigen::Vector3d p;
+    coordinates >> p.x() >> p.y() >> p.z();
+    points.push_back(p);
+  }
+  return points;
+}
+
+TEST(StudyJob, UpPlacesAGridConfigurationAtMidHeightAlongThatAxis) {
+  // A grid stands at mid-height over the floor plan: under +z its points share
+  // z and spread in x and y; under +x they share x and spread in y and z.
+  const ScratchDirectory dir;
+  for (const std::string up : {"+z", "+x"}) {
+    SCOPED_TRACE(up);
+    StudyRequest request = office_study(dir.file("study" + up));
+    request.configurations = {{"grid_4", ViewpointChoice::from_grid(4)}};
+    request.tracing.up = up;
+    request.tracing.exterior = false;
+    const StudyReport report = run_study(request);
+    const std::vector<Eigen::Vector3d> points = row_viewpoints(report.table, 0);
+    ASSERT_EQ(points.size(), 4u);
+    const int height = up == "+z" ? 2 : 0;
+    for (int axis = 0; axis < 3; ++axis) {
+      double lo = points[0][axis], hi = points[0][axis];
+      for (const auto& p : points) {
+        lo = std::min(lo, p[axis]);
+        hi = std::max(hi, p[axis]);
+      }
+      if (axis == height) {
+        EXPECT_NEAR(hi - lo, 0.0, 1e-4) << "axis " << axis;
+      } else {
+        EXPECT_GT(hi - lo, 0.5) << "axis " << axis;
+      }
+    }
+  }
+  // A study run under one up does not resume under another.
+  StudyRequest other = office_study(dir.file("study+z"));
+  other.configurations = {{"grid_4", ViewpointChoice::from_grid(4)}};
+  other.tracing.up = "+y";
+  other.tracing.exterior = false;
+  EXPECT_THROW(run_study(other), UsageError);
 }
 
 }  // namespace

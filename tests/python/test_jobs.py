@@ -185,3 +185,17 @@ def test_ctrl_c_cancels_a_long_job():
             occlusion.cloud_occlusion(OFFICE, point_radius=0.06, num_rays_per_vp=20_000_000, num_vp=4)
     finally:
         timer.cancel()
+
+
+def test_in_memory_jobs_place_viewpoints_by_up_and_frame_as_files_do():
+    cloud = occlusion.read_cloud(OFFICE)
+    for up in ("+z", "+x"):
+        keys = dict(num_vp=4, up=up, frame="bbox")
+        from_file = occlusion.scan(OFFICE, **keys)
+        in_memory = occlusion.scan(cloud, **keys)
+        positions = [v["position"] for v in in_memory.viewpoints]
+        assert positions == [v["position"] for v in from_file.viewpoints]
+        # A grid stands at mid-height along up: its points share that coordinate.
+        height = 2 if up == "+z" else 0
+        assert len({round(p[height], 6) for p in positions}) == 1
+        assert len({round(p[(height + 1) % 3], 6) for p in positions}) == 2
