@@ -366,6 +366,26 @@ Json::Value to_json(const StudyReport& report) {
     const auto& fit = m.correlation.fit;
     entry["slope"] = to_json(fit ? std::optional<double>(fit->slope) : std::nullopt);
     entry["intercept"] = to_json(fit ? std::optional<double>(fit->intercept) : std::nullopt);
+    const ClusteredAssociation& a = m.association;
+    entry["scenes"] = Json::UInt64(a.scenes);
+    const auto estimate = [](const ClusteredEstimate& e) {
+      Json::Value value(Json::objectValue);
+      value["value"] = to_json(e.value);
+      value["interval95"] = Json::Value();
+      if (e.interval95) {
+        value["interval95"].append(e.interval95->lo);
+        value["interval95"].append(e.interval95->hi);
+      }
+      value["p_value"] = to_json(e.p_value);
+      value["undefined_resamples"] = Json::UInt64(e.undefined_resamples);
+      return value;
+    };
+    entry["inference"]["pearson"] = estimate(a.pearson);
+    entry["inference"]["spearman"] = estimate(a.spearman);
+    entry["inference"]["within_scene_slope"] = estimate(a.within_scene_slope);
+    entry["inference"]["resamples"] = Json::UInt64(a.options.resamples);
+    entry["inference"]["permutations"] = Json::UInt64(a.options.permutations);
+    entry["inference"]["seed"] = Json::UInt64(a.options.seed);
     correlations.append(entry);
   }
   json["correlations"] = correlations;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <map>
 #include <ostream>
 
 #include "job_support.hpp"
@@ -15,6 +16,10 @@ namespace occlusion::job {
 
 namespace {
 
+// Fixed, so that a study's intervals and p-values are the same on every run
+// and every machine.
+const InferenceOptions kInference{2000, 2000, 1};
+
 struct Measure {
   const char* column;
   const char* label;
@@ -27,15 +32,21 @@ const Measure kMeasures[] = {
     {"visible_fraction", "visible fraction (-fscan)"},
 };
 
-// The pairs (measure, mIoU) of the rows that have both.
+// The pairs (measure, mIoU) of the rows that have both, and (when asked)
+// each pair's scene as a number.
 void pairs(const CsvTable& table, const std::string& column, std::vector<double>& x,
-           std::vector<double>& y) {
+           std::vector<double>& y, std::vector<std::size_t>* scenes = nullptr) {
   const std::size_t c = table.column(column), miou = table.column("miou");
+  const std::size_t scene = table.column("scene");
+  std::map<std::string, std::size_t> scene_numbers;
   for (const auto& row : table.rows) {
     const auto a = cell_number(row[c]), b = cell_number(row[miou]);
     if (a && b) {
       x.push_back(*a);
       y.push_back(*b);
+      if (scenes != nullptr) {
+        scenes->push_back(scene_numbers.emplace(row[scene], scene_numbers.size()).first->second);
+      }
     }
   }
 }
@@ -119,9 +130,63 @@ std::string plot(const StudyReport& report) {
   return scatter_plot_svg(panels, plot_title(report));
 }
 
+// "-0.123 [-0.2, -0.05]", the interval left out where there is none.
+std::string with_interval(const ClusteredEstimate& e, const char* pattern) {
+  if (!e.value) return "–";
+  std::string text = format_number(pattern, *e.value);
+  if (e.interval95) {
+    text += " [" + format_number(pattern, e.interval95->lo) + ", " +
+            format_number(pattern, e.interval95->hi) + "]";
+  }
+  return text;
+}
+
+// The study's answer in one sentence, with its uncertainty: the within-scene
+// slope of mIoU on the occlusion level (-poc), or the first measure taken.
+std::string answer(const StudyReport& report) {
+  const MeasureCorrelation* m = nullptr;
+  for (const auto& c : report.correlations) {
+    if (m == nullptr || c.measure == "occlusion_level") m = &c;
+  }
+  if (m == nullptr || m->correlation.n == 0) {
+    return "**Answer:** none yet: no run has both an occlusion measure and an mIoU.";
+  }
+  const ClusteredAssociation& a = m->association;
+  const ClusteredEstimate& slope = a.within_scene_slope;
+  const std::string counts = std::to_string(a.runs) + " runs in " + std::to_string(a.scenes) +
+                             (a.scenes == 1 ? " scene" : " scenes");
+  const std::string p =
+      slope.p_value ? "within-scene permutation p = " + format_number("%.3g", *slope.p_value) + "; "
+                    : "";
+  if (!slope.value) {
+    return "**Answer:** this study cannot say: no scene was scanned from configurations whose " +
+           m->measure + " differs, so there is no within-scene effect to estimate (" + counts +
+           ").";
+  }
+  const std::string change = "within a scene, mIoU changes by " +
+                             format_number("%.3g", *slope.value) + " per unit of " + m->measure;
+  if (!slope.interval95) {
+    return "**Answer (descriptive only):** " + change + " (" + p + counts + "), but " +
+           std::to_string(a.scenes) + (a.scenes == 1 ? " scene is" : " scenes are") +
+           " too few for an interval (at least " + std::to_string(kMinScenesForInterval) +
+           "): this describes these scenes and answers nothing beyond them.";
+  }
+  const Interval& i = *slope.interval95;
+  const std::string interval = "95 % interval " + format_number("%.3g", i.lo) + " to " +
+                               format_number("%.3g", i.hi) + ", scene-clustered bootstrap; ";
+  if (i.lo > 0.0 || i.hi < 0.0) {
+    const bool hurts = i.hi < 0.0;
+    return std::string("**Answer:** more ") +
+           (m->measure == "visible_fraction" ? "visibility" : "occlusion") + ", " +
+           (hurts ? "lower" : "higher") + " mIoU: " + change + " (" + interval + p + counts + ").";
+  }
+  return "**Answer:** no effect of " + m->measure + " on mIoU can be told from noise: " + change +
+         " (" + interval + "it includes 0; " + p + counts + ").";
+}
+
 void write_markdown(std::ostream& out, const StudyReport& report, const std::string& svg_name) {
   const CsvTable& table = report.table;
-  out << "# Occlusion study\n\n";
+  out << "# Occlusion study\n\n" << answer(report) << "\n\n";
   for (const auto& name : segmenters(table)) {
     out << "Segmenter: **" << markdown_cell(name) << "**";
     if (name == kBaselineSegmenterName) {
@@ -145,18 +210,29 @@ void write_markdown(std::ostream& out, const StudyReport& report, const std::str
         << "` classes (mean_over, docs/metrics.md).";
   }
   out << "\n\n## Correlation with mIoU\n\n"
-      << "| measure | runs | Pearson r | Spearman ρ | fitted line |\n"
-      << "|---|---:|---:|---:|---|\n";
+      << "| measure | runs | scenes | Pearson r [95 %] | p | Spearman ρ [95 %] | p | "
+         "within-scene slope [95 %] | p | fitted line |\n"
+      << "|---|---:|---:|---|---:|---|---:|---|---:|---|\n";
   for (const auto& m : report.correlations) {
     const Correlation& c = m.correlation;
+    const ClusteredAssociation& a = m.association;
     const std::string line = c.fit ? "mIoU = " + format_number("%.4g", c.fit->slope) + " × x + " +
                                          format_number("%.4g", c.fit->intercept)
                                    : "–";
-    out << "| " << m.measure << " | " << c.n << " | " << fixed(c.pearson) << " | "
-        << fixed(c.spearman) << " | " << line << " |\n";
+    out << "| " << m.measure << " | " << c.n << " | " << a.scenes << " | "
+        << with_interval(a.pearson, "%.3f") << " | "
+        << format_number("%.3g", a.pearson.p_value, "–") << " | "
+        << with_interval(a.spearman, "%.3f") << " | "
+        << format_number("%.3g", a.spearman.p_value, "–") << " | "
+        << with_interval(a.within_scene_slope, "%.3g") << " | "
+        << format_number("%.3g", a.within_scene_slope.p_value, "–") << " | " << line << " |\n";
   }
   out << "\nA correlation needs at least 3 runs and a measure that varies; – marks one that is "
-         "undefined.\n\n"
+         "undefined. Intervals: 95 % percentile intervals of a bootstrap that draws whole scenes ("
+      << kInference.resamples << " draws, seed " << kInference.seed << "), given from "
+      << kMinScenesForInterval << " scenes on. p: two-sided, from " << kInference.permutations
+      << " shuffles of the measure within each scene. The within-scene slope is the change in "
+         "mIoU per unit of the measure among runs of the same scene (docs/study.md).\n\n"
       << "![mIoU against occlusion](" << svg_name << ")\n\n## Runs\n\n"
       << "| scene | configuration | status | viewpoints | visible fraction | occlusion level | "
          "exterior occlusion level | mIoU | overall accuracy |\n"
@@ -210,9 +286,11 @@ void write_study_summary(StudyReport& report, const std::string& out) {
   report.correlations.clear();
   for (const auto& measure : kMeasures) {
     std::vector<double> x, y;
-    pairs(report.table, measure.column, x, y);
+    std::vector<std::size_t> scenes;
+    pairs(report.table, measure.column, x, y, &scenes);
     if (x.empty() && std::string(measure.column) == "exterior_occlusion_level") continue;
     Correlation correlation = correlate(x, y);
+    ClusteredAssociation association = clustered_association(x, y, scenes, kInference);
     // Rounding can leave a constant's variance a hair above 0 and make a
     // number of it: a constant has no correlation.
     for (const auto* values : {&x, &y}) {
@@ -220,13 +298,17 @@ void write_study_summary(StudyReport& report, const std::string& out) {
       correlation.pearson.reset();
       correlation.spearman.reset();
       correlation.fit.reset();
+      for (auto* e :
+           {&association.pearson, &association.spearman, &association.within_scene_slope}) {
+        *e = ClusteredEstimate{};
+      }
       report.warnings.push_back(std::string(values == &x ? measure.column : "miou") +
                                 " is the same (" + format_number("%.10g", values->front()) +
                                 ") in all " + std::to_string(values->size()) + " runs, so its " +
                                 "correlation with " + (values == &x ? "miou" : measure.column) +
                                 " is undefined");
     }
-    report.correlations.push_back({measure.column, correlation});
+    report.correlations.push_back({measure.column, correlation, association});
   }
   ensure_directory(out);
   const auto path = [&](const char* name) { return (std::filesystem::path(out) / name).string(); };

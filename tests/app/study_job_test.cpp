@@ -12,7 +12,9 @@
 
 #include "io/scratch_directory.hpp"
 #include "occlusion/app/errors.hpp"
+#include "occlusion/app/json_file.hpp"
 #include "occlusion/app/json_output.hpp"
+#include "occlusion/core/random.hpp"
 #include "occlusion/io/cloud_io.hpp"
 #include "occlusion/io/label_file.hpp"
 
@@ -640,6 +642,84 @@ TEST(StudyJob, UpPlacesAGridConfigurationAtMidHeightAlongThatAxis) {
   other.tracing.up = "+y";
   other.tracing.exterior = false;
   EXPECT_THROW(run_study(other), UsageError);
+}
+
+}  // namespace
+}  // namespace occlusion
+
+namespace occlusion {
+namespace {
+
+// Rows of a study of 8 scenes x 3 configurations whose mIoU falls by
+// `slope` per unit of occlusion level inside each scene, around a level of
+// its own per scene that rises with the scene's occlusion (so the pooled
+// runs alone would mislead).
+CsvTable planted_study(const CsvTable& like, double slope) {
+  CsvTable table;
+  table.columns = like.columns;
+  Rng random(5);
+  for (int scene = 0; scene < 8; ++scene) {
+    for (int configuration = 0; configuration < 3; ++configuration) {
+      std::vector<std::string> row = like.rows.at(0);
+      const double occlusion = 0.1 * scene + 0.05 * configuration + 0.01 * random.uniform();
+      const double miou = 0.3 + 0.1 * scene + slope * occlusion + 0.002 * random.uniform();
+      row[table.column("run")] = std::to_string(scene * 3 + configuration);
+      row[table.column("scene")] = "room_" + std::to_string(scene);
+      row[table.column("configuration")] = "c" + std::to_string(configuration);
+      row[table.column("occlusion_level")] = std::to_string(occlusion);
+      row[table.column("miou")] = std::to_string(miou);
+      table.rows.push_back(row);
+    }
+  }
+  return table;
+}
+
+TEST(StudyJob, StudyMdOpensWithTheAnswerAndItsUncertainty) {
+  const ScratchDirectory dir;
+  const StudyReport real = run_study(office_study(dir.file("real")));
+  // One scene: a slope, but no interval, and the answer says so.
+  const std::string one_scene = read_bytes(dir.file("real/study.md"));
+  EXPECT_NE(one_scene.find("# Occlusion study\n\n**Answer (descriptive only):**"),
+            std::string::npos)
+      << one_scene.substr(0, 400);
+  EXPECT_NE(one_scene.find("1 scene is too few for an interval"), std::string::npos);
+
+  for (const double slope : {-0.5, 0.0}) {
+    SCOPED_TRACE(slope);
+    const std::string name = slope < 0 ? "effect" : "none";
+    write_csv(dir.file(name + ".csv"), planted_study(real.table, slope));
+    const StudyReport merged = run_study_merge({dir.file(name + ".csv")}, dir.file(name));
+    const MeasureCorrelation& occlusion = merged.correlations.at(0);
+    ASSERT_EQ(occlusion.measure, "occlusion_level");
+    EXPECT_EQ(occlusion.association.runs, 24u);
+    EXPECT_EQ(occlusion.association.scenes, 8u);
+    const ClusteredEstimate& within = occlusion.association.within_scene_slope;
+    ASSERT_TRUE(within.value && within.interval95);
+    EXPECT_NEAR(*within.value, slope, 0.05);
+    EXPECT_LT(within.interval95->lo, slope);
+    EXPECT_GT(within.interval95->hi, slope);
+    const std::string markdown = read_bytes(dir.file(name + "/study.md"));
+    const Json::Value json = read_json_file(dir.file(name + "/study.json"), "study report");
+    const Json::Value& inference = json["correlations"][0]["inference"]["within_scene_slope"];
+    EXPECT_EQ(inference["interval95"].size(), 2u);
+    EXPECT_EQ(json["correlations"][0]["scenes"].asUInt(), 8u);
+    if (slope < 0) {
+      // The pooled runs rise with occlusion (the scenes' own levels); the
+      // answer is the within-scene fall.
+      EXPECT_GT(*occlusion.correlation.pearson, 0.0);
+      EXPECT_LT(within.interval95->hi, 0.0);
+      EXPECT_NE(markdown.find("**Answer:** more occlusion, lower mIoU: within a scene"),
+                std::string::npos)
+          << markdown.substr(0, 400);
+    } else {
+      EXPECT_LT(within.interval95->lo, 0.0);
+      EXPECT_NE(markdown.find("**Answer:** no effect of occlusion_level on mIoU can be told from "
+                              "noise"),
+                std::string::npos)
+          << markdown.substr(0, 400);
+    }
+    EXPECT_NE(markdown.find("24 runs in 8 scenes"), std::string::npos);
+  }
 }
 
 }  // namespace

@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "occlusion/analysis/class_mapping.hpp"
+#include "occlusion/analysis/clustered_inference.hpp"
 #include "occlusion/analysis/confusion_matrix.hpp"
 #include "occlusion/analysis/correlation.hpp"
 #include "occlusion/analysis/mesh_estimation.hpp"
@@ -97,6 +98,9 @@ StudyShard parse_shard(const std::string& text);
 struct MeasureCorrelation {
   std::string measure;  // a column: visible_fraction, occlusion_level, ...
   Correlation correlation;
+  // The same runs with their scenes: intervals, p-values and the within-scene
+  // slope (analysis/clustered_inference.hpp).
+  ClusteredAssociation association;
 };
 
 struct StudyReport {
