@@ -108,28 +108,6 @@ std::string plot_title(const StudyReport& report) {
   return title + ")";
 }
 
-std::string plot(const StudyReport& report) {
-  std::vector<ScatterPanel> panels;
-  for (const auto& measure : kMeasures) {
-    ScatterPanel panel;
-    panel.title = panel_title(measure, report.parameters);
-    panel.x_label = measure.column;
-    panel.y_label = "mIoU";
-    pairs(report.table, measure.column, panel.x, panel.y);
-    for (const auto& c : report.correlations) {
-      if (c.measure == measure.column && c.correlation.fit) {
-        panel.line = PlotLine{c.correlation.fit->slope, c.correlation.fit->intercept};
-      }
-    }
-    // A measure the study did not take (exterior off) has no panel, unless
-    // the table is empty and the plot would otherwise have none.
-    if (!panel.x.empty() || (panels.empty() && report.table.rows.empty())) {
-      panels.push_back(panel);
-    }
-  }
-  return scatter_plot_svg(panels, plot_title(report));
-}
-
 // "-0.123 [-0.2, -0.05]", the interval left out where there is none.
 std::string with_interval(const ClusteredEstimate& e, const char* pattern) {
   if (!e.value) return "–";
@@ -139,6 +117,39 @@ std::string with_interval(const ClusteredEstimate& e, const char* pattern) {
             format_number(pattern, e.interval95->hi) + "]";
   }
   return text;
+}
+
+std::string plot(const StudyReport& report) {
+  std::vector<ScatterPanel> panels;
+  for (const auto& measure : kMeasures) {
+    ScatterPanel panel;
+    panel.title = panel_title(measure, report.parameters);
+    panel.x_label = measure.column;
+    panel.y_label = "mIoU";
+    pairs(report.table, measure.column, panel.x, panel.y, &panel.group);
+    panel.y_range = std::make_pair(0.0, 1.0);  // mIoU's whole range: a small spread looks small
+    for (const auto& c : report.correlations) {
+      if (c.measure != measure.column) continue;
+      if (c.correlation.fit) {
+        panel.line = PlotLine{c.correlation.fit->slope, c.correlation.fit->intercept};
+      }
+      const ClusteredAssociation& a = c.association;
+      const auto p_text = [](const ClusteredEstimate& e) {
+        return e.p_value ? ", p = " + format_number("%.3g", *e.p_value) : std::string();
+      };
+      panel.notes = {"Pearson r = " + with_interval(a.pearson, "%.2f") + p_text(a.pearson),
+                     "within-scene slope = " + with_interval(a.within_scene_slope, "%.3g") +
+                         p_text(a.within_scene_slope),
+                     std::to_string(a.runs) + " runs in " + std::to_string(a.scenes) +
+                         (a.scenes == 1 ? " scene" : " scenes") + "; colour: scene"};
+    }
+    // A measure the study did not take (exterior off) has no panel, unless
+    // the table is empty and the plot would otherwise have none.
+    if (!panel.x.empty() || (panels.empty() && report.table.rows.empty())) {
+      panels.push_back(panel);
+    }
+  }
+  return scatter_plot_svg(panels, plot_title(report));
 }
 
 // The study's answer in one sentence, with its uncertainty: the within-scene

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 #include <sstream>
 #include <stdexcept>
 
@@ -10,9 +11,55 @@ namespace occlusion {
 
 namespace {
 
-constexpr double kPanelWidth = 380, kPanelHeight = 320;
-constexpr double kLeft = 62, kRight = 18, kTop = 44, kBottom = 52;
-constexpr double kTitleHeight = 30;
+constexpr double kPanelWidth = 380, kPlotHeight = 232;
+constexpr double kLeft = 62, kRight = 18, kBottom = 52;
+constexpr double kLineHeight = 16, kTopPad = 8;
+// An estimate of one character's width at 12 px sans-serif (bold a little
+// wider): wrapping at it keeps text inside its panel.
+constexpr double kCharWidth = 7.0, kBoldCharWidth = 7.6, kTitleCharWidth = 8.6;
+// Tableau's ten categorical colours; an eleventh scene takes the first again.
+const char* const kGroupColours[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd",
+                                     "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22", "#17becf"};
+
+// `text` broken at spaces into lines of at most `width` pixels; a word
+// longer than a line is broken inside.
+std::vector<std::string> wrapped(const std::string& text, double width, double char_width) {
+  const auto per_line = static_cast<std::size_t>(std::max(8.0, width / char_width));
+  std::vector<std::string> lines;
+  std::string line;
+  std::istringstream words(text);
+  std::string word;
+  while (words >> word) {
+    while (word.size() > per_line) {
+      if (!line.empty()) lines.push_back(line);
+      lines.push_back(word.substr(0, per_line));
+      line.clear();
+      word = word.substr(per_line);
+    }
+    if (!line.empty() && line.size() + 1 + word.size() > per_line) {
+      lines.push_back(line);
+      line.clear();
+    }
+    line += (line.empty() ? "" : " ") + word;
+  }
+  if (!line.empty()) lines.push_back(line);
+  return lines;
+}
+
+double panel_text_width() {
+  return kPanelWidth - 20;
+}
+
+std::vector<std::string> heading_lines(const ScatterPanel& panel) {
+  return wrapped(panel.title, panel_text_width(), kBoldCharWidth);
+}
+std::vector<std::string> note_lines(const ScatterPanel& panel) {
+  std::vector<std::string> lines;
+  for (const auto& note : panel.notes) {
+    for (auto& line : wrapped(note, panel_text_width(), kCharWidth)) lines.push_back(line);
+  }
+  return lines;
+}
 
 std::string escaped(const std::string& text) {
   std::string out;
@@ -77,7 +124,8 @@ struct Axis {
 };
 
 void check(const ScatterPanel& panel) {
-  if (panel.x.size() != panel.y.size()) {
+  if (panel.x.size() != panel.y.size() ||
+      (!panel.group.empty() && panel.group.size() != panel.x.size())) {
     throw std::invalid_argument("scatter_plot_svg: panel '" + panel.title + "' has " +
                                 std::to_string(panel.x.size()) + " x but " +
                                 std::to_string(panel.y.size()) + " y values");
@@ -87,6 +135,14 @@ void check(const ScatterPanel& panel) {
       !std::all_of(panel.y.begin(), panel.y.end(), finite)) {
     throw std::invalid_argument("scatter_plot_svg: panel '" + panel.title +
                                 "' has a value that is not finite");
+  }
+  if (panel.y_range) {
+    const auto [lo, hi] = *panel.y_range;
+    if (!(lo < hi) || !std::isfinite(lo) || !std::isfinite(hi) ||
+        std::any_of(panel.y.begin(), panel.y.end(), [&](double v) { return v < lo || v > hi; })) {
+      throw std::invalid_argument("scatter_plot_svg: panel '" + panel.title +
+                                  "' has a y outside its declared range");
+    }
   }
 }
 
@@ -98,11 +154,15 @@ Axis axis_of(const std::vector<double>& values) {
   return Axis::around(*lo - margin, *hi + margin);
 }
 
-void draw_panel(std::ostream& out, const ScatterPanel& panel, std::size_t index, double top) {
+// `heading` is the height every panel keeps for its title and notes.
+void draw_panel(std::ostream& out, const ScatterPanel& panel, std::size_t index, double top,
+                double heading) {
   const double left = static_cast<double>(index) * kPanelWidth;
   const double x0 = left + kLeft, x1 = left + kPanelWidth - kRight;
-  const double y0 = top + kPanelHeight - kBottom, y1 = top + kTop;  // y0: the bottom
-  const Axis ax = axis_of(panel.x), ay = axis_of(panel.y);
+  const double y1 = top + heading, y0 = y1 + kPlotHeight;  // y0: the bottom
+  const Axis ax = axis_of(panel.x);
+  const Axis ay =
+      panel.y_range ? Axis::around(panel.y_range->first, panel.y_range->second) : axis_of(panel.y);
   const auto px = [&](double x) { return x0 + (x - ax.lo) / (ax.hi - ax.lo) * (x1 - x0); };
   const auto py = [&](double y) { return y0 - (y - ay.lo) / (ay.hi - ay.lo) * (y0 - y1); };
   const std::string clip = "plot-area-" + std::to_string(index);
@@ -110,8 +170,18 @@ void draw_panel(std::ostream& out, const ScatterPanel& panel, std::size_t index,
   out << "<g class=\"panel\">\n";
   out << "<clipPath id=\"" << clip << "\"><rect x=\"" << x0 << "\" y=\"" << y1 << "\" width=\""
       << x1 - x0 << "\" height=\"" << y0 - y1 << "\"/></clipPath>\n";
-  out << "<text x=\"" << (x0 + x1) / 2 << "\" y=\"" << top + 24
-      << "\" text-anchor=\"middle\" font-weight=\"bold\">" << escaped(panel.title) << "</text>\n";
+  double line_y = top + kTopPad + kLineHeight - 4;
+  const double centre = left + kPanelWidth / 2;
+  for (const auto& line : heading_lines(panel)) {
+    out << "<text x=\"" << centre << "\" y=\"" << line_y
+        << "\" text-anchor=\"middle\" font-weight=\"bold\">" << escaped(line) << "</text>\n";
+    line_y += kLineHeight;
+  }
+  for (const auto& line : note_lines(panel)) {
+    out << "<text class=\"note\" x=\"" << centre << "\" y=\"" << line_y
+        << "\" text-anchor=\"middle\" fill=\"#333\">" << escaped(line) << "</text>\n";
+    line_y += kLineHeight;
+  }
   out << "<rect x=\"" << x0 << "\" y=\"" << y1 << "\" width=\"" << x1 - x0 << "\" height=\""
       << y0 - y1 << "\" fill=\"none\" stroke=\"#444\"/>\n";
   for (const double t : ax.ticks()) {
@@ -133,8 +203,9 @@ void draw_panel(std::ostream& out, const ScatterPanel& panel, std::size_t index,
         << "\" text-anchor=\"middle\" fill=\"#888\">no data</text>\n";
   }
   for (std::size_t i = 0; i < panel.x.size(); ++i) {
-    out << "<circle cx=\"" << px(panel.x[i]) << "\" cy=\"" << py(panel.y[i])
-        << "\" r=\"4\" fill=\"#1f77b4\" fill-opacity=\"0.75\"/>\n";
+    const std::size_t colour = panel.group.empty() ? 0 : panel.group[i] % std::size(kGroupColours);
+    out << "<circle cx=\"" << px(panel.x[i]) << "\" cy=\"" << py(panel.y[i]) << "\" r=\"4\" fill=\""
+        << kGroupColours[colour] << "\" fill-opacity=\"0.75\"/>\n";
   }
   if (panel.line) {
     const auto y_at = [&](double x) { return panel.line->slope * x + panel.line->intercept; };
@@ -150,18 +221,29 @@ void draw_panel(std::ostream& out, const ScatterPanel& panel, std::size_t index,
 std::string scatter_plot_svg(const std::vector<ScatterPanel>& panels, const std::string& title) {
   for (const auto& panel : panels) check(panel);
   const double width = kPanelWidth * static_cast<double>(std::max<std::size_t>(panels.size(), 1));
-  const double top = title.empty() ? 0.0 : kTitleHeight;
+  const std::vector<std::string> title_lines = wrapped(title, width - 20, kTitleCharWidth);
+  const double top = title_lines.empty()
+                         ? 0.0
+                         : kTopPad + kLineHeight * 1.25 * static_cast<double>(title_lines.size());
+  std::size_t heading_count = 1;
+  for (const auto& panel : panels) {
+    heading_count = std::max(heading_count, heading_lines(panel).size() + note_lines(panel).size());
+  }
+  const double heading = kTopPad * 2 + kLineHeight * static_cast<double>(heading_count);
+  const double height = top + heading + kPlotHeight + kBottom;
   std::ostringstream out;
   out.precision(6);
-  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\""
-      << top + kPanelHeight << "\" viewBox=\"0 0 " << width << ' ' << top + kPanelHeight
+  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
+      << "\" viewBox=\"0 0 " << width << ' ' << height
       << "\" font-family=\"sans-serif\" font-size=\"12\">\n";
   out << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-  if (!title.empty()) {
-    out << "<text x=\"" << width / 2 << "\" y=\"22\" text-anchor=\"middle\" font-size=\"15\">"
-        << escaped(title) << "</text>\n";
+  double line_y = kTopPad + kLineHeight;
+  for (const auto& line : title_lines) {
+    out << "<text x=\"" << width / 2 << "\" y=\"" << line_y
+        << "\" text-anchor=\"middle\" font-size=\"15\">" << escaped(line) << "</text>\n";
+    line_y += kLineHeight * 1.25;
   }
-  for (std::size_t i = 0; i < panels.size(); ++i) draw_panel(out, panels[i], i, top);
+  for (std::size_t i = 0; i < panels.size(); ++i) draw_panel(out, panels[i], i, top, heading);
   out << "</svg>\n";
   return out.str();
 }
