@@ -127,7 +127,12 @@ std::string plot(const StudyReport& report) {
     panel.x_label = measure.column;
     panel.y_label = "mIoU";
     pairs(report.table, measure.column, panel.x, panel.y, &panel.group);
-    panel.y_range = std::make_pair(0.0, 1.0);  // mIoU's whole range: a small spread looks small
+    // mIoU's whole range, so that a small spread looks small (a merged CSV
+    // edited by hand may hold other values: then the axis fits them).
+    if (std::all_of(panel.y.begin(), panel.y.end(),
+                    [](double v) { return v >= 0.0 && v <= 1.0; })) {
+      panel.y_range = std::make_pair(0.0, 1.0);
+    }
     for (const auto& c : report.correlations) {
       if (c.measure != measure.column) continue;
       if (c.correlation.fit) {
