@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <map>
 #include <ostream>
+#include <sstream>
 
 #include "job_support.hpp"
 #include "occlusion/analysis/baseline_segmenter.hpp"
@@ -32,16 +33,48 @@ const Measure kMeasures[] = {
     {"visible_fraction", "visible fraction (-fscan)"},
 };
 
-// The pairs (measure, mIoU) of the rows that have both, and (when asked)
-// each pair's scene as a number.
+// Per row: whether an earlier row of the same scene placed the same set of
+// viewpoints (pattern_1 and a one-point grid both stand at the centre). Such
+// a run measures nothing new, and counting it twice would shrink the
+// intervals: it stays in the table and leaves the statistics, with a warning.
+std::vector<bool> repeated_runs(const CsvTable& table, std::vector<std::string>* warnings) {
+  const std::size_t scene = table.column("scene"), configuration = table.column("configuration");
+  const std::size_t positions = table.column("viewpoint_positions");
+  std::map<std::string, std::string> first;  // scene + viewpoint set -> configuration
+  std::vector<bool> repeated(table.rows.size(), false);
+  for (std::size_t r = 0; r < table.rows.size(); ++r) {
+    const auto& row = table.rows[r];
+    if (failed_row(table, row)) continue;
+    std::vector<std::string> points;
+    std::istringstream text(row[positions]);
+    for (std::string point; std::getline(text, point, ';');) points.push_back(point);
+    std::sort(points.begin(), points.end());
+    std::string key = row[scene] + '\n';
+    for (const auto& point : points) key += point + ';';
+    const auto [it, added] = first.emplace(key, row[configuration]);
+    if (added) continue;
+    repeated[r] = true;
+    if (warnings != nullptr) {
+      warnings->push_back(row[scene] + ": configuration '" + row[configuration] +
+                          "' places the same viewpoints as '" + it->second +
+                          "'; the correlations count that measurement once");
+    }
+  }
+  return repeated;
+}
+
+// The pairs (measure, mIoU) of the rows that have both and are not a
+// repeated run, and (when asked) each pair's scene as a number.
 void pairs(const CsvTable& table, const std::string& column, std::vector<double>& x,
            std::vector<double>& y, std::vector<std::size_t>* scenes = nullptr) {
   const std::size_t c = table.column(column), miou = table.column("miou");
   const std::size_t scene = table.column("scene");
+  const std::vector<bool> repeated = repeated_runs(table, nullptr);
   std::map<std::string, std::size_t> scene_numbers;
-  for (const auto& row : table.rows) {
+  for (std::size_t r = 0; r < table.rows.size(); ++r) {
+    const auto& row = table.rows[r];
     const auto a = cell_number(row[c]), b = cell_number(row[miou]);
-    if (a && b) {
+    if (a && b && !repeated[r]) {
       x.push_back(*a);
       y.push_back(*b);
       if (scenes != nullptr) {
@@ -300,6 +333,7 @@ void write_markdown(std::ostream& out, const StudyReport& report, const std::str
 
 void write_study_summary(StudyReport& report, const std::string& out) {
   report.correlations.clear();
+  repeated_runs(report.table, &report.warnings);
   for (const auto& measure : kMeasures) {
     std::vector<double> x, y;
     std::vector<std::size_t> scenes;

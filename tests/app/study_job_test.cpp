@@ -724,3 +724,31 @@ TEST(StudyJob, StudyMdOpensWithTheAnswerAndItsUncertainty) {
 
 }  // namespace
 }  // namespace occlusion
+
+namespace occlusion {
+namespace {
+
+TEST(StudyJob, ConfigurationsWithTheSameViewpointsCountOnce) {
+  const ScratchDirectory dir;
+  StudyRequest request = office_study(dir.file("study"));
+  request.tracing.exterior = false;
+  request.configurations = {
+      {"pair", ViewpointChoice::from_points({{1.0, 1.0, 1.2}, {4.5, 3.5, 1.2}})},
+      {"centre", ViewpointChoice::from_pattern(1)},
+      {"pair_reversed", ViewpointChoice::from_points({{4.5, 3.5, 1.2}, {1.0, 1.0, 1.2}})},
+      {"corner", ViewpointChoice::from_points({{0.8, 4.0, 2.0}})}};
+  const StudyReport report = run_study(request);
+  EXPECT_EQ(report.table.rows.size(), 4u);  // every run stays in the table
+  const std::string warning =
+      "office_1: configuration 'pair_reversed' places the same viewpoints as 'pair'";
+  EXPECT_EQ(std::count_if(report.warnings.begin(), report.warnings.end(),
+                          [&](const std::string& w) { return w.rfind(warning, 0) == 0; }),
+            1);
+  for (const auto& m : report.correlations) {
+    EXPECT_EQ(m.correlation.n, 3u) << m.measure;
+    EXPECT_EQ(m.association.runs, 3u) << m.measure;
+  }
+}
+
+}  // namespace
+}  // namespace occlusion
