@@ -77,8 +77,13 @@ const Keys<StudyRequest>& study_keys() {
        key("occlusion_num_vp", &R::occlusion_num_vp)
            .range(0, ViewpointChoice::kMaxViewpoints)
            .metavar("N")
-           .doc("measure occlusion from N grid viewpoints (the same for every configuration); "
-                "0: from each configuration's own viewpoints"),
+           .doc("measure every scan's occlusion from the same N grid viewpoints over the whole "
+                "scene, so that configurations are compared by what their scans lack; 0: from "
+                "each configuration's own viewpoints"),
+       key("scoring", &R::scoring)
+           .choices({"scanned", "full"})
+           .doc("mIoU over the scanned points (what the segmenter saw), or over the full "
+                "scene, the points the scan missed counting as misses of their class"),
        key("segmenter", &R::segmenter)
            .metavar("CMD")
            .doc("'baseline' (a geometric baseline on the region-growing planes, not a network) "

@@ -82,8 +82,8 @@ Json::Value row_parameters(const StudyRequest& q) {
   // as it was: they join the fingerprint only when set, so a study run before
   // they existed still resumes.
   static const Json::Value defaults = parameters_json(study_keys(), StudyRequest{});
-  for (const char* key :
-       {"scans", "min_range", "max_range", "class_mapping", "class_names", "frame", "up"}) {
+  for (const char* key : {"scans", "min_range", "max_range", "class_mapping", "class_names",
+                          "frame", "up", "scoring"}) {
     if (p.isMember(key) && same(p[key], defaults[key])) p.removeMember(key);
   }
   p["segmenter"] = segmenter_name(q.segmenter);

@@ -34,6 +34,21 @@ ViewpointChoice::Resolved measuring_viewpoints(const StudyRequest& request, cons
                            request.tracing.frame, request.tracing.up);
 }
 
+// The points a scan missed, scored as -eval scores a point that received no
+// label: a miss of its class (a false negative) and a false positive of none.
+ConfusionMatrix missed_points_confusion(const StudyContext& context, const PointCloud& scene,
+                                        const std::vector<bool>& seen, const std::string& name) {
+  std::vector<bool> missed(seen.size());
+  for (std::size_t i = 0; i < seen.size(); ++i) missed[i] = !seen[i];
+  SceneInput hidden;
+  hidden.ground_truth_name = name + " (points the scan missed)";
+  hidden.ground_truth = scene.subset(missed);
+  if (hidden.ground_truth.size() == 0) return ConfusionMatrix(context.mapping.evaluation_classes());
+  hidden.prediction_name = "no prediction";
+  hidden.prediction.labels.assign(hidden.ground_truth.size(), -1);
+  return evaluate_scene(hidden, context.mapping, 0.0, 1).confusion;
+}
+
 // The analyses' own stages would flood a study's log; it reports its four
 // steps (run_study_once) and forwards only the cancel flag.
 Progress cancel_only(const Progress& progress) {
@@ -90,7 +105,8 @@ StudyRow run_study_once(const StudyContext& context, const StudyRunInput& run,
   const ScanReport scan =
       run_scan_on(cloud, viewpoints, study_scan_request(request, run.scene_path), inner);
   row.visible_fraction = scan.result.visible_fraction;
-  PointCloud scanned = cloud.subset(seen_points(scan.result));
+  const std::vector<bool> seen = seen_points(scan.result);
+  PointCloud scanned = cloud.subset(seen);
   row.scanned_points = scanned.size();
   if (scanned.size() == 0) {
     throw UsageError("configuration '" + row.configuration + "' sees no point of " + row.scene);
@@ -142,7 +158,10 @@ StudyRow run_study_once(const StudyContext& context, const StudyRunInput& run,
     const SceneEvaluation evaluation =
         evaluate_scene(scene, context.mapping, no_transfer, request.tracing.threads, inner);
     add_scene_warnings(evaluation, no_transfer, warnings);
-    row.metrics = compute_metrics(evaluation.confusion, request.mean_over);
+    ConfusionMatrix confusion = evaluation.confusion;
+    if (request.scoring == "full")
+      confusion += missed_points_confusion(context, cloud, seen, run.scene_path);
+    row.metrics = compute_metrics(confusion, request.mean_over);
     row.evaluation_seconds = seconds_since(start);
   } catch (const RunFailure& e) {
     row.failure = e.what();

@@ -484,24 +484,40 @@ TEST(StudyJob, ResumingWithOtherParametersIsRefusedNamingThem) {
 TEST(StudyJob, AConstantMeasureHasNoCorrelation) {
   const ScratchDirectory dir;
   StudyRequest request = office_study(dir.file("study"));
-  // Three names for the same viewpoints: every measure is the same in each run.
+  // Three names for the same viewpoints: one measurement, counted once.
   for (auto& configuration : request.configurations) {
     configuration.choice = ViewpointChoice::from_pattern(7);
   }
   const StudyReport report = run_study(request);
   ASSERT_EQ(report.table.rows.size(), 3u);
   for (const auto& m : report.correlations) {
+    EXPECT_EQ(m.correlation.n, 1u);
+    EXPECT_FALSE(m.correlation.pearson) << m.measure;
+  }
+  // Three different viewpoint sets whose scans measure the same: the measure
+  // is constant, and its correlation undefined, not a number.
+  CsvTable table = report.table;
+  const std::size_t positions = table.column("viewpoint_positions");
+  for (std::size_t r = 0; r < 3; ++r) {
+    table.rows[r][positions] = std::to_string(r + 1) + " 1 1";
+    table.rows[r][table.column("miou")] = std::to_string(0.2 + 0.1 * static_cast<double>(r));
+  }
+  write_csv(dir.file("constant.csv"), table);
+  const StudyReport merged = run_study_merge({dir.file("constant.csv")}, dir.file("merged"));
+  for (const auto& m : merged.correlations) {
     EXPECT_EQ(m.correlation.n, 3u);
     EXPECT_FALSE(m.correlation.pearson) << m.measure;
     EXPECT_FALSE(m.correlation.spearman) << m.measure;
     EXPECT_FALSE(m.correlation.fit) << m.measure;
+    EXPECT_FALSE(m.association.within_scene_slope.value) << m.measure;
   }
-  const bool warned = std::any_of(report.warnings.begin(), report.warnings.end(), [](auto& w) {
+  const bool warned = std::any_of(merged.warnings.begin(), merged.warnings.end(), [](auto& w) {
     return w.find("visible_fraction is the same") != std::string::npos &&
            w.find("undefined") != std::string::npos;
   });
   EXPECT_TRUE(warned);
-  EXPECT_NE(read_bytes(dir.file("study/study.json")).find("\"pearson\" : null"), std::string::npos);
+  EXPECT_NE(read_bytes(dir.file("merged/study.json")).find("\"pearson\" : null"),
+            std::string::npos);
 }
 
 TEST(StudyJob, MeanOverChoosesTheClassesMiouAverages) {
@@ -668,6 +684,7 @@ CsvTable planted_study(const CsvTable& like, double slope) {
       row[table.column("configuration")] = "c" + std::to_string(configuration);
       row[table.column("occlusion_level")] = std::to_string(occlusion);
       row[table.column("miou")] = std::to_string(miou);
+      row[table.column("viewpoint_positions")] = std::to_string(configuration) + " 2 1.5";
       table.rows.push_back(row);
     }
   }
@@ -748,6 +765,45 @@ TEST(StudyJob, ConfigurationsWithTheSameViewpointsCountOnce) {
     EXPECT_EQ(m.correlation.n, 3u) << m.measure;
     EXPECT_EQ(m.association.runs, 3u) << m.measure;
   }
+}
+
+}  // namespace
+}  // namespace occlusion
+
+namespace occlusion {
+namespace {
+
+TEST(StudyJob, FullScoringCountsThePointsTheScanMissedAsMisses) {
+  // Everything called wall. Over the scan's points accuracy is the walls it
+  // kept over the points it kept; over the full scene, the walls it kept over
+  // every point of the scene: the two differ by scanned_points / points.
+  const ScratchDirectory dir;
+  double accuracy[2] = {0, 0};
+  const char* scorings[2] = {"scanned", "full"};
+  CsvTable table;
+  for (int k = 0; k < 2; ++k) {
+    StudyRequest request = office_study(dir.file(std::string("study_") + scorings[k]));
+    request.configurations = {{"centre", ViewpointChoice::from_pattern(1)}};
+    request.tracing.exterior = false;
+    request.segmenter = kAllWall;
+    request.scoring = scorings[k];
+    table = run_study(request).table;
+    accuracy[k] = number(table, 0, "overall_accuracy");
+  }
+  const double kept = number(table, 0, "scanned_points") / number(table, 0, "points");
+  ASSERT_LT(kept, 0.95);  // the centre alone misses points, or the test says nothing
+  EXPECT_NEAR(accuracy[1], accuracy[0] * kept, 1e-9);
+  // The walls' IoU: tp over the walls' points plus the others called wall.
+  const PointCloud scene = read_cloud(kSource + "/files/s3dis_synthetic/Area_1/office_1");
+  const PointCloud scanned = read_cloud(dir.file("study_full/runs/office_1__centre.scan.ply"));
+  const auto walls = [](const PointCloud& cloud) {
+    double n = 0;
+    for (const auto label : cloud.labels) n += cloud.class_names[label] == "wall" ? 1 : 0;
+    return n;
+  };
+  const double iou_full =
+      walls(scanned) / (walls(scene) + (static_cast<double>(scanned.size()) - walls(scanned)));
+  EXPECT_NEAR(number(table, 0, "iou_wall"), iou_full, 1e-9);
 }
 
 }  // namespace

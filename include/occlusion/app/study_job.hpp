@@ -47,6 +47,9 @@ CloudOcclusionRequest default_study_tracing();
 // walls and floor are far larger than -rgoc's max_cluster_size of 100000.
 RegionGrowingOptions default_study_estimation();
 
+// The study's reference set: a 3 x 3 grid (docs/study.md says why).
+inline constexpr unsigned kReferenceViewpoints = 9;
+
 struct StudyRequest {
   std::vector<std::string> scenes;  // labelled clouds with class names, S3DIS rooms
   std::vector<NamedViewpointChoice> configurations;
@@ -56,9 +59,16 @@ struct StudyRequest {
   CloudOcclusionRequest tracing = default_study_tracing();
   double self_tolerance = -1.0;  // of the scan, as -fscan; negative: 2 * point_radius
   std::string format = "ply";    // of the scanned clouds written for the segmenter
-  // 0: measure each scanned cloud's occlusion from its configuration's own
-  // viewpoints; N: from N viewpoints on a grid, the same for every configuration.
-  unsigned occlusion_num_vp = 0;
+  // N: measure every scanned cloud's occlusion from the same N viewpoints on a
+  // grid over the whole scene, so that the measure ranks configurations by
+  // what their scans lack, not by where they stood; 0: from each
+  // configuration's own viewpoints (then a configuration is measured from
+  // where it scanned, and its scan's holes stay out of sight).
+  unsigned occlusion_num_vp = kReferenceViewpoints;
+  // "scanned": mIoU over the points the scan kept (what the segmenter saw);
+  // "full": over every point of the scene, those the scan missed counting
+  // as misses of their class (occlusion's whole cost).
+  std::string scoring = "scanned";
   // "baseline", or a shell command with {input} (the scanned cloud) and
   // {output} (where it must write its prediction) in it.
   std::string segmenter = kBaselineSegmenter;
