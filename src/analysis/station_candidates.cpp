@@ -44,7 +44,8 @@ bool escapes(const Tree& tree, const Eigen::Vector3d& position,
     ray.direction = direction;
     if (!tree.occluded(ray)) ++escaped;
   }
-  return static_cast<double>(escaped) > kOutsideEscapeShare * static_cast<double>(directions.size());
+  return static_cast<double>(escaped) >
+         kOutsideEscapeShare * static_cast<double>(directions.size());
 }
 
 // Squared distance from p to triangle abc (Ericson, Real-Time Collision
@@ -191,8 +192,8 @@ std::vector<Eigen::Vector3d> floor_grid(const Box& frame, const UpAxis& up, doub
   const double nu = steps(u), nv = steps(v);
   if (nu * nv > static_cast<double>(kMaxGridCandidates)) {
     throw std::invalid_argument("station candidates: spacing " + std::to_string(spacing) +
-                                " gives " + std::to_string(nu * nv) + " grid positions, more than " +
-                                std::to_string(kMaxGridCandidates));
+                                " gives " + std::to_string(nu * nv) +
+                                " grid positions, more than " + std::to_string(kMaxGridCandidates));
   }
   const double start_u = (frame.lo[u] + frame.hi[u] - (nu - 1.0) * spacing) / 2.0;
   const double start_v = (frame.lo[v] + frame.hi[v] - (nv - 1.0) * spacing) / 2.0;
@@ -226,7 +227,8 @@ StationCandidates keep_free_positions(const TriangleMesh& mesh,
                                       std::vector<Eigen::Vector3d> positions, double clearance,
                                       const UpAxis& up, unsigned threads,
                                       const Progress& progress) {
-  if (mesh.face_count() == 0) throw std::invalid_argument("station candidates: the mesh has no faces");
+  if (mesh.face_count() == 0)
+    throw std::invalid_argument("station candidates: the mesh has no faces");
   check_positions(positions, clearance);
   const std::vector<bool> clear = clear_of_faces(mesh, positions, clearance, threads, progress);
   const TriangleOctree tree(pack_triangles(mesh.triangles()), {}, progress);

@@ -189,7 +189,8 @@ void Selector::greedy() {
     weight += best.bound;
     in_set_[best.candidate] = true;
     const std::size_t slot = join_slot(best.candidate);
-    greedy_chosen_.insert(greedy_chosen_.begin() + static_cast<std::ptrdiff_t>(slot), best.candidate);
+    greedy_chosen_.insert(greedy_chosen_.begin() + static_cast<std::ptrdiff_t>(slot),
+                          best.candidate);
   }
   greedy_weight_ = matrix_.weight_of(covered);
 }
@@ -228,8 +229,7 @@ bool Selector::two_for_one() {
       const double base_weight = matrix_.weight_of(base);
       for (std::size_t c = 0; c < matrix_.candidates(); ++c) {
         const bool own = c == chosen_[i] || c == chosen_[j];
-        if ((in_set_[c] && !own) ||
-            base_weight + alone_[c] < target_weight_ - tolerance_) {
+        if ((in_set_[c] && !own) || base_weight + alone_[c] < target_weight_ - tolerance_) {
           continue;
         }
         const double w = base_weight + gain(c, base);
@@ -349,7 +349,8 @@ void Selector::describe(StationSelection& result) const {
   const std::string n = std::to_string(chosen_.size());
   const std::string greedy_n = std::to_string(greedy_chosen_.size());
   const std::string placed =
-      options_.placed.empty() ? std::string() : " beside the " + std::to_string(options_.placed.size()) + " placed";
+      options_.placed.empty() ? std::string()
+                              : " beside the " + std::to_string(options_.placed.size()) + " placed";
   const std::string chain =
       options_.intervisible
           ? "With consecutive stations required to see each other greedy has no approximation "
@@ -357,12 +358,11 @@ void Selector::describe(StationSelection& result) const {
           : std::string();
   if (!target_mode()) {
     std::string text =
-        chain.empty()
-            ? "Greedy's " + greedy_n + " new station(s)" + placed +
-                  " add at least 1 - 1/e (63.2 %) of what the best " +
-                  std::to_string(options_.stations) +
-                  " among these candidates would add (coverage is monotone submodular); "
-            : chain;
+        chain.empty() ? "Greedy's " + greedy_n + " new station(s)" + placed +
+                            " add at least 1 - 1/e (63.2 %) of what the best " +
+                            std::to_string(options_.stations) +
+                            " among these candidates would add (coverage is monotone submodular); "
+                      : chain;
     text += "the improvement pass only raised coverage (" + percent(result.greedy_coverage) +
             " -> " + percent(result.coverage) + "), and no " + std::to_string(options_.stations) +
             " new stations can cover more than " + percent(result.optimum_coverage_bound) +
@@ -376,8 +376,8 @@ void Selector::describe(StationSelection& result) const {
   if (!result.target_reached) {
     result.guarantee =
         chain.empty()
-            ? "The target " + target + " cannot be reached: all the candidates together" +
-                  placed + " cover " + percent(greedy_weight_ / total) + ", which the " + n +
+            ? "The target " + target + " cannot be reached: all the candidates together" + placed +
+                  " cover " + percent(greedy_weight_ / total) + ", which the " + n +
                   " station(s) shown reach (the improvement pass only removed or exchanged "
                   "stations while keeping it)."
             : chain + "the target " + target + " was not reached: greedy stopped at " +
@@ -391,8 +391,8 @@ void Selector::describe(StationSelection& result) const {
   }
   std::string text;
   if (chain.empty()) {
-    const double ratio =
-        (target_weight_ - placed_weight_) / std::max(target_weight_ - before_last_weight_, tolerance_);
+    const double ratio = (target_weight_ - placed_weight_) /
+                         std::max(target_weight_ - before_last_weight_, tolerance_);
     text = "Greedy's " + greedy_n + " new station(s)" + placed + " are at most 1 + ln(" +
            number(ratio) + ") = " + number(1.0 + std::log(ratio)) +
            " times the fewest that reach " + target +
@@ -440,7 +440,8 @@ StationSelection Selector::run() {
       covered[word] |= row[word];
       while (added != 0) {
         const int bit = __builtin_ctzll(added);
-        result.first_rank[word * 64 + static_cast<std::size_t>(bit)] = static_cast<std::int32_t>(r + 1);
+        result.first_rank[word * 64 + static_cast<std::size_t>(bit)] =
+            static_cast<std::int32_t>(r + 1);
         added &= added - 1;
       }
     }

@@ -168,8 +168,7 @@ TEST(StationSelection, GreedyIsWithinOneMinusOneOverEOfTheBestPairAndTriple) {
       // The pass only raises coverage, never above the best; the bound is above it.
       EXPECT_GE(selection.coverage, selection.greedy_coverage - 1e-12);
       EXPECT_LE(selection.coverage * total, best + 1e-9);
-      EXPECT_NEAR(selection.coverage * total, union_weight(matrix, new_stations(selection)),
-                  1e-9);
+      EXPECT_NEAR(selection.coverage * total, union_weight(matrix, new_stations(selection)), 1e-9);
       EXPECT_GE(selection.optimum_coverage_bound * total, best - 1e-9);
       // Lazy greedy computes no more gains than plain greedy.
       EXPECT_LE(selection.greedy_evaluations, selection.plain_greedy_evaluations);

@@ -72,9 +72,8 @@ inline TriangleMesh l_room() {
   const Eigen::Vector3d x = Eigen::Vector3d::UnitX(), y = Eigen::Vector3d::UnitY(),
                         z = Eigen::Vector3d::UnitZ();
   // Floor and ceiling: the square [0,5]^2 and the two arms.
-  for (const auto& [corner, a, b] :
-       {std::tuple{Eigen::Vector3d(0, 0, 0), 5 * x, 10 * y},
-        std::tuple{Eigen::Vector3d(5, 0, 0), 5 * x, 5 * y}}) {
+  for (const auto& [corner, a, b] : {std::tuple{Eigen::Vector3d(0, 0, 0), 5 * x, 10 * y},
+                                     std::tuple{Eigen::Vector3d(5, 0, 0), 5 * x, 5 * y}}) {
     add_quad(mesh, corner, a, b, "floor");
     add_quad(mesh, corner + 3 * z, b, a, "ceiling");
   }
@@ -82,8 +81,8 @@ inline TriangleMesh l_room() {
   add_quad(mesh, {0, 0, 0}, 10 * y, 3 * z, "wall");  // x = 0
   add_quad(mesh, {0, 0, 0}, 3 * z, 10 * x, "wall");  // y = 0
   add_quad(mesh, {10, 0, 0}, 3 * z, 5 * y, "wall");  // x = 10
-  add_quad(mesh, {5, 5, 0}, 5 * x, 3 * z, "wall");  // y = 5, x 5..10
-  add_quad(mesh, {5, 5, 0}, 3 * z, 5 * y, "wall");  // x = 5, y 5..10
+  add_quad(mesh, {5, 5, 0}, 5 * x, 3 * z, "wall");   // y = 5, x 5..10
+  add_quad(mesh, {5, 5, 0}, 3 * z, 5 * y, "wall");   // x = 5, y 5..10
   add_quad(mesh, {0, 10, 0}, 5 * x, 3 * z, "wall");  // y = 10
   return mesh;
 }

@@ -68,7 +68,7 @@ struct StationSelection {
   // the most to those before it (kept in the pass's order under the
   // inter-visibility constraint, which a new order could break).
   std::vector<SelectedStation> stations;
-  double coverage = 0.0;  // share of the total weight the stations cover
+  double coverage = 0.0;       // share of the total weight the stations cover
   bool target_reached = true;  // target mode: coverage >= target_coverage
   // Greedy's answer before the improvement pass.
   std::vector<SelectedStation> greedy;
