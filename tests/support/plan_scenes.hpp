@@ -51,11 +51,30 @@ inline TriangleMesh two_rooms() {
   return mesh;
 }
 
-// A 6 x 6 x 3 room with a 0.8 x 0.8 pillar in its middle, floor to ceiling.
+// A 6 x 6 x 3 room with a 0.8 x 0.8 pillar in its middle, floor to ceiling:
+// the floor and ceiling stop at the pillar, which has only its four sides, so
+// every surface can be seen from somewhere.
 inline TriangleMesh pillar_room() {
   TriangleMesh mesh;
-  add_facing_box(mesh, {0, 0, 0}, {6, 6, 3}, true, "room");
-  add_facing_box(mesh, {2.6, 2.6, 0}, {3.4, 3.4, 3}, false, "pillar");
+  const Eigen::Vector3d x = Eigen::Vector3d::UnitX(), y = Eigen::Vector3d::UnitY(),
+                        z = Eigen::Vector3d::UnitZ();
+  // Floor (facing up) and ceiling (facing down) around the footprint [2.6, 3.4]^2.
+  for (const auto& [corner, a, b] : {std::tuple{Eigen::Vector3d(0, 0, 0), 6 * x, 2.6 * y},
+                                     std::tuple{Eigen::Vector3d(0, 3.4, 0), 6 * x, 2.6 * y},
+                                     std::tuple{Eigen::Vector3d(0, 2.6, 0), 2.6 * x, 0.8 * y},
+                                     std::tuple{Eigen::Vector3d(3.4, 2.6, 0), 2.6 * x, 0.8 * y}}) {
+    add_quad(mesh, corner, a, b, "floor");
+    add_quad(mesh, corner + 3 * z, b, a, "ceiling");
+  }
+  add_quad(mesh, {0, 0, 0}, 6 * y, 3 * z, "wall");  // x = 0
+  add_quad(mesh, {6, 0, 0}, 3 * z, 6 * y, "wall");  // x = 6
+  add_quad(mesh, {0, 0, 0}, 3 * z, 6 * x, "wall");  // y = 0
+  add_quad(mesh, {0, 6, 0}, 6 * x, 3 * z, "wall");  // y = 6
+  // The pillar's sides, facing out.
+  add_quad(mesh, {2.6, 2.6, 0}, 3 * z, 0.8 * y, "pillar");  // x = 2.6, -x
+  add_quad(mesh, {3.4, 2.6, 0}, 0.8 * y, 3 * z, "pillar");  // x = 3.4, +x
+  add_quad(mesh, {2.6, 2.6, 0}, 0.8 * x, 3 * z, "pillar");  // y = 2.6, -y
+  add_quad(mesh, {2.6, 3.4, 0}, 3 * z, 0.8 * x, "pillar");  // y = 3.4, +y
   return mesh;
 }
 
