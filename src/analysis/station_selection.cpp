@@ -96,8 +96,11 @@ class Selector {
   std::size_t evaluations_ = 0;
 
   double placed_weight_ = 0.0;
-  double first_best_gain_ = 0.0;  // the largest gain of a new station over the placed ones
-  double target_weight_ = 0.0;    // target mode: what the stations must cover
+  double first_best_gain_ = 0.0;   // the largest gain of a new station over the placed ones
+  double target_weight_ = 0.0;     // target mode: what the stations must cover
+  double reachable_weight_ = 0.0;  // what all candidates and placed stations cover together
+  bool scaled_ = false;            // the target was out of reach: aimed at its share of reachable
+  bool greedy_reached_ = true;     // greedy reached target_weight_ (the chain may stop it)
   std::vector<std::size_t> greedy_chosen_;
   double greedy_weight_ = 0.0;
   double before_last_weight_ = 0.0;  // what greedy covered before its last station
@@ -372,33 +375,33 @@ void Selector::describe(StationSelection& result) const {
     result.guarantee = text;
     return;
   }
-  const std::string target = percent(options_.target_coverage);
-  if (!result.target_reached) {
-    result.guarantee =
-        chain.empty()
-            ? "The target " + target + " cannot be reached: all the candidates together" + placed +
-                  " cover " + percent(greedy_weight_ / total) + ", which the " + n +
-                  " station(s) shown reach (the improvement pass only removed or exchanged "
-                  "stations while keeping it)."
-            : chain + "the target " + target + " was not reached: greedy stopped at " +
-                  percent(greedy_weight_ / total) +
-                  ", where no candidate that can join the chain of stations adds anything.";
+  const std::string target = percent(target_weight_ / total);
+  const std::string prefix =
+      scaled_ ? "The target " + percent(options_.target_coverage) +
+                    " cannot be reached: all the candidates together" + placed + " cover " +
+                    percent(reachable_weight_ / total) + ", so the stations aim at " +
+                    percent(options_.target_coverage) + " of that, " + target + ". "
+              : std::string();
+  if (!greedy_reached_) {
+    result.guarantee = prefix + chain + "the target " + target +
+                       " was not reached: greedy stopped at " + percent(greedy_weight_ / total) +
+                       ", where no candidate that can join the chain of stations adds anything.";
     return;
   }
   if (greedy_chosen_.empty()) {
-    result.guarantee = "The placed stations already cover " + target + ".";
+    result.guarantee = prefix + "The placed stations already cover " + target + ".";
     return;
   }
-  std::string text;
+  std::string text = prefix;
   if (chain.empty()) {
     const double ratio = (target_weight_ - placed_weight_) /
                          std::max(target_weight_ - before_last_weight_, tolerance_);
-    text = "Greedy's " + greedy_n + " new station(s)" + placed + " are at most 1 + ln(" +
-           number(ratio) + ") = " + number(1.0 + std::log(ratio)) +
-           " times the fewest that reach " + target +
-           " among these candidates (Wolsey's bound for submodular cover); ";
+    text += "Greedy's " + greedy_n + " new station(s)" + placed + " are at most 1 + ln(" +
+            number(ratio) + ") = " + number(1.0 + std::log(ratio)) +
+            " times the fewest that reach " + target +
+            " among these candidates (Wolsey's bound for submodular cover); ";
   } else {
-    text = chain;
+    text += chain;
   }
   text += "the improvement pass only removed or exchanged stations while the target held (" +
           greedy_n + " -> " + n + "), and no fewer than " +
@@ -411,12 +414,25 @@ StationSelection Selector::run() {
   target_weight_ = options_.target_coverage * total;
   alone_.resize(matrix_.candidates());
   for (std::size_t c = 0; c < matrix_.candidates(); ++c) alone_[c] = matrix_.seen_weight(c);
+  {
+    Bits all(matrix_.words_per_row(), 0);
+    for (std::size_t c = 0; c < matrix_.candidates(); ++c) add_row(all, matrix_, c);
+    reachable_weight_ = matrix_.weight_of(all);
+  }
+  // A target beyond what the candidates can see at all would have greedy add
+  // stations for a few targets each, to no end: aim at its share of what can
+  // be seen instead, and say so.
+  if (target_mode() && target_weight_ > reachable_weight_ + tolerance_) {
+    scaled_ = true;
+    target_weight_ = options_.target_coverage * reachable_weight_;
+  }
   greedy();
   chosen_ = greedy_chosen_;
   weight_ = greedy_weight_;
-  // A target out of reach: the pass keeps the best greedy reached instead.
-  const bool reached = !target_mode() || greedy_weight_ >= target_weight_ - tolerance_;
-  if (target_mode() && !reached) target_weight_ = greedy_weight_;
+  greedy_reached_ = !target_mode() || greedy_weight_ >= target_weight_ - tolerance_;
+  // The chain stopped greedy short: the pass keeps what greedy reached.
+  if (!greedy_reached_) target_weight_ = greedy_weight_;
+  const bool reached = greedy_reached_ && !scaled_;
   const std::size_t greedy_evaluations = evaluations_;
   if (options_.improve) improve();
   chosen_ = greedy_order(chosen_);
@@ -430,6 +446,8 @@ StationSelection Selector::run() {
   result.evaluations = evaluations_;
   result.plain_greedy_evaluations = plain_evaluations_;
   result.target_reached = reached;
+  result.reachable_coverage = reachable_weight_ / total;
+  result.aimed_coverage = target_mode() ? target_weight_ / total : 0.0;
 
   Bits covered(matrix_.words_per_row(), 0);
   result.first_rank.assign(matrix_.targets(), -1);
@@ -456,7 +474,7 @@ StationSelection Selector::run() {
   if (target_mode()) {
     const double asked = target_weight_ - placed_weight_;
     std::size_t fewest = 0;
-    if (reached && asked > tolerance_ && first_best_gain_ > 0.0) {
+    if (greedy_reached_ && asked > tolerance_ && first_best_gain_ > 0.0) {
       fewest = static_cast<std::size_t>(std::ceil(asked / first_best_gain_ - 1e-9));
       // Wolsey's bound read backwards: greedy <= 1 + fewest x ln(asked / missing before the last).
       const double ratio = asked / std::max(target_weight_ - before_last_weight_, tolerance_);

@@ -466,6 +466,14 @@ Json::Value to_json(const PlanReport& report) {
   json["target_coverage"] = q.stations > 0 ? Json::Value() : Json::Value(q.target_coverage);
   json["stations_asked"] = q.stations > 0 ? Json::Value(Json::UInt64(q.stations)) : Json::Value();
   json["target_reached"] = s.target_reached;
+  // What all the candidates together see, and (target mode) what the stations aimed at:
+  // the target, or its share of the reachable when the target is out of reach.
+  json["reachable_coverage"] = s.reachable_coverage;
+  json["aimed_coverage"] = q.stations > 0 ? Json::Value() : Json::Value(s.aimed_coverage);
+  // What all the candidates together see, and (target mode) what the stations aimed at:
+  // the target, or its share of the reachable when the target is out of reach.
+  json["reachable_coverage"] = s.reachable_coverage;
+  json["aimed_coverage"] = q.stations > 0 ? Json::Value() : Json::Value(s.aimed_coverage);
   json["guarantee"] = s.guarantee;
   Json::Value bounds(Json::objectValue);
   if (q.stations > 0) {

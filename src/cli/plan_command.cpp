@@ -22,8 +22,13 @@ void print_human(const PlanReport& report) {
   if (q.stations > 0) {
     std::printf("  question    the best %zu new station(s)\n", q.stations);
   } else {
-    std::printf("  question    the fewest new stations for %.1f %%: %s\n",
-                100.0 * q.target_coverage, s.target_reached ? "reached" : "NOT reachable");
+    std::printf("  question    the fewest new stations for %.1f %%: ", 100.0 * q.target_coverage);
+    if (s.target_reached) {
+      std::printf("reached\n");
+    } else {
+      std::printf("NOT reachable (the candidates see %.1f %% at most; aimed at %.1f %%)\n",
+                  100.0 * s.reachable_coverage, 100.0 * s.aimed_coverage);
+    }
   }
   std::printf("  coverage    %.4f   (greedy %.4f with %zu station(s), %zu improvement move(s))\n",
               s.coverage, s.greedy_coverage, s.greedy.size(), s.improvement_moves);

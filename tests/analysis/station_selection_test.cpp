@@ -242,6 +242,9 @@ TEST(StationSelection, AnUnreachableTargetReportsTheBestReached) {
   options.target_coverage = 0.95;
   const StationSelection selection = select_stations(matrix, options);
   EXPECT_FALSE(selection.target_reached);
+  EXPECT_DOUBLE_EQ(selection.reachable_coverage, 0.9);
+  // Aimed at 95 % of the reachable 90 %: 85.5 %, which greedy passes at 90 %.
+  EXPECT_DOUBLE_EQ(selection.aimed_coverage, 0.95 * 0.9);
   EXPECT_DOUBLE_EQ(selection.greedy_coverage, 0.9);
   EXPECT_DOUBLE_EQ(selection.coverage, 0.9);
   // Greedy took the doorway first; the pass keeps the best reached with fewer.

@@ -68,8 +68,13 @@ struct StationSelection {
   // the most to those before it (kept in the pass's order under the
   // inter-visibility constraint, which a new order could break).
   std::vector<SelectedStation> stations;
-  double coverage = 0.0;       // share of the total weight the stations cover
-  bool target_reached = true;  // target mode: coverage >= target_coverage
+  double coverage = 0.0;  // share of the total weight the stations cover
+  // Target mode: coverage >= target_coverage. A target beyond what all the
+  // candidates together see (reachable_coverage) is not reached; the stations
+  // then aim at its share of that (aimed_coverage = target x reachable).
+  bool target_reached = true;
+  double reachable_coverage = 1.0;
+  double aimed_coverage = 0.0;
   // Greedy's answer before the improvement pass.
   std::vector<SelectedStation> greedy;
   double greedy_coverage = 0.0;
@@ -88,7 +93,7 @@ struct StationSelection {
   std::size_t plain_greedy_evaluations = 0;
   // K mode: no K new stations can cover more than this share (submodularity:
   // the coverage plus the K largest gains left). Target mode: no fewer new
-  // stations than this reach the target (0 when it is not reached).
+  // stations than this reach the aimed coverage (0 when greedy stopped short).
   double optimum_coverage_bound = 1.0;
   std::size_t fewest_stations_bound = 0;
   // One sentence: what is guaranteed for the mode used, with its figures.
