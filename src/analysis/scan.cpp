@@ -130,11 +130,11 @@ Ray ScanTracer::segment(const Eigen::Vector3d& from, const Eigen::Vector3d& to) 
 }
 
 void ScanTracer::occluded(const Ray* rays, std::size_t count, const PrimitiveId* ignore,
-                          std::uint8_t* blocked) const {
+                          std::uint8_t* blocked, unsigned threads) const {
   if (discs_) {
-    discs_->occluded_batch(rays, count, ignore, blocked, options_.threads);
+    discs_->occluded_batch(rays, count, ignore, blocked, threads);
   } else {
-    spheres_->occluded_batch(rays, count, ignore, blocked, options_.threads);
+    spheres_->occluded_batch(rays, count, ignore, blocked, threads);
   }
 }
 
@@ -145,7 +145,7 @@ void ScanTracer::trace(const Eigen::Vector3d& viewpoint, const std::uint32_t* po
     for (std::size_t k = b; k < e; ++k) rays[k] = ray(viewpoint, points[k]);
   });
   static_assert(sizeof(PrimitiveId) == sizeof(std::uint32_t), "point indices are primitive ids");
-  occluded(rays, count, points, blocked);
+  occluded(rays, count, points, blocked, options_.threads);
   for (std::size_t k = 0; k < count; ++k) seen[k] = blocked[k] ? 0 : 1;
 }
 

@@ -8,6 +8,7 @@
 
 #include "analysis_support.hpp"
 #include "occlusion/analysis/scan_tracer.hpp"
+#include "occlusion/core/morton_order.hpp"
 #include "occlusion/core/parallel.hpp"
 #include "occlusion/core/triangle_octree.hpp"
 
@@ -17,9 +18,15 @@ namespace {
 
 constexpr char kAnalysis[] = "station visibility";
 
-// Targets per traced block: bounds the scratch memory and sets how often
-// progress and cancel are checked.
-constexpr std::size_t kTargetsPerBlock = std::size_t{1} << 16;
+// Candidates a thread takes per round between progress reports: enough to
+// keep every thread busy, few enough to report every second or so.
+constexpr std::size_t kCandidatesPerRound = 8;
+// Targets per block traced on one thread: one window of the octree's
+// direction sort (ray_order.hpp).
+constexpr std::size_t kTargetsPerThreadBlock = 4096;
+// Targets per block traced on all threads (few candidates): bounds the scratch
+// memory and sets how often cancel is checked.
+constexpr std::size_t kTargetsPerSharedBlock = std::size_t{1} << 16;
 
 double radians(double degrees) {
   return degrees * M_PI / 180.0;
@@ -107,22 +114,83 @@ void check_samples(const TriangleMesh& mesh, const MeshSamples& samples) {
   }
 }
 
-// One candidate's targets, block by block: those with weight and inside the
-// limits go to `trace(first_of_block, targets, count)`, which sets their bits.
-void for_each_admitted_block(
-    std::size_t targets, const std::vector<double>& weight, const Progress& progress,
-    const std::function<bool(std::size_t target)>& admits,
-    const std::function<void(const std::uint32_t* targets, std::size_t count)>& trace) {
-  std::vector<std::uint32_t> admitted;
-  admitted.reserve(std::min(targets, kTargetsPerBlock));
-  for (std::size_t first = 0; first < targets; first += kTargetsPerBlock) {
-    const std::size_t last = std::min(targets, first + kTargetsPerBlock);
-    admitted.clear();
-    for (std::size_t t = first; t < last; ++t) {
-      if (weight[t] > 0.0 && admits(t)) admitted.push_back(static_cast<std::uint32_t>(t));
+// The targets worth tracing (weight > 0) in Morton order of their
+// positions: a block of them is a patch of surface, so one candidate's rays
+// to it point nearly the same way and trace as packets.
+std::vector<std::uint32_t> coherent_targets(const std::vector<Eigen::Vector3f>& positions,
+                                            const std::vector<double>& weight) {
+  std::vector<std::uint32_t> order = morton_order(positions);
+  order.erase(std::remove_if(order.begin(), order.end(),
+                             [&](std::uint32_t target) { return !(weight[target] > 0.0); }),
+              order.end());
+  return order;
+}
+
+// Scratch for one block of one candidate's rays.
+struct RayBlock {
+  std::vector<Ray> rays;
+  std::vector<PrimitiveId> ignore;
+  std::vector<std::uint32_t> target;
+  std::vector<std::uint8_t> blocked;
+  explicit RayBlock(std::size_t size) : rays(size), ignore(size), target(size), blocked(size) {}
+};
+
+// Sets the bits of the targets (of `order`) each candidate sees.
+// admits(station, target) applies the limits; make(station, target, ray,
+// ignore) makes the target's shadow ray, or returns false for a target seen
+// without one; occluded(rays, count, ignore, blocked, threads) traces them.
+// Many candidates: each thread fills whole rows, one candidate at a time, its
+// rays traced on that thread (no two threads write one row). Few: one
+// candidate at a time, its blocks traced on every thread.
+template <class Admits, class Make, class Occluded>
+void fill_rows(CoverageMatrix& matrix, const std::vector<Eigen::Vector3d>& candidates,
+               const std::vector<std::uint32_t>& order, unsigned threads, const Progress& progress,
+               const Admits& admits, const Make& make, const Occluded& occluded) {
+  const auto trace_block = [&](std::size_t c, std::size_t first, std::size_t last,
+                               unsigned block_threads, RayBlock& block) {
+    const Eigen::Vector3d& station = candidates[c];
+    std::size_t count = 0;
+    for (std::size_t k = first; k < last; ++k) {
+      const std::uint32_t target = order[k];
+      if (!admits(station, target)) continue;
+      if (!make(station, target, block.rays[count], block.ignore[count])) {
+        matrix.set_seen(c, target);
+        continue;
+      }
+      block.target[count++] = target;
     }
-    trace(admitted.data(), admitted.size());
-    progress.check_cancel();
+    occluded(block.rays.data(), count, block.ignore.data(), block.blocked.data(), block_threads);
+    for (std::size_t k = 0; k < count; ++k) {
+      if (!block.blocked[k]) matrix.set_seen(c, block.target[k]);
+    }
+  };
+  const std::size_t n = candidates.size();
+  const unsigned workers = resolve_thread_count(threads);
+  progress("tracing", 0.0);
+  if (n >= 2 * std::size_t{workers}) {
+    const std::size_t round = kCandidatesPerRound * workers;
+    for (std::size_t first = 0; first < n; first += round) {
+      const std::size_t last = std::min(n, first + round);
+      parallel_for(last - first, 1, threads, [&](std::size_t b, std::size_t e) {
+        RayBlock block(std::min(order.size(), kTargetsPerThreadBlock));
+        for (std::size_t c = first + b; c < first + e; ++c) {
+          for (std::size_t k = 0; k < order.size(); k += kTargetsPerThreadBlock) {
+            trace_block(c, k, std::min(order.size(), k + kTargetsPerThreadBlock), 1, block);
+          }
+          progress.check_cancel();
+        }
+      });
+      progress("tracing", static_cast<double>(last) / static_cast<double>(n));
+    }
+    return;
+  }
+  RayBlock block(std::min(order.size(), kTargetsPerSharedBlock));
+  for (std::size_t c = 0; c < n; ++c) {
+    for (std::size_t k = 0; k < order.size(); k += kTargetsPerSharedBlock) {
+      trace_block(c, k, std::min(order.size(), k + kTargetsPerSharedBlock), threads, block);
+      progress.check_cancel();
+    }
+    progress("tracing", static_cast<double>(c + 1) / static_cast<double>(n));
   }
 }
 
@@ -159,7 +227,7 @@ std::vector<std::uint8_t> intervisibility(
       }
       rays.push_back(ray);
       pairs.emplace_back(static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j));
-      if (rays.size() == kTargetsPerBlock) flush();
+      if (rays.size() == kTargetsPerSharedBlock) flush();
     }
     progress("intervisibility", static_cast<double>(i + 1) / static_cast<double>(n));
   }
@@ -247,28 +315,23 @@ CoverageMatrix cloud_station_coverage(const PointCloud& cloud,
   const ScanTracer tracer(cloud, options, progress);
   progress.check_cancel();
 
-  const std::size_t block = std::min(cloud.size(), kTargetsPerBlock);
-  std::vector<Ray> rays(block);
-  std::vector<std::uint8_t> blocked(block), seen(block);
   const Eigen::Vector3f no_normal = Eigen::Vector3f::Zero();
-  progress("tracing", 0.0);
-  for (std::size_t c = 0; c < candidates.size(); ++c) {
-    const Eigen::Vector3d& station = candidates[c];
-    for_each_admitted_block(
-        cloud.size(), matrix.target_weight(), progress,
-        [&](std::size_t point) {
-          const Eigen::Vector3f& normal =
-              options.surfels ? options.surfels->surfels[point].normal : no_normal;
-          return limit_test.admits(cloud.positions[point].cast<double>() - station, normal);
-        },
-        [&](const std::uint32_t* points, std::size_t count) {
-          tracer.trace(station, points, count, seen.data(), rays.data(), blocked.data());
-          for (std::size_t k = 0; k < count; ++k) {
-            if (seen[k]) matrix.set_seen(c, points[k]);
-          }
-        });
-    progress("tracing", static_cast<double>(c + 1) / static_cast<double>(candidates.size()));
-  }
+  fill_rows(
+      matrix, candidates, coherent_targets(cloud.positions, matrix.target_weight()),
+      options.threads, progress,
+      [&](const Eigen::Vector3d& station, std::uint32_t point) {
+        if (limit_test.unlimited()) return true;
+        const Eigen::Vector3f& normal =
+            options.surfels ? options.surfels->surfels[point].normal : no_normal;
+        return limit_test.admits(cloud.positions[point].cast<double>() - station, normal);
+      },
+      [&](const Eigen::Vector3d& station, std::uint32_t point, Ray& ray, PrimitiveId& ignore) {
+        ray = tracer.ray(station, point);
+        ignore = point;
+        return true;
+      },
+      [&](const Ray* rays, std::size_t count, const PrimitiveId* ignore, std::uint8_t* blocked,
+          unsigned threads) { tracer.occluded(rays, count, ignore, blocked, threads); });
   progress("done", 1.0);
   return matrix;
 }
@@ -289,40 +352,21 @@ CoverageMatrix mesh_station_coverage(const TriangleMesh& mesh, const MeshSamples
   const TriangleOctree tree(pack_triangles(mesh, frame.origin), options.octree, progress);
   progress.check_cancel();
 
-  const std::size_t block = std::min(samples.size(), kTargetsPerBlock);
-  std::vector<Ray> rays(block);
-  std::vector<PrimitiveId> ignore(block);
-  std::vector<std::uint32_t> traced(block);
-  std::vector<std::uint8_t> blocked(block);
-  progress("tracing", 0.0);
-  for (std::size_t c = 0; c < candidates.size(); ++c) {
-    const Eigen::Vector3d& station = candidates[c];
-    const Eigen::Vector3d local_station = station - frame.origin;
-    for_each_admitted_block(
-        samples.size(), matrix.target_weight(), progress,
-        [&](std::size_t s) {
-          return limit_test.admits(samples.points[s] - station, normals[samples.face[s]]);
-        },
-        [&](const std::uint32_t* targets, std::size_t count) {
-          std::size_t ray_count = 0;
-          for (std::size_t k = 0; k < count; ++k) {
-            const std::uint32_t s = targets[k];
-            if (!mesh_shadow_ray(samples.points[s] - frame.origin, local_station, frame.epsilon,
-                                 rays[ray_count], frame.reach)) {
-              matrix.set_seen(c, s);  // too close to need a ray
-              continue;
-            }
-            ignore[ray_count] = samples.face[s];
-            traced[ray_count++] = s;
-          }
-          tree.occluded_batch(rays.data(), ray_count, ignore.data(), blocked.data(),
-                              options.threads);
-          for (std::size_t k = 0; k < ray_count; ++k) {
-            if (!blocked[k]) matrix.set_seen(c, traced[k]);
-          }
-        });
-    progress("tracing", static_cast<double>(c + 1) / static_cast<double>(candidates.size()));
-  }
+  std::vector<Eigen::Vector3f> positions(samples.size());
+  for (std::size_t s = 0; s < samples.size(); ++s) positions[s] = samples.points[s].cast<float>();
+  fill_rows(
+      matrix, candidates, coherent_targets(positions, matrix.target_weight()), options.threads,
+      progress,
+      [&](const Eigen::Vector3d& station, std::uint32_t s) {
+        return limit_test.admits(samples.points[s] - station, normals[samples.face[s]]);
+      },
+      [&](const Eigen::Vector3d& station, std::uint32_t s, Ray& ray, PrimitiveId& ignore) {
+        ignore = samples.face[s];
+        return mesh_shadow_ray(samples.points[s] - frame.origin, station - frame.origin,
+                               frame.epsilon, ray, frame.reach);
+      },
+      [&](const Ray* rays, std::size_t count, const PrimitiveId* ignore, std::uint8_t* blocked,
+          unsigned threads) { tree.occluded_batch(rays, count, ignore, blocked, threads); });
   progress("done", 1.0);
   return matrix;
 }
@@ -340,7 +384,7 @@ std::vector<std::uint8_t> cloud_candidate_intervisibility(
         return true;
       },
       [&](const Ray* rays, std::size_t count, std::uint8_t* blocked) {
-        tracer.occluded(rays, count, nullptr, blocked);
+        tracer.occluded(rays, count, nullptr, blocked, options.threads);
       });
 }
 

@@ -43,9 +43,10 @@ class ScanTracer {
   void trace(const Eigen::Vector3d& viewpoint, const std::uint32_t* points, std::size_t count,
              std::uint8_t* seen, Ray* rays, std::uint8_t* blocked) const;
   // The same for rays made by the caller, ignoring ignore[k] (a point's own
-  // primitive, or kNoPrimitive): blocked[k] = 1 if something lies on ray k.
+  // primitive, or kNoPrimitive; ignore may be null): blocked[k] = 1 if
+  // something lies on ray k. On `threads` threads (0 = all cores).
   void occluded(const Ray* rays, std::size_t count, const PrimitiveId* ignore,
-                std::uint8_t* blocked) const;
+                std::uint8_t* blocked, unsigned threads) const;
 
   const OctreeStats& stats() const;
   const PointCloud& cloud() const { return cloud_; }
