@@ -263,7 +263,6 @@ Neighbourhood measure(const Eigen::Vector3f& own, const Distinct& distinct,
   return hood;
 }
 
-
 }  // namespace
 
 double coverage_radius(double farthest_distance, std::size_t distinct_neighbours, double coverage) {
