@@ -1,5 +1,5 @@
 // bench_plan [--points N] [--triangles N] [--candidates N] [--height H] [--threads T]
-//            [--seed S] [--repeat N]
+//            [--seed S] [--repeat N] [--ours-only]
 //
 // Times scan planning's cost, the visibility matrix of candidate stations
 // over a cloud's points (cloud_station_coverage: -fscan's rule against the
@@ -31,7 +31,7 @@ using namespace occlusion::bench;
 
 constexpr const char* kUsage =
     "usage: bench_plan [--points N] [--triangles N] [--candidates N] [--height H] [--threads T]\n"
-    "                  [--seed S] [--repeat N]\n";
+    "                  [--seed S] [--repeat N] [--ours-only]\n";
 
 struct Options {
   std::size_t points = 200'000;
@@ -41,6 +41,7 @@ struct Options {
   unsigned threads = 2;
   std::uint64_t seed = 2;
   int repeat = 3;
+  bool embree = true;  // --ours-only: leave Embree out (for profiling ours)
 };
 
 Options parse(int argc, char** argv) {
@@ -64,6 +65,8 @@ Options parse(int argc, char** argv) {
       o.threads = parse_threads(arg, flag_value(argc, argv, i));
     } else if (arg == "--seed") {
       o.seed = parse_unsigned(arg, flag_value(argc, argv, i));
+    } else if (arg == "--ours-only") {
+      o.embree = false;
     } else if (arg == "--repeat") {
       o.repeat = static_cast<int>(
           std::min<std::uint64_t>(1000, parse_unsigned(arg, flag_value(argc, argv, i))));
@@ -165,6 +168,7 @@ int run(const Options& o) {
             our_cpu, [&] { ours = cloud_station_coverage(cloud, candidates, weight, scan, {}); });
       },
       [&] {
+        if (!o.embree) return 0.0;
         return timed_cpu(embree_cpu, [&] {
           embree_builds.seconds.push_back(embree.build(estimate.surfels));
           theirs = embree_matrix(embree, estimate, candidates, o.threads);
@@ -174,7 +178,7 @@ int run(const Options& o) {
   std::size_t same = 0, seen_ours = 0, seen_theirs = 0;
   for (std::size_t c = 0; c < candidates.size(); ++c) {
     for (std::size_t i = 0; i < cloud.size(); ++i) {
-      const bool a = ours.seen(c, i), b = theirs.seen(c, i);
+      const bool a = ours.seen(c, i), b = o.embree && theirs.seen(c, i);
       same += a == b;
       seen_ours += a;
       seen_theirs += b;
@@ -189,6 +193,14 @@ int run(const Options& o) {
   std::printf("matrix   %s candidates (floor grid at %.2f m) x %s points = %s shadow rays\n",
               grouped(candidates.size()).c_str(), o.height, grouped(cloud.size()).c_str(),
               grouped(rays).c_str());
+  if (!o.embree) {
+    std::printf("seen     ours %.4f of all pairs\n",
+                static_cast<double>(seen_ours) / static_cast<double>(rays));
+    std::printf("matrix   ours %.4f / %.4f s wall, %.4f / %.4f s CPU [min / median of %zu]\n",
+                our_times.min(), our_times.median(), our_cpu.min(), our_cpu.median(),
+                our_times.seconds.size());
+    return 0;
+  }
   std::printf("seen     ours %.4f, embree %.4f of all pairs; bits agree on %.5f%%\n",
               static_cast<double>(seen_ours) / static_cast<double>(rays),
               static_cast<double>(seen_theirs) / static_cast<double>(rays), percent(same, rays));

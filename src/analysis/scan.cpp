@@ -115,13 +115,19 @@ ScanTracer::ScanTracer(const PointCloud& cloud, const ScanOptions& options,
   }
 }
 
-Ray ScanTracer::ray(const Eigen::Vector3d& viewpoint, std::size_t point) const {
+ScanTracer::Target ScanTracer::target(std::size_t point) const {
+  if (discs_) return {options_.surfels->surfels[point], options_.surfels->thickness[point]};
+  Target target;
+  target.surfel.center = cloud_.positions[point];
+  return target;
+}
+
+Ray ScanTracer::ray(const Eigen::Vector3d& viewpoint, const Target& target) const {
   if (discs_) {
-    const SurfelEstimate& model = *options_.surfels;
-    return scan_surfel_ray(viewpoint, model.surfels[point], model.thickness[point], near_viewpoint_,
+    return scan_surfel_ray(viewpoint, target.surfel, target.thickness, near_viewpoint_,
                            options_.self_tolerance);
   }
-  return scan_shadow_ray(viewpoint, cloud_.positions[point], options_);
+  return scan_shadow_ray(viewpoint, target.surfel.center, options_);
 }
 
 Ray ScanTracer::segment(const Eigen::Vector3d& from, const Eigen::Vector3d& to) const {

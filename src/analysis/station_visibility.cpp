@@ -136,8 +136,8 @@ struct RayBlock {
 };
 
 // Sets the bits of the targets (of `order`) each candidate sees.
-// admits(station, target) applies the limits; make(station, target, ray,
-// ignore) makes the target's shadow ray, or returns false for a target seen
+// admits(station, k) applies the limits to target order[k]; make(station, k,
+// ray, ignore) makes its shadow ray, or returns false for a target seen
 // without one; occluded(rays, count, ignore, blocked, threads) traces them.
 // Many candidates: each thread fills whole rows, one candidate at a time, its
 // rays traced on that thread (no two threads write one row). Few: one
@@ -151,13 +151,12 @@ void fill_rows(CoverageMatrix& matrix, const std::vector<Eigen::Vector3d>& candi
     const Eigen::Vector3d& station = candidates[c];
     std::size_t count = 0;
     for (std::size_t k = first; k < last; ++k) {
-      const std::uint32_t target = order[k];
-      if (!admits(station, target)) continue;
-      if (!make(station, target, block.rays[count], block.ignore[count])) {
-        matrix.set_seen(c, target);
+      if (!admits(station, k)) continue;
+      if (!make(station, k, block.rays[count], block.ignore[count])) {
+        matrix.set_seen(c, order[k]);
         continue;
       }
-      block.target[count++] = target;
+      block.target[count++] = order[k];
     }
     occluded(block.rays.data(), count, block.ignore.data(), block.blocked.data(), block_threads);
     for (std::size_t k = 0; k < count; ++k) {
@@ -315,19 +314,21 @@ CoverageMatrix cloud_station_coverage(const PointCloud& cloud,
   const ScanTracer tracer(cloud, options, progress);
   progress.check_cancel();
 
-  const Eigen::Vector3f no_normal = Eigen::Vector3f::Zero();
+  // The points' discs copied in the order they are traced, for every
+  // candidate to read as one stream.
+  const std::vector<std::uint32_t> order =
+      coherent_targets(cloud.positions, matrix.target_weight());
+  std::vector<ScanTracer::Target> targets(order.size());
+  for (std::size_t k = 0; k < order.size(); ++k) targets[k] = tracer.target(order[k]);
   fill_rows(
-      matrix, candidates, coherent_targets(cloud.positions, matrix.target_weight()),
-      options.threads, progress,
-      [&](const Eigen::Vector3d& station, std::uint32_t point) {
-        if (limit_test.unlimited()) return true;
-        const Eigen::Vector3f& normal =
-            options.surfels ? options.surfels->surfels[point].normal : no_normal;
-        return limit_test.admits(cloud.positions[point].cast<double>() - station, normal);
+      matrix, candidates, order, options.threads, progress,
+      [&](const Eigen::Vector3d& station, std::size_t k) {
+        const Surfel& surfel = targets[k].surfel;
+        return limit_test.admits(surfel.center.cast<double>() - station, surfel.normal);
       },
-      [&](const Eigen::Vector3d& station, std::uint32_t point, Ray& ray, PrimitiveId& ignore) {
-        ray = tracer.ray(station, point);
-        ignore = point;
+      [&](const Eigen::Vector3d& station, std::size_t k, Ray& ray, PrimitiveId& ignore) {
+        ray = tracer.ray(station, targets[k]);
+        ignore = order[k];
         return true;
       },
       [&](const Ray* rays, std::size_t count, const PrimitiveId* ignore, std::uint8_t* blocked,
@@ -354,16 +355,25 @@ CoverageMatrix mesh_station_coverage(const TriangleMesh& mesh, const MeshSamples
 
   std::vector<Eigen::Vector3f> positions(samples.size());
   for (std::size_t s = 0; s < samples.size(); ++s) positions[s] = samples.points[s].cast<float>();
+  // The samples copied in the order they are traced (see the cloud's).
+  struct Sample {
+    Eigen::Vector3d local;  // relative to the frame's origin
+    std::uint32_t face;
+  };
+  const std::vector<std::uint32_t> order = coherent_targets(positions, matrix.target_weight());
+  std::vector<Sample> ordered(order.size());
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    ordered[k] = {samples.points[order[k]] - frame.origin, samples.face[order[k]]};
+  }
   fill_rows(
-      matrix, candidates, coherent_targets(positions, matrix.target_weight()), options.threads,
-      progress,
-      [&](const Eigen::Vector3d& station, std::uint32_t s) {
-        return limit_test.admits(samples.points[s] - station, normals[samples.face[s]]);
+      matrix, candidates, order, options.threads, progress,
+      [&](const Eigen::Vector3d& station, std::size_t k) {
+        return limit_test.admits(samples.points[order[k]] - station, normals[ordered[k].face]);
       },
-      [&](const Eigen::Vector3d& station, std::uint32_t s, Ray& ray, PrimitiveId& ignore) {
-        ignore = samples.face[s];
-        return mesh_shadow_ray(samples.points[s] - frame.origin, station - frame.origin,
-                               frame.epsilon, ray, frame.reach);
+      [&](const Eigen::Vector3d& station, std::size_t k, Ray& ray, PrimitiveId& ignore) {
+        ignore = ordered[k].face;
+        return mesh_shadow_ray(ordered[k].local, station - frame.origin, frame.epsilon, ray,
+                               frame.reach);
       },
       [&](const Ray* rays, std::size_t count, const PrimitiveId* ignore, std::uint8_t* blocked,
           unsigned threads) { tree.occluded_batch(rays, count, ignore, blocked, threads); });

@@ -27,9 +27,22 @@ class ScanTracer {
   // (scan_cloud's rules). Throws Cancelled on cancel.
   ScanTracer(const PointCloud& cloud, const ScanOptions& options, const Progress& progress = {});
 
-  // The shadow ray from `viewpoint` to point `point` (scan_surfel_ray or
+  // What the rule reads of a point to make its ray: its disc (for spheres,
+  // its position as the centre) and its surface's thickness. A caller that
+  // traces many viewpoints to the same points keeps them in the order it
+  // traces them: read in that order, they stream from memory.
+  struct Target {
+    Surfel surfel;
+    float thickness = 0.0f;
+  };
+  Target target(std::size_t point) const;
+
+  // The shadow ray from `viewpoint` to a point (scan_surfel_ray or
   // scan_shadow_ray).
-  Ray ray(const Eigen::Vector3d& viewpoint, std::size_t point) const;
+  Ray ray(const Eigen::Vector3d& viewpoint, std::size_t point) const {
+    return ray(viewpoint, target(point));
+  }
+  Ray ray(const Eigen::Vector3d& viewpoint, const Target& target) const;
   // The segment between two viewpoints, without what the rule ignores near a
   // viewpoint at both ends (the empty interval when they are closer than that).
   Ray segment(const Eigen::Vector3d& from, const Eigen::Vector3d& to) const;
