@@ -1,5 +1,5 @@
 // bench_plan [--points N] [--triangles N] [--candidates N] [--height H] [--threads T]
-//            [--seed S] [--repeat N] [--ours-only]
+//            [--seed S] [--repeat N] [--leaf N] [--ours-only]
 //
 // Times scan planning's cost, the visibility matrix of candidate stations
 // over a cloud's points (cloud_station_coverage: -fscan's rule against the
@@ -31,7 +31,7 @@ using namespace occlusion::bench;
 
 constexpr const char* kUsage =
     "usage: bench_plan [--points N] [--triangles N] [--candidates N] [--height H] [--threads T]\n"
-    "                  [--seed S] [--repeat N] [--ours-only]\n";
+    "                  [--seed S] [--repeat N] [--leaf N] [--ours-only]\n";
 
 struct Options {
   std::size_t points = 200'000;
@@ -41,7 +41,8 @@ struct Options {
   unsigned threads = 2;
   std::uint64_t seed = 2;
   int repeat = 3;
-  bool embree = true;  // --ours-only: leave Embree out (for profiling ours)
+  bool embree = true;    // --ours-only: leave Embree out (for profiling ours)
+  std::size_t leaf = 0;  // our octree's max_leaf_size; 0: the analysis' default
 };
 
 Options parse(int argc, char** argv) {
@@ -65,6 +66,8 @@ Options parse(int argc, char** argv) {
       o.threads = parse_threads(arg, flag_value(argc, argv, i));
     } else if (arg == "--seed") {
       o.seed = parse_unsigned(arg, flag_value(argc, argv, i));
+    } else if (arg == "--leaf") {
+      o.leaf = parse_unsigned(arg, flag_value(argc, argv, i));
     } else if (arg == "--ours-only") {
       o.embree = false;
     } else if (arg == "--repeat") {
@@ -155,6 +158,7 @@ int run(const Options& o) {
   ScanOptions scan;
   scan.threads = o.threads;
   scan.surfels = &estimate;
+  if (o.leaf > 0) scan.octree.max_leaf_size = o.leaf;
   const std::vector<double> weight(cloud.size(), 1.0);
   EmbreeDiscs embree(o.threads);
   CoverageMatrix ours, theirs;
