@@ -104,6 +104,7 @@ Ray scan_shadow_ray(const Eigen::Vector3d& viewpoint, const Eigen::Vector3f& poi
 ScanTracer::ScanTracer(const PointCloud& cloud, const ScanOptions& options,
                        const Progress& progress)
     : cloud_(cloud), options_(options) {
+  progress("building octree", 0.0);
   if (options.surfels) {
     near_viewpoint_ = 2.0 * options.surfels->stats.radius_median;
     discs_.emplace(options.surfels->surfels, options.octree, progress);
@@ -164,7 +165,6 @@ ScanResult scan_cloud(const PointCloud& cloud, const std::vector<Eigen::Vector3d
   check_inputs(cloud, viewpoints, options);
 
   const auto start = Clock::now();
-  progress("building octree", 0.0);
   const ScanTracer tracer(cloud, options, progress);
   ScanResult result;
   result.build_seconds = seconds_since(start);

@@ -42,18 +42,26 @@ void check_candidates(const std::vector<Eigen::Vector3d>& candidates) {
   }
 }
 
-void check_weights(const std::vector<double>& weight, std::size_t targets, const char* what) {
+// The weights, once checked: one per target, finite and >= 0.
+std::vector<double> checked_weights(std::vector<double> weight, std::size_t targets,
+                                    const char* what) {
   if (weight.size() != targets) {
     throw std::invalid_argument("station visibility: " + std::to_string(weight.size()) +
                                 " target weights for " + std::to_string(targets) + " " + what);
   }
+  for (std::size_t t = 0; t < weight.size(); ++t) {
+    if (!std::isfinite(weight[t]) || weight[t] < 0.0) {
+      throw std::invalid_argument("station visibility: the weight of target " + std::to_string(t) +
+                                  " is negative or not finite");
+    }
+  }
+  return weight;
 }
 
-void check_cloud_inputs(const PointCloud& cloud, const std::vector<Eigen::Vector3d>& candidates,
-                        const ScanOptions& options) {
+// The cloud, once its point model is checked.
+const PointCloud& checked_cloud(const PointCloud& cloud, const ScanOptions& options) {
   cloud.validate();
   if (cloud.size() == 0) throw std::invalid_argument("station visibility: the cloud has no points");
-  check_candidates(candidates);
   if (options.field_of_view) {
     throw std::invalid_argument(
         "station visibility: a candidate station turns all the way round; a laser station's "
@@ -62,41 +70,44 @@ void check_cloud_inputs(const PointCloud& cloud, const std::vector<Eigen::Vector
   if (!std::isfinite(options.self_tolerance)) {
     throw std::invalid_argument("station visibility: self_tolerance must be a finite number");
   }
+  analysis_support::check_point_model(cloud, {}, options.point_radius, options.surfels, kAnalysis);
+  return cloud;
+}
+
+// The candidates, where float still resolves the point model.
+void check_cloud_candidates(const PointCloud& cloud, const std::vector<Eigen::Vector3d>& candidates,
+                            const ScanOptions& options) {
+  check_candidates(candidates);
   analysis_support::check_point_model(cloud, candidates, options.point_radius, options.surfels,
                                       kAnalysis);
 }
 
-// The frame -moc traces a mesh in (compute_mesh_occlusion): around the
-// centre of its bounds, so that float keeps its precision far from the
-// origin, with shadow rays longer than `reach` cut from the sample's end.
-struct MeshFrame {
-  Eigen::Vector3d origin;
-  double reach = 0.0;
-  double epsilon = 0.0;
-};
-
-MeshFrame mesh_frame(const TriangleMesh& mesh, const std::vector<Eigen::Vector3d>& candidates,
-                     const MeshOcclusionOptions& options) {
+// The mesh, once checked.
+const TriangleMesh& checked_mesh(const TriangleMesh& mesh, const MeshOcclusionOptions& options) {
   mesh.validate();
   if (mesh.faces.empty()) throw std::invalid_argument("station visibility: the mesh has no faces");
-  check_candidates(candidates);
   analysis_support::check_positive(options.epsilon_scale, "epsilon_scale", kAnalysis);
   Eigen::Vector3d lo, hi;
   mesh.bounds(lo, hi);
-  MeshFrame frame;
-  frame.origin = 0.5 * (lo + hi);
-  const double diagonal = (hi - lo).norm();
-  if (!(diagonal > 0.0)) {
+  if (!((hi - lo).norm() > 0.0)) {
     throw std::invalid_argument("station visibility: the mesh has zero extent");
   }
+  return mesh;
+}
+
+// The candidates, where float still resolves the mesh seen from them (as
+// compute_mesh_occlusion checks its viewpoints).
+void check_mesh_candidates(const TriangleMesh& mesh,
+                           const std::vector<Eigen::Vector3d>& candidates) {
+  check_candidates(candidates);
+  Eigen::Vector3d lo, hi;
+  mesh.bounds(lo, hi);
+  const Eigen::Vector3d origin = 0.5 * (lo + hi);
   std::vector<Eigen::Vector3d> local;
-  for (const auto& candidate : candidates) local.push_back(candidate - frame.origin);
+  for (const auto& candidate : candidates) local.push_back(candidate - origin);
   analysis_support::check_float_precision(
-      (lo - frame.origin).cast<float>(), (hi - frame.origin).cast<float>(), local,
-      {diagonal, "the mesh's diagonal", "the mesh's centre", "mesh"}, kAnalysis);
-  frame.reach = 2.0 * diagonal;
-  frame.epsilon = mesh_shadow_epsilon(mesh, options);
-  return frame;
+      (lo - origin).cast<float>(), (hi - origin).cast<float>(), local,
+      {(hi - lo).norm(), "the mesh's diagonal", "the mesh's centre", "mesh"}, kAnalysis);
 }
 
 void check_samples(const TriangleMesh& mesh, const MeshSamples& samples) {
@@ -195,7 +206,7 @@ void fill_rows(CoverageMatrix& matrix, const std::vector<Eigen::Vector3d>& candi
 
 // The pairs (i < j) of candidates, traced through `occluded` in blocks; what
 // make(i, j, ray) declines (false) is seen without a ray.
-std::vector<std::uint8_t> intervisibility(
+std::vector<std::uint8_t> candidate_pairs(
     std::size_t n, const Progress& progress,
     const std::function<bool(std::size_t i, std::size_t j, Ray& ray)>& make,
     const std::function<void(const Ray*, std::size_t, std::uint8_t*)>& occluded) {
@@ -301,40 +312,128 @@ bool StationLimitTest::admits(const Eigen::Vector3d& to_target,
   return true;
 }
 
+CloudStationVisibility::CloudStationVisibility(const PointCloud& cloud,
+                                               std::vector<double> target_weight,
+                                               const ScanOptions& options,
+                                               const StationLimits& limits,
+                                               const Progress& progress)
+    : cloud_(checked_cloud(cloud, options)),
+      options_(options),
+      weight_(checked_weights(std::move(target_weight), cloud.size(), "points")),
+      limits_(limits),
+      tracer_(cloud, options, progress) {
+  // The points' discs copied in the order they are traced, for every
+  // candidate to read as one stream.
+  order_ = coherent_targets(cloud.positions, weight_);
+  targets_.resize(order_.size());
+  for (std::size_t k = 0; k < order_.size(); ++k) targets_[k] = tracer_.target(order_[k]);
+}
+
+CoverageMatrix CloudStationVisibility::coverage(const std::vector<Eigen::Vector3d>& candidates,
+                                                const Progress& progress) const {
+  check_cloud_candidates(cloud_, candidates, options_);
+  CoverageMatrix matrix(candidates.size(), weight_);
+  fill_rows(
+      matrix, candidates, order_, options_.threads, progress,
+      [&](const Eigen::Vector3d& station, std::size_t k) {
+        const Surfel& surfel = targets_[k].surfel;
+        return limits_.admits(surfel.center.cast<double>() - station, surfel.normal);
+      },
+      [&](const Eigen::Vector3d& station, std::size_t k, Ray& ray, PrimitiveId& ignore) {
+        ray = tracer_.ray(station, targets_[k]);
+        ignore = order_[k];
+        return true;
+      },
+      [&](const Ray* rays, std::size_t count, const PrimitiveId* ignore, std::uint8_t* blocked,
+          unsigned threads) { tracer_.occluded(rays, count, ignore, blocked, threads); });
+  progress("done", 1.0);
+  return matrix;
+}
+
+std::vector<std::uint8_t> CloudStationVisibility::intervisibility(
+    const std::vector<Eigen::Vector3d>& candidates, const Progress& progress) const {
+  check_cloud_candidates(cloud_, candidates, options_);
+  return candidate_pairs(
+      candidates.size(), progress,
+      [&](std::size_t i, std::size_t j, Ray& ray) {
+        ray = tracer_.segment(candidates[i], candidates[j]);
+        return true;
+      },
+      [&](const Ray* rays, std::size_t count, std::uint8_t* blocked) {
+        tracer_.occluded(rays, count, nullptr, blocked, options_.threads);
+      });
+}
+
+MeshStationVisibility::MeshStationVisibility(const TriangleMesh& mesh, const MeshSamples& samples,
+                                             std::vector<double> target_weight,
+                                             const MeshOcclusionOptions& options,
+                                             const StationLimits& limits, const Progress& progress)
+    : mesh_(checked_mesh(mesh, options)),
+      samples_(samples),
+      options_(options),
+      weight_(checked_weights(std::move(target_weight), samples.size(), "samples")),
+      limits_(limits) {
+  check_samples(mesh, samples);
+  Eigen::Vector3d lo, hi;
+  mesh.bounds(lo, hi);
+  origin_ = 0.5 * (lo + hi);
+  // Every sample lies within one diagonal of every face, so nothing that can
+  // block a shadow ray is farther away than that.
+  reach_ = 2.0 * (hi - lo).norm();
+  epsilon_ = mesh_shadow_epsilon(mesh, options);
+  progress("building octree", 0.0);
+  tree_ = TriangleOctree(pack_triangles(mesh, origin_), options.octree, progress);
+  progress.check_cancel();
+  normals_ = face_normals(mesh);
+  std::vector<Eigen::Vector3f> positions(samples.size());
+  for (std::size_t s = 0; s < samples.size(); ++s) positions[s] = samples.points[s].cast<float>();
+  order_ = coherent_targets(positions, weight_);
+  ordered_.resize(order_.size());
+  for (std::size_t k = 0; k < order_.size(); ++k) {
+    ordered_[k] = {samples.points[order_[k]] - origin_, samples.face[order_[k]]};
+  }
+}
+
+CoverageMatrix MeshStationVisibility::coverage(const std::vector<Eigen::Vector3d>& candidates,
+                                               const Progress& progress) const {
+  check_mesh_candidates(mesh_, candidates);
+  CoverageMatrix matrix(candidates.size(), weight_);
+  fill_rows(
+      matrix, candidates, order_, options_.threads, progress,
+      [&](const Eigen::Vector3d& station, std::size_t k) {
+        return limits_.admits(samples_.points[order_[k]] - station, normals_[ordered_[k].face]);
+      },
+      [&](const Eigen::Vector3d& station, std::size_t k, Ray& ray, PrimitiveId& ignore) {
+        ignore = ordered_[k].face;
+        return mesh_shadow_ray(ordered_[k].local, station - origin_, epsilon_, ray, reach_);
+      },
+      [&](const Ray* rays, std::size_t count, const PrimitiveId* ignore, std::uint8_t* blocked,
+          unsigned threads) { tree_.occluded_batch(rays, count, ignore, blocked, threads); });
+  progress("done", 1.0);
+  return matrix;
+}
+
+std::vector<std::uint8_t> MeshStationVisibility::intervisibility(
+    const std::vector<Eigen::Vector3d>& candidates, const Progress& progress) const {
+  check_mesh_candidates(mesh_, candidates);
+  return candidate_pairs(
+      candidates.size(), progress,
+      [&](std::size_t i, std::size_t j, Ray& ray) {
+        return mesh_shadow_ray(candidates[j] - origin_, candidates[i] - origin_, epsilon_, ray,
+                               reach_);
+      },
+      [&](const Ray* rays, std::size_t count, std::uint8_t* blocked) {
+        tree_.occluded_batch(rays, count, nullptr, blocked, options_.threads);
+      });
+}
+
 CoverageMatrix cloud_station_coverage(const PointCloud& cloud,
                                       const std::vector<Eigen::Vector3d>& candidates,
                                       std::vector<double> target_weight, const ScanOptions& options,
                                       const StationLimits& limits, const Progress& progress) {
-  check_cloud_inputs(cloud, candidates, options);
-  check_weights(target_weight, cloud.size(), "points");
-  const StationLimitTest limit_test(limits);
-  CoverageMatrix matrix(candidates.size(), std::move(target_weight));
-
-  progress("building octree", 0.0);
-  const ScanTracer tracer(cloud, options, progress);
-  progress.check_cancel();
-
-  // The points' discs copied in the order they are traced, for every
-  // candidate to read as one stream.
-  const std::vector<std::uint32_t> order =
-      coherent_targets(cloud.positions, matrix.target_weight());
-  std::vector<ScanTracer::Target> targets(order.size());
-  for (std::size_t k = 0; k < order.size(); ++k) targets[k] = tracer.target(order[k]);
-  fill_rows(
-      matrix, candidates, order, options.threads, progress,
-      [&](const Eigen::Vector3d& station, std::size_t k) {
-        const Surfel& surfel = targets[k].surfel;
-        return limit_test.admits(surfel.center.cast<double>() - station, surfel.normal);
-      },
-      [&](const Eigen::Vector3d& station, std::size_t k, Ray& ray, PrimitiveId& ignore) {
-        ray = tracer.ray(station, targets[k]);
-        ignore = order[k];
-        return true;
-      },
-      [&](const Ray* rays, std::size_t count, const PrimitiveId* ignore, std::uint8_t* blocked,
-          unsigned threads) { tracer.occluded(rays, count, ignore, blocked, threads); });
-  progress("done", 1.0);
-  return matrix;
+  check_cloud_candidates(checked_cloud(cloud, options), candidates, options);
+  return CloudStationVisibility(cloud, std::move(target_weight), options, limits, progress)
+      .coverage(candidates, progress);
 }
 
 CoverageMatrix mesh_station_coverage(const TriangleMesh& mesh, const MeshSamples& samples,
@@ -342,77 +441,29 @@ CoverageMatrix mesh_station_coverage(const TriangleMesh& mesh, const MeshSamples
                                      std::vector<double> target_weight,
                                      const MeshOcclusionOptions& options,
                                      const StationLimits& limits, const Progress& progress) {
-  const MeshFrame frame = mesh_frame(mesh, candidates, options);
-  check_samples(mesh, samples);
-  check_weights(target_weight, samples.size(), "samples");
-  const StationLimitTest limit_test(limits);
-  CoverageMatrix matrix(candidates.size(), std::move(target_weight));
-  const std::vector<Eigen::Vector3f> normals = face_normals(mesh);
-
-  progress("building octree", 0.0);
-  const TriangleOctree tree(pack_triangles(mesh, frame.origin), options.octree, progress);
-  progress.check_cancel();
-
-  std::vector<Eigen::Vector3f> positions(samples.size());
-  for (std::size_t s = 0; s < samples.size(); ++s) positions[s] = samples.points[s].cast<float>();
-  // The samples copied in the order they are traced (see the cloud's).
-  struct Sample {
-    Eigen::Vector3d local;  // relative to the frame's origin
-    std::uint32_t face;
-  };
-  const std::vector<std::uint32_t> order = coherent_targets(positions, matrix.target_weight());
-  std::vector<Sample> ordered(order.size());
-  for (std::size_t k = 0; k < order.size(); ++k) {
-    ordered[k] = {samples.points[order[k]] - frame.origin, samples.face[order[k]]};
-  }
-  fill_rows(
-      matrix, candidates, order, options.threads, progress,
-      [&](const Eigen::Vector3d& station, std::size_t k) {
-        return limit_test.admits(samples.points[order[k]] - station, normals[ordered[k].face]);
-      },
-      [&](const Eigen::Vector3d& station, std::size_t k, Ray& ray, PrimitiveId& ignore) {
-        ignore = ordered[k].face;
-        return mesh_shadow_ray(ordered[k].local, station - frame.origin, frame.epsilon, ray,
-                               frame.reach);
-      },
-      [&](const Ray* rays, std::size_t count, const PrimitiveId* ignore, std::uint8_t* blocked,
-          unsigned threads) { tree.occluded_batch(rays, count, ignore, blocked, threads); });
-  progress("done", 1.0);
-  return matrix;
+  check_mesh_candidates(checked_mesh(mesh, options), candidates);
+  return MeshStationVisibility(mesh, samples, std::move(target_weight), options, limits, progress)
+      .coverage(candidates, progress);
 }
 
 std::vector<std::uint8_t> cloud_candidate_intervisibility(
     const PointCloud& cloud, const std::vector<Eigen::Vector3d>& candidates,
     const ScanOptions& options, const Progress& progress) {
-  check_cloud_inputs(cloud, candidates, options);
-  progress("building octree", 0.0);
-  const ScanTracer tracer(cloud, options, progress);
-  return intervisibility(
-      candidates.size(), progress,
-      [&](std::size_t i, std::size_t j, Ray& ray) {
-        ray = tracer.segment(candidates[i], candidates[j]);
-        return true;
-      },
-      [&](const Ray* rays, std::size_t count, std::uint8_t* blocked) {
-        tracer.occluded(rays, count, nullptr, blocked, options.threads);
-      });
+  check_cloud_candidates(checked_cloud(cloud, options), candidates, options);
+  // Weight 0 everywhere: only the octree is built.
+  return CloudStationVisibility(cloud, std::vector<double>(cloud.size(), 0.0), options, {},
+                                progress)
+      .intervisibility(candidates, progress);
 }
 
 std::vector<std::uint8_t> mesh_candidate_intervisibility(
     const TriangleMesh& mesh, const std::vector<Eigen::Vector3d>& candidates,
     const MeshOcclusionOptions& options, const Progress& progress) {
-  const MeshFrame frame = mesh_frame(mesh, candidates, options);
-  progress("building octree", 0.0);
-  const TriangleOctree tree(pack_triangles(mesh, frame.origin), options.octree, progress);
-  return intervisibility(
-      candidates.size(), progress,
-      [&](std::size_t i, std::size_t j, Ray& ray) {
-        return mesh_shadow_ray(candidates[j] - frame.origin, candidates[i] - frame.origin,
-                               frame.epsilon, ray, frame.reach);
-      },
-      [&](const Ray* rays, std::size_t count, std::uint8_t* blocked) {
-        tree.occluded_batch(rays, count, nullptr, blocked, options.threads);
-      });
+  check_mesh_candidates(checked_mesh(mesh, options), candidates);
+  // No samples: only the octree is built.
+  const MeshSamples none{{}, {}, {0}};
+  return MeshStationVisibility(mesh, none, {}, options, {}, progress)
+      .intervisibility(candidates, progress);
 }
 
 }  // namespace occlusion

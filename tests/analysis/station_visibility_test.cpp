@@ -155,6 +155,32 @@ TEST(StationVisibility, SameMatrixWhateverTheThreads) {
   }
 }
 
+TEST(StationVisibility, OneOctreeAnswersAnyCandidatesLater) {
+  // Built once, asked a row at a time (a viewer dragging a station) or for
+  // some candidates only: the same rows as the whole matrix.
+  const SampledRoom& room = sampled_room();
+  const PointCloud& cloud = room.sampled.cloud;
+  const ScanOptions options = room.options();
+  const CloudStationVisibility visibility(cloud, ones(cloud.size()), options, {});
+  const CoverageMatrix all = visibility.coverage(kInside);
+  for (std::size_t c = 0; c < kInside.size(); ++c) {
+    EXPECT_EQ(row(visibility.coverage({kInside[c]}), 0), row(all, c)) << "candidate " << c;
+  }
+  const CoverageMatrix some = visibility.coverage({kInside[3], kInside[1]});
+  EXPECT_EQ(row(some, 0), row(all, 3));
+  EXPECT_EQ(row(some, 1), row(all, 1));
+
+  const TriangleMesh& mesh = room.mesh;
+  const MeshSamples samples = sample_mesh(mesh, 20.0, 1);
+  const MeshOcclusionOptions mesh_options;
+  const MeshStationVisibility mesh_visibility(mesh, samples, ones(samples.size()), mesh_options,
+                                              {});
+  const CoverageMatrix mesh_all = mesh_visibility.coverage(kInside);
+  EXPECT_EQ(row(mesh_visibility.coverage({kInside[2]}), 0), row(mesh_all, 2));
+  EXPECT_EQ(mesh_visibility.intervisibility({kInside[2], kInside[3], kOutside}),
+            mesh_candidate_intervisibility(mesh, {kInside[2], kInside[3], kOutside}, mesh_options));
+}
+
 TEST(StationVisibility, ZeroWeightTargetsAreNeverSet) {
   const SampledRoom& room = sampled_room();
   const PointCloud& cloud = room.sampled.cloud;

@@ -24,7 +24,8 @@ class ScanTracer {
   // Builds the octree of options.surfels (discs) or of the cloud's points as
   // spheres of options.point_radius. `cloud` and `options` (and the surfels
   // they point to) must outlive the tracer; the caller has checked them
-  // (scan_cloud's rules). Throws Cancelled on cancel.
+  // (scan_cloud's rules). Reports stage "building octree"; throws Cancelled
+  // on cancel.
   ScanTracer(const PointCloud& cloud, const ScanOptions& options, const Progress& progress = {});
 
   // What the rule reads of a point to make its ray: its disc (for spheres,
