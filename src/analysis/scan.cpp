@@ -104,6 +104,7 @@ Ray scan_shadow_ray(const Eigen::Vector3d& viewpoint, const Eigen::Vector3f& poi
 ScanTracer::ScanTracer(const PointCloud& cloud, const ScanOptions& options,
                        const Progress& progress)
     : cloud_(cloud), options_(options) {
+  progress("building octree", 0.0);
   if (options.surfels) {
     near_viewpoint_ = 2.0 * options.surfels->stats.radius_median;
     discs_.emplace(options.surfels->surfels, options.octree, progress);
@@ -115,13 +116,19 @@ ScanTracer::ScanTracer(const PointCloud& cloud, const ScanOptions& options,
   }
 }
 
-Ray ScanTracer::ray(const Eigen::Vector3d& viewpoint, std::size_t point) const {
+ScanTracer::Target ScanTracer::target(std::size_t point) const {
+  if (discs_) return {options_.surfels->surfels[point], options_.surfels->thickness[point]};
+  Target target;
+  target.surfel.center = cloud_.positions[point];
+  return target;
+}
+
+Ray ScanTracer::ray(const Eigen::Vector3d& viewpoint, const Target& target) const {
   if (discs_) {
-    const SurfelEstimate& model = *options_.surfels;
-    return scan_surfel_ray(viewpoint, model.surfels[point], model.thickness[point], near_viewpoint_,
+    return scan_surfel_ray(viewpoint, target.surfel, target.thickness, near_viewpoint_,
                            options_.self_tolerance);
   }
-  return scan_shadow_ray(viewpoint, cloud_.positions[point], options_);
+  return scan_shadow_ray(viewpoint, target.surfel.center, options_);
 }
 
 Ray ScanTracer::segment(const Eigen::Vector3d& from, const Eigen::Vector3d& to) const {
@@ -130,11 +137,11 @@ Ray ScanTracer::segment(const Eigen::Vector3d& from, const Eigen::Vector3d& to) 
 }
 
 void ScanTracer::occluded(const Ray* rays, std::size_t count, const PrimitiveId* ignore,
-                          std::uint8_t* blocked) const {
+                          std::uint8_t* blocked, unsigned threads) const {
   if (discs_) {
-    discs_->occluded_batch(rays, count, ignore, blocked, options_.threads);
+    discs_->occluded_batch(rays, count, ignore, blocked, threads);
   } else {
-    spheres_->occluded_batch(rays, count, ignore, blocked, options_.threads);
+    spheres_->occluded_batch(rays, count, ignore, blocked, threads);
   }
 }
 
@@ -145,7 +152,7 @@ void ScanTracer::trace(const Eigen::Vector3d& viewpoint, const std::uint32_t* po
     for (std::size_t k = b; k < e; ++k) rays[k] = ray(viewpoint, points[k]);
   });
   static_assert(sizeof(PrimitiveId) == sizeof(std::uint32_t), "point indices are primitive ids");
-  occluded(rays, count, points, blocked);
+  occluded(rays, count, points, blocked, options_.threads);
   for (std::size_t k = 0; k < count; ++k) seen[k] = blocked[k] ? 0 : 1;
 }
 
@@ -158,7 +165,6 @@ ScanResult scan_cloud(const PointCloud& cloud, const std::vector<Eigen::Vector3d
   check_inputs(cloud, viewpoints, options);
 
   const auto start = Clock::now();
-  progress("building octree", 0.0);
   const ScanTracer tracer(cloud, options, progress);
   ScanResult result;
   result.build_seconds = seconds_since(start);

@@ -8,6 +8,7 @@
 
 #include "analysis_support.hpp"
 #include "occlusion/analysis/scan_tracer.hpp"
+#include "occlusion/core/morton_order.hpp"
 #include "occlusion/core/parallel.hpp"
 #include "occlusion/core/triangle_octree.hpp"
 
@@ -17,9 +18,15 @@ namespace {
 
 constexpr char kAnalysis[] = "station visibility";
 
-// Targets per traced block: bounds the scratch memory and sets how often
-// progress and cancel are checked.
-constexpr std::size_t kTargetsPerBlock = std::size_t{1} << 16;
+// Candidates a thread takes per round between progress reports: enough to
+// keep every thread busy, few enough to report every second or so.
+constexpr std::size_t kCandidatesPerRound = 8;
+// Targets per block traced on one thread: one window of the octree's
+// direction sort (ray_order.hpp).
+constexpr std::size_t kTargetsPerThreadBlock = 4096;
+// Targets per block traced on all threads (few candidates): bounds the scratch
+// memory and sets how often cancel is checked.
+constexpr std::size_t kTargetsPerSharedBlock = std::size_t{1} << 16;
 
 double radians(double degrees) {
   return degrees * M_PI / 180.0;
@@ -35,18 +42,26 @@ void check_candidates(const std::vector<Eigen::Vector3d>& candidates) {
   }
 }
 
-void check_weights(const std::vector<double>& weight, std::size_t targets, const char* what) {
+// The weights, once checked: one per target, finite and >= 0.
+std::vector<double> checked_weights(std::vector<double> weight, std::size_t targets,
+                                    const char* what) {
   if (weight.size() != targets) {
     throw std::invalid_argument("station visibility: " + std::to_string(weight.size()) +
                                 " target weights for " + std::to_string(targets) + " " + what);
   }
+  for (std::size_t t = 0; t < weight.size(); ++t) {
+    if (!std::isfinite(weight[t]) || weight[t] < 0.0) {
+      throw std::invalid_argument("station visibility: the weight of target " + std::to_string(t) +
+                                  " is negative or not finite");
+    }
+  }
+  return weight;
 }
 
-void check_cloud_inputs(const PointCloud& cloud, const std::vector<Eigen::Vector3d>& candidates,
-                        const ScanOptions& options) {
+// The cloud, once its point model is checked.
+const PointCloud& checked_cloud(const PointCloud& cloud, const ScanOptions& options) {
   cloud.validate();
   if (cloud.size() == 0) throw std::invalid_argument("station visibility: the cloud has no points");
-  check_candidates(candidates);
   if (options.field_of_view) {
     throw std::invalid_argument(
         "station visibility: a candidate station turns all the way round; a laser station's "
@@ -55,41 +70,44 @@ void check_cloud_inputs(const PointCloud& cloud, const std::vector<Eigen::Vector
   if (!std::isfinite(options.self_tolerance)) {
     throw std::invalid_argument("station visibility: self_tolerance must be a finite number");
   }
+  analysis_support::check_point_model(cloud, {}, options.point_radius, options.surfels, kAnalysis);
+  return cloud;
+}
+
+// The candidates, where float still resolves the point model.
+void check_cloud_candidates(const PointCloud& cloud, const std::vector<Eigen::Vector3d>& candidates,
+                            const ScanOptions& options) {
+  check_candidates(candidates);
   analysis_support::check_point_model(cloud, candidates, options.point_radius, options.surfels,
                                       kAnalysis);
 }
 
-// The frame -moc traces a mesh in (compute_mesh_occlusion): around the
-// centre of its bounds, so that float keeps its precision far from the
-// origin, with shadow rays longer than `reach` cut from the sample's end.
-struct MeshFrame {
-  Eigen::Vector3d origin;
-  double reach = 0.0;
-  double epsilon = 0.0;
-};
-
-MeshFrame mesh_frame(const TriangleMesh& mesh, const std::vector<Eigen::Vector3d>& candidates,
-                     const MeshOcclusionOptions& options) {
+// The mesh, once checked.
+const TriangleMesh& checked_mesh(const TriangleMesh& mesh, const MeshOcclusionOptions& options) {
   mesh.validate();
   if (mesh.faces.empty()) throw std::invalid_argument("station visibility: the mesh has no faces");
-  check_candidates(candidates);
   analysis_support::check_positive(options.epsilon_scale, "epsilon_scale", kAnalysis);
   Eigen::Vector3d lo, hi;
   mesh.bounds(lo, hi);
-  MeshFrame frame;
-  frame.origin = 0.5 * (lo + hi);
-  const double diagonal = (hi - lo).norm();
-  if (!(diagonal > 0.0)) {
+  if (!((hi - lo).norm() > 0.0)) {
     throw std::invalid_argument("station visibility: the mesh has zero extent");
   }
+  return mesh;
+}
+
+// The candidates, where float still resolves the mesh seen from them (as
+// compute_mesh_occlusion checks its viewpoints).
+void check_mesh_candidates(const TriangleMesh& mesh,
+                           const std::vector<Eigen::Vector3d>& candidates) {
+  check_candidates(candidates);
+  Eigen::Vector3d lo, hi;
+  mesh.bounds(lo, hi);
+  const Eigen::Vector3d origin = 0.5 * (lo + hi);
   std::vector<Eigen::Vector3d> local;
-  for (const auto& candidate : candidates) local.push_back(candidate - frame.origin);
+  for (const auto& candidate : candidates) local.push_back(candidate - origin);
   analysis_support::check_float_precision(
-      (lo - frame.origin).cast<float>(), (hi - frame.origin).cast<float>(), local,
-      {diagonal, "the mesh's diagonal", "the mesh's centre", "mesh"}, kAnalysis);
-  frame.reach = 2.0 * diagonal;
-  frame.epsilon = mesh_shadow_epsilon(mesh, options);
-  return frame;
+      (lo - origin).cast<float>(), (hi - origin).cast<float>(), local,
+      {(hi - lo).norm(), "the mesh's diagonal", "the mesh's centre", "mesh"}, kAnalysis);
 }
 
 void check_samples(const TriangleMesh& mesh, const MeshSamples& samples) {
@@ -107,28 +125,88 @@ void check_samples(const TriangleMesh& mesh, const MeshSamples& samples) {
   }
 }
 
-// One candidate's targets, block by block: those with weight and inside the
-// limits go to `trace(first_of_block, targets, count)`, which sets their bits.
-void for_each_admitted_block(
-    std::size_t targets, const std::vector<double>& weight, const Progress& progress,
-    const std::function<bool(std::size_t target)>& admits,
-    const std::function<void(const std::uint32_t* targets, std::size_t count)>& trace) {
-  std::vector<std::uint32_t> admitted;
-  admitted.reserve(std::min(targets, kTargetsPerBlock));
-  for (std::size_t first = 0; first < targets; first += kTargetsPerBlock) {
-    const std::size_t last = std::min(targets, first + kTargetsPerBlock);
-    admitted.clear();
-    for (std::size_t t = first; t < last; ++t) {
-      if (weight[t] > 0.0 && admits(t)) admitted.push_back(static_cast<std::uint32_t>(t));
+// The targets worth tracing (weight > 0) in Morton order of their
+// positions: a block of them is a patch of surface, so one candidate's rays
+// to it point nearly the same way and trace as packets.
+std::vector<std::uint32_t> coherent_targets(const std::vector<Eigen::Vector3f>& positions,
+                                            const std::vector<double>& weight) {
+  std::vector<std::uint32_t> order = morton_order(positions);
+  order.erase(std::remove_if(order.begin(), order.end(),
+                             [&](std::uint32_t target) { return !(weight[target] > 0.0); }),
+              order.end());
+  return order;
+}
+
+// Scratch for one block of one candidate's rays.
+struct RayBlock {
+  std::vector<Ray> rays;
+  std::vector<PrimitiveId> ignore;
+  std::vector<std::uint32_t> target;
+  std::vector<std::uint8_t> blocked;
+  explicit RayBlock(std::size_t size) : rays(size), ignore(size), target(size), blocked(size) {}
+};
+
+// Sets the bits of the targets (of `order`) each candidate sees.
+// admits(station, k) applies the limits to target order[k]; make(station, k,
+// ray, ignore) makes its shadow ray, or returns false for a target seen
+// without one; occluded(rays, count, ignore, blocked, threads) traces them.
+// Many candidates: each thread fills whole rows, one candidate at a time, its
+// rays traced on that thread (no two threads write one row). Few: one
+// candidate at a time, its blocks traced on every thread.
+template <class Admits, class Make, class Occluded>
+void fill_rows(CoverageMatrix& matrix, const std::vector<Eigen::Vector3d>& candidates,
+               const std::vector<std::uint32_t>& order, unsigned threads, const Progress& progress,
+               const Admits& admits, const Make& make, const Occluded& occluded) {
+  const auto trace_block = [&](std::size_t c, std::size_t first, std::size_t last,
+                               unsigned block_threads, RayBlock& block) {
+    const Eigen::Vector3d& station = candidates[c];
+    std::size_t count = 0;
+    for (std::size_t k = first; k < last; ++k) {
+      if (!admits(station, k)) continue;
+      if (!make(station, k, block.rays[count], block.ignore[count])) {
+        matrix.set_seen(c, order[k]);
+        continue;
+      }
+      block.target[count++] = order[k];
     }
-    trace(admitted.data(), admitted.size());
-    progress.check_cancel();
+    occluded(block.rays.data(), count, block.ignore.data(), block.blocked.data(), block_threads);
+    for (std::size_t k = 0; k < count; ++k) {
+      if (!block.blocked[k]) matrix.set_seen(c, block.target[k]);
+    }
+  };
+  const std::size_t n = candidates.size();
+  const unsigned workers = resolve_thread_count(threads);
+  progress("tracing", 0.0);
+  if (n >= 2 * std::size_t{workers}) {
+    const std::size_t round = kCandidatesPerRound * workers;
+    for (std::size_t first = 0; first < n; first += round) {
+      const std::size_t last = std::min(n, first + round);
+      parallel_for(last - first, 1, threads, [&](std::size_t b, std::size_t e) {
+        RayBlock block(std::min(order.size(), kTargetsPerThreadBlock));
+        for (std::size_t c = first + b; c < first + e; ++c) {
+          for (std::size_t k = 0; k < order.size(); k += kTargetsPerThreadBlock) {
+            trace_block(c, k, std::min(order.size(), k + kTargetsPerThreadBlock), 1, block);
+          }
+          progress.check_cancel();
+        }
+      });
+      progress("tracing", static_cast<double>(last) / static_cast<double>(n));
+    }
+    return;
+  }
+  RayBlock block(std::min(order.size(), kTargetsPerSharedBlock));
+  for (std::size_t c = 0; c < n; ++c) {
+    for (std::size_t k = 0; k < order.size(); k += kTargetsPerSharedBlock) {
+      trace_block(c, k, std::min(order.size(), k + kTargetsPerSharedBlock), threads, block);
+      progress.check_cancel();
+    }
+    progress("tracing", static_cast<double>(c + 1) / static_cast<double>(n));
   }
 }
 
 // The pairs (i < j) of candidates, traced through `occluded` in blocks; what
 // make(i, j, ray) declines (false) is seen without a ray.
-std::vector<std::uint8_t> intervisibility(
+std::vector<std::uint8_t> candidate_pairs(
     std::size_t n, const Progress& progress,
     const std::function<bool(std::size_t i, std::size_t j, Ray& ray)>& make,
     const std::function<void(const Ray*, std::size_t, std::uint8_t*)>& occluded) {
@@ -159,7 +237,7 @@ std::vector<std::uint8_t> intervisibility(
       }
       rays.push_back(ray);
       pairs.emplace_back(static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j));
-      if (rays.size() == kTargetsPerBlock) flush();
+      if (rays.size() == kTargetsPerSharedBlock) flush();
     }
     progress("intervisibility", static_cast<double>(i + 1) / static_cast<double>(n));
   }
@@ -234,43 +312,128 @@ bool StationLimitTest::admits(const Eigen::Vector3d& to_target,
   return true;
 }
 
+CloudStationVisibility::CloudStationVisibility(const PointCloud& cloud,
+                                               std::vector<double> target_weight,
+                                               const ScanOptions& options,
+                                               const StationLimits& limits,
+                                               const Progress& progress)
+    : cloud_(checked_cloud(cloud, options)),
+      options_(options),
+      weight_(checked_weights(std::move(target_weight), cloud.size(), "points")),
+      limits_(limits),
+      tracer_(cloud, options, progress) {
+  // The points' discs copied in the order they are traced, for every
+  // candidate to read as one stream.
+  order_ = coherent_targets(cloud.positions, weight_);
+  targets_.resize(order_.size());
+  for (std::size_t k = 0; k < order_.size(); ++k) targets_[k] = tracer_.target(order_[k]);
+}
+
+CoverageMatrix CloudStationVisibility::coverage(const std::vector<Eigen::Vector3d>& candidates,
+                                                const Progress& progress) const {
+  check_cloud_candidates(cloud_, candidates, options_);
+  CoverageMatrix matrix(candidates.size(), weight_);
+  fill_rows(
+      matrix, candidates, order_, options_.threads, progress,
+      [&](const Eigen::Vector3d& station, std::size_t k) {
+        const Surfel& surfel = targets_[k].surfel;
+        return limits_.admits(surfel.center.cast<double>() - station, surfel.normal);
+      },
+      [&](const Eigen::Vector3d& station, std::size_t k, Ray& ray, PrimitiveId& ignore) {
+        ray = tracer_.ray(station, targets_[k]);
+        ignore = order_[k];
+        return true;
+      },
+      [&](const Ray* rays, std::size_t count, const PrimitiveId* ignore, std::uint8_t* blocked,
+          unsigned threads) { tracer_.occluded(rays, count, ignore, blocked, threads); });
+  progress("done", 1.0);
+  return matrix;
+}
+
+std::vector<std::uint8_t> CloudStationVisibility::intervisibility(
+    const std::vector<Eigen::Vector3d>& candidates, const Progress& progress) const {
+  check_cloud_candidates(cloud_, candidates, options_);
+  return candidate_pairs(
+      candidates.size(), progress,
+      [&](std::size_t i, std::size_t j, Ray& ray) {
+        ray = tracer_.segment(candidates[i], candidates[j]);
+        return true;
+      },
+      [&](const Ray* rays, std::size_t count, std::uint8_t* blocked) {
+        tracer_.occluded(rays, count, nullptr, blocked, options_.threads);
+      });
+}
+
+MeshStationVisibility::MeshStationVisibility(const TriangleMesh& mesh, const MeshSamples& samples,
+                                             std::vector<double> target_weight,
+                                             const MeshOcclusionOptions& options,
+                                             const StationLimits& limits, const Progress& progress)
+    : mesh_(checked_mesh(mesh, options)),
+      samples_(samples),
+      options_(options),
+      weight_(checked_weights(std::move(target_weight), samples.size(), "samples")),
+      limits_(limits) {
+  check_samples(mesh, samples);
+  Eigen::Vector3d lo, hi;
+  mesh.bounds(lo, hi);
+  origin_ = 0.5 * (lo + hi);
+  // Every sample lies within one diagonal of every face, so nothing that can
+  // block a shadow ray is farther away than that.
+  reach_ = 2.0 * (hi - lo).norm();
+  epsilon_ = mesh_shadow_epsilon(mesh, options);
+  progress("building octree", 0.0);
+  tree_ = TriangleOctree(pack_triangles(mesh, origin_), options.octree, progress);
+  progress.check_cancel();
+  normals_ = face_normals(mesh);
+  std::vector<Eigen::Vector3f> positions(samples.size());
+  for (std::size_t s = 0; s < samples.size(); ++s) positions[s] = samples.points[s].cast<float>();
+  order_ = coherent_targets(positions, weight_);
+  ordered_.resize(order_.size());
+  for (std::size_t k = 0; k < order_.size(); ++k) {
+    ordered_[k] = {samples.points[order_[k]] - origin_, samples.face[order_[k]]};
+  }
+}
+
+CoverageMatrix MeshStationVisibility::coverage(const std::vector<Eigen::Vector3d>& candidates,
+                                               const Progress& progress) const {
+  check_mesh_candidates(mesh_, candidates);
+  CoverageMatrix matrix(candidates.size(), weight_);
+  fill_rows(
+      matrix, candidates, order_, options_.threads, progress,
+      [&](const Eigen::Vector3d& station, std::size_t k) {
+        return limits_.admits(samples_.points[order_[k]] - station, normals_[ordered_[k].face]);
+      },
+      [&](const Eigen::Vector3d& station, std::size_t k, Ray& ray, PrimitiveId& ignore) {
+        ignore = ordered_[k].face;
+        return mesh_shadow_ray(ordered_[k].local, station - origin_, epsilon_, ray, reach_);
+      },
+      [&](const Ray* rays, std::size_t count, const PrimitiveId* ignore, std::uint8_t* blocked,
+          unsigned threads) { tree_.occluded_batch(rays, count, ignore, blocked, threads); });
+  progress("done", 1.0);
+  return matrix;
+}
+
+std::vector<std::uint8_t> MeshStationVisibility::intervisibility(
+    const std::vector<Eigen::Vector3d>& candidates, const Progress& progress) const {
+  check_mesh_candidates(mesh_, candidates);
+  return candidate_pairs(
+      candidates.size(), progress,
+      [&](std::size_t i, std::size_t j, Ray& ray) {
+        return mesh_shadow_ray(candidates[j] - origin_, candidates[i] - origin_, epsilon_, ray,
+                               reach_);
+      },
+      [&](const Ray* rays, std::size_t count, std::uint8_t* blocked) {
+        tree_.occluded_batch(rays, count, nullptr, blocked, options_.threads);
+      });
+}
+
 CoverageMatrix cloud_station_coverage(const PointCloud& cloud,
                                       const std::vector<Eigen::Vector3d>& candidates,
                                       std::vector<double> target_weight, const ScanOptions& options,
                                       const StationLimits& limits, const Progress& progress) {
-  check_cloud_inputs(cloud, candidates, options);
-  check_weights(target_weight, cloud.size(), "points");
-  const StationLimitTest limit_test(limits);
-  CoverageMatrix matrix(candidates.size(), std::move(target_weight));
-
-  progress("building octree", 0.0);
-  const ScanTracer tracer(cloud, options, progress);
-  progress.check_cancel();
-
-  const std::size_t block = std::min(cloud.size(), kTargetsPerBlock);
-  std::vector<Ray> rays(block);
-  std::vector<std::uint8_t> blocked(block), seen(block);
-  const Eigen::Vector3f no_normal = Eigen::Vector3f::Zero();
-  progress("tracing", 0.0);
-  for (std::size_t c = 0; c < candidates.size(); ++c) {
-    const Eigen::Vector3d& station = candidates[c];
-    for_each_admitted_block(
-        cloud.size(), matrix.target_weight(), progress,
-        [&](std::size_t point) {
-          const Eigen::Vector3f& normal =
-              options.surfels ? options.surfels->surfels[point].normal : no_normal;
-          return limit_test.admits(cloud.positions[point].cast<double>() - station, normal);
-        },
-        [&](const std::uint32_t* points, std::size_t count) {
-          tracer.trace(station, points, count, seen.data(), rays.data(), blocked.data());
-          for (std::size_t k = 0; k < count; ++k) {
-            if (seen[k]) matrix.set_seen(c, points[k]);
-          }
-        });
-    progress("tracing", static_cast<double>(c + 1) / static_cast<double>(candidates.size()));
-  }
-  progress("done", 1.0);
-  return matrix;
+  check_cloud_candidates(checked_cloud(cloud, options), candidates, options);
+  return CloudStationVisibility(cloud, std::move(target_weight), options, limits, progress)
+      .coverage(candidates, progress);
 }
 
 CoverageMatrix mesh_station_coverage(const TriangleMesh& mesh, const MeshSamples& samples,
@@ -278,87 +441,29 @@ CoverageMatrix mesh_station_coverage(const TriangleMesh& mesh, const MeshSamples
                                      std::vector<double> target_weight,
                                      const MeshOcclusionOptions& options,
                                      const StationLimits& limits, const Progress& progress) {
-  const MeshFrame frame = mesh_frame(mesh, candidates, options);
-  check_samples(mesh, samples);
-  check_weights(target_weight, samples.size(), "samples");
-  const StationLimitTest limit_test(limits);
-  CoverageMatrix matrix(candidates.size(), std::move(target_weight));
-  const std::vector<Eigen::Vector3f> normals = face_normals(mesh);
-
-  progress("building octree", 0.0);
-  const TriangleOctree tree(pack_triangles(mesh, frame.origin), options.octree, progress);
-  progress.check_cancel();
-
-  const std::size_t block = std::min(samples.size(), kTargetsPerBlock);
-  std::vector<Ray> rays(block);
-  std::vector<PrimitiveId> ignore(block);
-  std::vector<std::uint32_t> traced(block);
-  std::vector<std::uint8_t> blocked(block);
-  progress("tracing", 0.0);
-  for (std::size_t c = 0; c < candidates.size(); ++c) {
-    const Eigen::Vector3d& station = candidates[c];
-    const Eigen::Vector3d local_station = station - frame.origin;
-    for_each_admitted_block(
-        samples.size(), matrix.target_weight(), progress,
-        [&](std::size_t s) {
-          return limit_test.admits(samples.points[s] - station, normals[samples.face[s]]);
-        },
-        [&](const std::uint32_t* targets, std::size_t count) {
-          std::size_t ray_count = 0;
-          for (std::size_t k = 0; k < count; ++k) {
-            const std::uint32_t s = targets[k];
-            if (!mesh_shadow_ray(samples.points[s] - frame.origin, local_station, frame.epsilon,
-                                 rays[ray_count], frame.reach)) {
-              matrix.set_seen(c, s);  // too close to need a ray
-              continue;
-            }
-            ignore[ray_count] = samples.face[s];
-            traced[ray_count++] = s;
-          }
-          tree.occluded_batch(rays.data(), ray_count, ignore.data(), blocked.data(),
-                              options.threads);
-          for (std::size_t k = 0; k < ray_count; ++k) {
-            if (!blocked[k]) matrix.set_seen(c, traced[k]);
-          }
-        });
-    progress("tracing", static_cast<double>(c + 1) / static_cast<double>(candidates.size()));
-  }
-  progress("done", 1.0);
-  return matrix;
+  check_mesh_candidates(checked_mesh(mesh, options), candidates);
+  return MeshStationVisibility(mesh, samples, std::move(target_weight), options, limits, progress)
+      .coverage(candidates, progress);
 }
 
 std::vector<std::uint8_t> cloud_candidate_intervisibility(
     const PointCloud& cloud, const std::vector<Eigen::Vector3d>& candidates,
     const ScanOptions& options, const Progress& progress) {
-  check_cloud_inputs(cloud, candidates, options);
-  progress("building octree", 0.0);
-  const ScanTracer tracer(cloud, options, progress);
-  return intervisibility(
-      candidates.size(), progress,
-      [&](std::size_t i, std::size_t j, Ray& ray) {
-        ray = tracer.segment(candidates[i], candidates[j]);
-        return true;
-      },
-      [&](const Ray* rays, std::size_t count, std::uint8_t* blocked) {
-        tracer.occluded(rays, count, nullptr, blocked);
-      });
+  check_cloud_candidates(checked_cloud(cloud, options), candidates, options);
+  // Weight 0 everywhere: only the octree is built.
+  return CloudStationVisibility(cloud, std::vector<double>(cloud.size(), 0.0), options, {},
+                                progress)
+      .intervisibility(candidates, progress);
 }
 
 std::vector<std::uint8_t> mesh_candidate_intervisibility(
     const TriangleMesh& mesh, const std::vector<Eigen::Vector3d>& candidates,
     const MeshOcclusionOptions& options, const Progress& progress) {
-  const MeshFrame frame = mesh_frame(mesh, candidates, options);
-  progress("building octree", 0.0);
-  const TriangleOctree tree(pack_triangles(mesh, frame.origin), options.octree, progress);
-  return intervisibility(
-      candidates.size(), progress,
-      [&](std::size_t i, std::size_t j, Ray& ray) {
-        return mesh_shadow_ray(candidates[j] - frame.origin, candidates[i] - frame.origin,
-                               frame.epsilon, ray, frame.reach);
-      },
-      [&](const Ray* rays, std::size_t count, std::uint8_t* blocked) {
-        tree.occluded_batch(rays, count, nullptr, blocked, options.threads);
-      });
+  check_mesh_candidates(checked_mesh(mesh, options), candidates);
+  // No samples: only the octree is built.
+  const MeshSamples none{{}, {}, {0}};
+  return MeshStationVisibility(mesh, none, {}, options, {}, progress)
+      .intervisibility(candidates, progress);
 }
 
 }  // namespace occlusion

@@ -53,6 +53,12 @@ std::vector<double> ones(std::size_t n) {
   return std::vector<double>(n, 1.0);
 }
 
+std::vector<bool> row(const CoverageMatrix& matrix, std::size_t c) {
+  std::vector<bool> bits(matrix.targets());
+  for (std::size_t t = 0; t < bits.size(); ++t) bits[t] = matrix.seen(c, t);
+  return bits;
+}
+
 TEST(StationVisibility, CloudRowsAgreeWithTheMeshFromEachCandidate) {
   const SampledRoom& room = sampled_room();
   std::vector<Eigen::Vector3d> candidates = kInside;
@@ -131,6 +137,50 @@ TEST(StationVisibility, CloudRowIsWhatScanSees) {
   EXPECT_EQ(seen, scan.visible_points);
 }
 
+TEST(StationVisibility, SameMatrixWhateverTheThreads) {
+  // One thread fills whole rows, one candidate at a time; with more threads
+  // than a third of the candidates, each candidate's blocks go to all.
+  const SampledRoom& room = sampled_room();
+  const PointCloud& cloud = room.sampled.cloud;
+  const std::vector<Eigen::Vector3d> candidates = {kInside[0], kInside[1], kOutside};
+  ScanOptions options = room.options();
+  options.threads = 1;
+  const CoverageMatrix one =
+      cloud_station_coverage(cloud, candidates, ones(cloud.size()), options, {});
+  options.threads = 2;
+  const CoverageMatrix two =
+      cloud_station_coverage(cloud, candidates, ones(cloud.size()), options, {});
+  for (std::size_t c = 0; c < candidates.size(); ++c) {
+    EXPECT_EQ(row(one, c), row(two, c)) << "candidate " << c;
+  }
+}
+
+TEST(StationVisibility, OneOctreeAnswersAnyCandidatesLater) {
+  // Built once, asked a row at a time (a viewer dragging a station) or for
+  // some candidates only: the same rows as the whole matrix.
+  const SampledRoom& room = sampled_room();
+  const PointCloud& cloud = room.sampled.cloud;
+  const ScanOptions options = room.options();
+  const CloudStationVisibility visibility(cloud, ones(cloud.size()), options, {});
+  const CoverageMatrix all = visibility.coverage(kInside);
+  for (std::size_t c = 0; c < kInside.size(); ++c) {
+    EXPECT_EQ(row(visibility.coverage({kInside[c]}), 0), row(all, c)) << "candidate " << c;
+  }
+  const CoverageMatrix some = visibility.coverage({kInside[3], kInside[1]});
+  EXPECT_EQ(row(some, 0), row(all, 3));
+  EXPECT_EQ(row(some, 1), row(all, 1));
+
+  const TriangleMesh& mesh = room.mesh;
+  const MeshSamples samples = sample_mesh(mesh, 20.0, 1);
+  const MeshOcclusionOptions mesh_options;
+  const MeshStationVisibility mesh_visibility(mesh, samples, ones(samples.size()), mesh_options,
+                                              {});
+  const CoverageMatrix mesh_all = mesh_visibility.coverage(kInside);
+  EXPECT_EQ(row(mesh_visibility.coverage({kInside[2]}), 0), row(mesh_all, 2));
+  EXPECT_EQ(mesh_visibility.intervisibility({kInside[2], kInside[3], kOutside}),
+            mesh_candidate_intervisibility(mesh, {kInside[2], kInside[3], kOutside}, mesh_options));
+}
+
 TEST(StationVisibility, ZeroWeightTargetsAreNeverSet) {
   const SampledRoom& room = sampled_room();
   const PointCloud& cloud = room.sampled.cloud;
@@ -172,12 +222,6 @@ ScanOptions small_spheres() {
   ScanOptions options;
   options.point_radius = 0.01;
   return options;
-}
-
-std::vector<bool> row(const CoverageMatrix& matrix, std::size_t c) {
-  std::vector<bool> bits(matrix.targets());
-  for (std::size_t t = 0; t < bits.size(); ++t) bits[t] = matrix.seen(c, t);
-  return bits;
 }
 
 TEST(StationVisibility, MaxRangeKeepsTargetsUpToItsDistance) {

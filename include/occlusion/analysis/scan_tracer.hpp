@@ -24,12 +24,26 @@ class ScanTracer {
   // Builds the octree of options.surfels (discs) or of the cloud's points as
   // spheres of options.point_radius. `cloud` and `options` (and the surfels
   // they point to) must outlive the tracer; the caller has checked them
-  // (scan_cloud's rules). Throws Cancelled on cancel.
+  // (scan_cloud's rules). Reports stage "building octree"; throws Cancelled
+  // on cancel.
   ScanTracer(const PointCloud& cloud, const ScanOptions& options, const Progress& progress = {});
 
-  // The shadow ray from `viewpoint` to point `point` (scan_surfel_ray or
+  // What the rule reads of a point to make its ray: its disc (for spheres,
+  // its position as the centre) and its surface's thickness. A caller that
+  // traces many viewpoints to the same points keeps them in the order it
+  // traces them: read in that order, they stream from memory.
+  struct Target {
+    Surfel surfel;
+    float thickness = 0.0f;
+  };
+  Target target(std::size_t point) const;
+
+  // The shadow ray from `viewpoint` to a point (scan_surfel_ray or
   // scan_shadow_ray).
-  Ray ray(const Eigen::Vector3d& viewpoint, std::size_t point) const;
+  Ray ray(const Eigen::Vector3d& viewpoint, std::size_t point) const {
+    return ray(viewpoint, target(point));
+  }
+  Ray ray(const Eigen::Vector3d& viewpoint, const Target& target) const;
   // The segment between two viewpoints, without what the rule ignores near a
   // viewpoint at both ends (the empty interval when they are closer than that).
   Ray segment(const Eigen::Vector3d& from, const Eigen::Vector3d& to) const;
@@ -43,9 +57,10 @@ class ScanTracer {
   void trace(const Eigen::Vector3d& viewpoint, const std::uint32_t* points, std::size_t count,
              std::uint8_t* seen, Ray* rays, std::uint8_t* blocked) const;
   // The same for rays made by the caller, ignoring ignore[k] (a point's own
-  // primitive, or kNoPrimitive): blocked[k] = 1 if something lies on ray k.
+  // primitive, or kNoPrimitive; ignore may be null): blocked[k] = 1 if
+  // something lies on ray k. On `threads` threads (0 = all cores).
   void occluded(const Ray* rays, std::size_t count, const PrimitiveId* ignore,
-                std::uint8_t* blocked) const;
+                std::uint8_t* blocked, unsigned threads) const;
 
   const OctreeStats& stats() const;
   const PointCloud& cloud() const { return cloud_; }

@@ -14,9 +14,11 @@
 #include "occlusion/analysis/mesh_occlusion.hpp"
 #include "occlusion/analysis/mesh_sampling.hpp"
 #include "occlusion/analysis/scan.hpp"
+#include "occlusion/analysis/scan_tracer.hpp"
 #include "occlusion/core/mesh.hpp"
 #include "occlusion/core/point_cloud.hpp"
 #include "occlusion/core/progress.hpp"
+#include "occlusion/core/triangle_octree.hpp"
 
 namespace occlusion {
 
@@ -80,6 +82,68 @@ CoverageMatrix mesh_station_coverage(const TriangleMesh& mesh, const MeshSamples
                                      std::vector<double> target_weight,
                                      const MeshOcclusionOptions& options,
                                      const StationLimits& limits, const Progress& progress = {});
+
+// What cloud_station_coverage builds once, kept for many questions: the
+// octree, the points worth tracing in the order they are traced, and the
+// limits; then the rows of any candidates when asked (a selection that needs
+// only some rows, a viewer asking what a station dragged to a new place
+// sees). cloud_station_coverage is one of these asked once. `cloud`,
+// `options` and the surfels must outlive it. Same errors: the cloud's and the
+// weights' when built, the candidates' when asked.
+class CloudStationVisibility {
+ public:
+  CloudStationVisibility(const PointCloud& cloud, std::vector<double> target_weight,
+                         const ScanOptions& options, const StationLimits& limits,
+                         const Progress& progress = {});
+  // Row c: what candidates[c] sees. Any thread count (options.threads): one
+  // candidate's blocks go to all threads, many candidates spread over them.
+  CoverageMatrix coverage(const std::vector<Eigen::Vector3d>& candidates,
+                          const Progress& progress = {}) const;
+  // As cloud_candidate_intervisibility, on this octree.
+  std::vector<std::uint8_t> intervisibility(const std::vector<Eigen::Vector3d>& candidates,
+                                            const Progress& progress = {}) const;
+
+ private:
+  const PointCloud& cloud_;
+  const ScanOptions& options_;
+  std::vector<double> weight_;
+  StationLimitTest limits_;
+  ScanTracer tracer_;
+  std::vector<std::uint32_t> order_;         // the points with weight, in tracing order
+  std::vector<ScanTracer::Target> targets_;  // targets_[k]: point order_[k]
+};
+
+// The same for a mesh's samples. `mesh`, `samples` and `options` must outlive it.
+class MeshStationVisibility {
+ public:
+  MeshStationVisibility(const TriangleMesh& mesh, const MeshSamples& samples,
+                        std::vector<double> target_weight, const MeshOcclusionOptions& options,
+                        const StationLimits& limits, const Progress& progress = {});
+  CoverageMatrix coverage(const std::vector<Eigen::Vector3d>& candidates,
+                          const Progress& progress = {}) const;
+  std::vector<std::uint8_t> intervisibility(const std::vector<Eigen::Vector3d>& candidates,
+                                            const Progress& progress = {}) const;
+
+ private:
+  // A sample as its ray is made: relative to origin_, with its face.
+  struct Sample {
+    Eigen::Vector3d local;
+    std::uint32_t face = 0;
+  };
+  const TriangleMesh& mesh_;
+  const MeshSamples& samples_;
+  const MeshOcclusionOptions& options_;
+  std::vector<double> weight_;
+  StationLimitTest limits_;
+  // -moc's frame (compute_mesh_occlusion): rays are traced around the centre
+  // of the mesh's bounds, and those longer than reach_ cut from the sample's end.
+  Eigen::Vector3d origin_;
+  double reach_ = 0.0, epsilon_ = 0.0;
+  TriangleOctree tree_;
+  std::vector<Eigen::Vector3f> normals_;  // per face; zero for a degenerate one
+  std::vector<std::uint32_t> order_;
+  std::vector<Sample> ordered_;
+};
 
 // Which candidates see each other (registration needs overlap): n x n,
 // row-major, symmetric, 1 on the diagonal. Two candidates see each other when
