@@ -179,6 +179,13 @@ int run(const Options& o) {
         });
       });
 
+  // A station moved in the viewer: one row on an octree built once.
+  const CloudStationVisibility built(cloud, weight, scan, {});
+  Samples one_row;
+  for (std::size_t c = 0; c < std::min<std::size_t>(candidates.size(), 20); ++c) {
+    one_row.seconds.push_back(timed([&] { built.coverage({candidates[c]}); }));
+  }
+
   std::size_t same = 0, seen_ours = 0, seen_theirs = 0;
   for (std::size_t c = 0; c < candidates.size(); ++c) {
     for (std::size_t i = 0; i < cloud.size(); ++i) {
@@ -197,6 +204,8 @@ int run(const Options& o) {
   std::printf("matrix   %s candidates (floor grid at %.2f m) x %s points = %s shadow rays\n",
               grouped(candidates.size()).c_str(), o.height, grouped(cloud.size()).c_str(),
               grouped(rays).c_str());
+  std::printf("one row  %.1f / %.1f ms (min / median of %zu candidates, octree built once)\n",
+              1e3 * one_row.min(), 1e3 * one_row.median(), one_row.seconds.size());
   if (!o.embree) {
     std::printf("seen     ours %.4f of all pairs\n",
                 static_cast<double>(seen_ours) / static_cast<double>(rays));
