@@ -109,7 +109,9 @@ TEST_F(LiveStation, TheWallHidesTheOtherRoomAndTheStationSeesItsOwn) {
   ASSERT_EQ(mirrored.size(), cloud_->size());
   for (std::size_t i = 0; i < mirrored.size(); ++i) {
     const float x = cloud_->positions[i].x();
-    if (x < 3.9f) EXPECT_EQ(mirrored[i], 0u) << "point " << i;
+    if (x < 3.9f) {
+      EXPECT_EQ(mirrored[i], 0u) << "point " << i;
+    }
   }
 }
 
