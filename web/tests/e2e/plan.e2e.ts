@@ -157,6 +157,9 @@ describe("scan planning (e2e)", () => {
     await screenshot(page, "plan-live-station");
 
     // A burst of positions: traced latest-first, ending where the marker ends.
+    await expect
+      .poll(() => page.evaluate(() => (window as any).__occlusion.app.plan.live.busy))
+      .toBe(false);
     const before = sent.filter((r) => r.command === "station_view").length;
     await page.evaluate(() => {
       const markers = (window as any).__occlusion.app.ctx.markers;
