@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "analysis_support.hpp"
+#include "occlusion/analysis/scan_tracer.hpp"
 #include "occlusion/core/parallel.hpp"
 #include "occlusion/core/sphere_octree.hpp"
 #include "occlusion/core/surfel_octree.hpp"
@@ -100,62 +101,110 @@ Ray scan_shadow_ray(const Eigen::Vector3d& viewpoint, const Eigen::Vector3f& poi
   return shortened_segment(viewpoint, direction, direction.norm(), 2.0 * radius, tolerance);
 }
 
-namespace {
+ScanTracer::ScanTracer(const PointCloud& cloud, const ScanOptions& options,
+                       const Progress& progress)
+    : cloud_(cloud), options_(options) {
+  if (options.surfels) {
+    near_viewpoint_ = 2.0 * options.surfels->stats.radius_median;
+    discs_.emplace(options.surfels->surfels, options.octree, progress);
+  } else {
+    // Any sphere holding the viewpoint ends within 2 r of it (scan_shadow_ray).
+    near_viewpoint_ = 2.0 * options.point_radius;
+    spheres_.emplace(make_spheres(cloud.positions, static_cast<float>(options.point_radius)),
+                     options.octree, progress);
+  }
+}
 
-// Traces every (viewpoint, point) ray that make_ray(viewpoint, point) gives.
-template <class Shape, class MakeRay>
-ScanResult trace(const Octree<Shape>& tree, double build_seconds, const PointCloud& cloud,
-                 const std::vector<Eigen::Vector3d>& viewpoints, const ScanOptions& options,
-                 const Progress& progress, const MakeRay& make_ray) {
-  ScanResult result;
-  result.build_seconds = build_seconds;
-  result.octree = tree.stats();
-  progress.check_cancel();
+Ray ScanTracer::ray(const Eigen::Vector3d& viewpoint, std::size_t point) const {
+  if (discs_) {
+    const SurfelEstimate& model = *options_.surfels;
+    return scan_surfel_ray(viewpoint, model.surfels[point], model.thickness[point], near_viewpoint_,
+                           options_.self_tolerance);
+  }
+  return scan_shadow_ray(viewpoint, cloud_.positions[point], options_);
+}
+
+Ray ScanTracer::segment(const Eigen::Vector3d& from, const Eigen::Vector3d& to) const {
+  const Eigen::Vector3d direction = to - from;
+  return shortened_segment(from, direction, direction.norm(), near_viewpoint_, near_viewpoint_);
+}
+
+void ScanTracer::occluded(const Ray* rays, std::size_t count, const PrimitiveId* ignore,
+                          std::uint8_t* blocked) const {
+  if (discs_) {
+    discs_->occluded_batch(rays, count, ignore, blocked, options_.threads);
+  } else {
+    spheres_->occluded_batch(rays, count, ignore, blocked, options_.threads);
+  }
+}
+
+void ScanTracer::trace(const Eigen::Vector3d& viewpoint, const std::uint32_t* points,
+                       std::size_t count, std::uint8_t* seen, Ray* rays,
+                       std::uint8_t* blocked) const {
+  parallel_for(count, kRayGrain, options_.threads, [&](std::size_t b, std::size_t e) {
+    for (std::size_t k = b; k < e; ++k) rays[k] = ray(viewpoint, points[k]);
+  });
+  static_assert(sizeof(PrimitiveId) == sizeof(std::uint32_t), "point indices are primitive ids");
+  occluded(rays, count, points, blocked);
+  for (std::size_t k = 0; k < count; ++k) seen[k] = blocked[k] ? 0 : 1;
+}
+
+const OctreeStats& ScanTracer::stats() const {
+  return discs_ ? discs_->stats() : spheres_->stats();
+}
+
+ScanResult scan_cloud(const PointCloud& cloud, const std::vector<Eigen::Vector3d>& viewpoints,
+                      const ScanOptions& options, const Progress& progress) {
+  check_inputs(cloud, viewpoints, options);
 
   const auto start = Clock::now();
+  progress("building octree", 0.0);
+  const ScanTracer tracer(cloud, options, progress);
+  ScanResult result;
+  result.build_seconds = seconds_since(start);
+  result.octree = tracer.stats();
+  progress.check_cancel();
+
+  const auto trace_start = Clock::now();
   const std::size_t points = cloud.size();
   const std::size_t ray_count = points * viewpoints.size();
   result.visible_count.assign(points, 0);
   result.seen_by_viewpoint.assign(viewpoints.size(), 0);
-  std::vector<Ray> rays;
-  std::vector<PrimitiveId> ignore;
-  std::vector<std::uint8_t> blocked, outside;
+  const std::size_t block_capacity = std::min(points, kRaysPerBlock);
+  std::vector<Ray> rays(block_capacity);
+  std::vector<std::uint32_t> inside(block_capacity);
+  std::vector<std::uint8_t> blocked(block_capacity), seen(block_capacity);
   progress("tracing", 0.0);
-  // Viewpoint-major order: neighbouring rays go to neighbouring points, which
-  // keeps a thread's traversals in the same part of the tree.
-  for (std::size_t block = 0; block < ray_count; block += kRaysPerBlock) {
-    const std::size_t block_size = std::min(ray_count, block + kRaysPerBlock) - block;
-    rays.resize(block_size);
-    ignore.resize(block_size);
-    blocked.resize(block_size);
-    outside.assign(block_size, 0);
-    parallel_for(block_size, kRayGrain, options.threads, [&](std::size_t b, std::size_t e) {
-      for (std::size_t i = b; i < e; ++i) {
-        const std::size_t r = block + i;
-        const std::size_t point = r % points;
-        const Eigen::Vector3d& viewpoint = viewpoints[r / points];
-        rays[i] = make_ray(viewpoint, point);
-        ignore[i] = static_cast<PrimitiveId>(point);
+  // Viewpoint by viewpoint: a viewpoint's rays share their origin and go to
+  // neighbouring points, which keeps a thread's traversals in the same part
+  // of the tree.
+  std::size_t traced = 0;
+  for (std::size_t v = 0; v < viewpoints.size(); ++v) {
+    const Eigen::Vector3d& viewpoint = viewpoints[v];
+    for (std::size_t first = 0; first < points; first += kRaysPerBlock) {
+      const std::size_t last = std::min(points, first + kRaysPerBlock);
+      // Points outside the station's window are not seen: no ray is traced.
+      std::size_t count = 0;
+      for (std::size_t point = first; point < last; ++point) {
         if (options.field_of_view &&
             !options.field_of_view->contains(cloud.positions[point].cast<double>() - viewpoint)) {
-          outside[i] = 1;
-          rays[i].t_min = 1.0f;  // the empty interval: nothing to trace
-          rays[i].t_max = 0.0f;
+          ++result.outside_view_rays;
+          continue;
         }
+        inside[count++] = static_cast<std::uint32_t>(point);
       }
-    });
-    tree.occluded_batch(rays.data(), block_size, ignore.data(), blocked.data(), options.threads);
-    for (std::size_t i = 0; i < block_size; ++i) {
-      result.outside_view_rays += outside[i];
-      if (blocked[i] || outside[i]) continue;
-      const std::size_t r = block + i;
-      ++result.visible_count[r % points];
-      ++result.seen_by_viewpoint[r / points];
+      tracer.trace(viewpoint, inside.data(), count, seen.data(), rays.data(), blocked.data());
+      for (std::size_t k = 0; k < count; ++k) {
+        if (!seen[k]) continue;
+        ++result.visible_count[inside[k]];
+        ++result.seen_by_viewpoint[v];
+      }
+      traced += last - first;
+      progress.check_cancel();
+      progress("tracing", static_cast<double>(traced) / static_cast<double>(ray_count));
     }
-    progress.check_cancel();
-    progress("tracing", static_cast<double>(block + block_size) / static_cast<double>(ray_count));
   }
-  result.trace_seconds = seconds_since(start);
+  result.trace_seconds = seconds_since(trace_start);
 
   result.visible_points = static_cast<std::size_t>(
       std::count_if(result.visible_count.begin(), result.visible_count.end(),
@@ -164,32 +213,6 @@ ScanResult trace(const Octree<Shape>& tree, double build_seconds, const PointClo
       static_cast<double>(result.visible_points) / static_cast<double>(points);
   progress("done", 1.0);
   return result;
-}
-
-}  // namespace
-
-ScanResult scan_cloud(const PointCloud& cloud, const std::vector<Eigen::Vector3d>& viewpoints,
-                      const ScanOptions& options, const Progress& progress) {
-  check_inputs(cloud, viewpoints, options);
-
-  const auto start = Clock::now();
-  progress("building octree", 0.0);
-  if (options.surfels) {
-    const SurfelEstimate& model = *options.surfels;
-    const double near_viewpoint = 2.0 * model.stats.radius_median;
-    const SurfelOctree tree(model.surfels, options.octree, progress);
-    return trace(tree, seconds_since(start), cloud, viewpoints, options, progress,
-                 [&](const Eigen::Vector3d& viewpoint, std::size_t point) {
-                   return scan_surfel_ray(viewpoint, model.surfels[point], model.thickness[point],
-                                          near_viewpoint, options.self_tolerance);
-                 });
-  }
-  const SphereOctree tree(make_spheres(cloud.positions, static_cast<float>(options.point_radius)),
-                          options.octree, progress);
-  return trace(tree, seconds_since(start), cloud, viewpoints, options, progress,
-               [&](const Eigen::Vector3d& viewpoint, std::size_t point) {
-                 return scan_shadow_ray(viewpoint, cloud.positions[point], options);
-               });
 }
 
 }  // namespace occlusion
