@@ -1,12 +1,13 @@
 #include "occlusion/analysis/station_view.hpp"
 
 #include <algorithm>
+#include <limits>
+#include <numeric>
 #include <stdexcept>
 
 #include "analysis_support.hpp"
 #include "occlusion/core/large_buffer.hpp"
 #include "occlusion/core/parallel.hpp"
-#include "occlusion/core/sphere.hpp"
 
 namespace occlusion {
 
@@ -43,62 +44,37 @@ constexpr const char* kCloudOrigin =
 
 CloudStationView::CloudStationView(const PointCloud& cloud, std::optional<SurfelEstimate> surfels,
                                    const ScanOptions& options, const Progress& progress)
-    : points_(cloud.size()), options_(options), surfels_(std::move(surfels)) {
+    : options_(options), surfels_(std::move(surfels)) {
   options_.surfels = surfels_ ? &*surfels_ : nullptr;
   options_.field_of_view.reset();
   cloud.validate();
   if (cloud.size() == 0) throw std::invalid_argument("station view: the cloud has no points");
+  if (cloud.size() > std::numeric_limits<std::uint32_t>::max()) {
+    throw std::invalid_argument("station view: more points than 32-bit indices hold");
+  }
   analysis_support::check_point_model(cloud, {}, options_.point_radius, options_.surfels,
                                       "station view");
   cloud.bounds(lo_, hi_);
+  radius_ = surfels_ ? surfels_->stats.radius_quantile_10 : options_.point_radius;
+  indices_.resize(cloud.size());
+  std::iota(indices_.begin(), indices_.end(), std::uint32_t{0});
   const auto start = Clock::now();
   progress("building octree", 0.0);
-  if (surfels_) {
-    near_viewpoint_ = 2.0 * surfels_->stats.radius_median;
-    disc_tree_ = std::make_unique<SurfelOctree>(surfels_->surfels, options_.octree, progress);
-  } else {
-    positions_ = cloud.positions;
-    sphere_tree_ = std::make_unique<SphereOctree>(
-        make_spheres(cloud.positions, static_cast<float>(options_.point_radius)), options_.octree,
-        progress);
-  }
+  tracer_ = std::make_unique<ScanTracer>(cloud, options_, progress);
   build_seconds_ = seconds_since(start);
 }
 
-const OctreeStats& CloudStationView::octree() const {
-  return disc_tree_ ? disc_tree_->stats() : sphere_tree_->stats();
-}
-
 CloudStationSight CloudStationView::see(const Eigen::Vector3d& position) const {
-  const double radius =
-      surfels_ ? surfels_->stats.radius_quantile_10 : static_cast<double>(options_.point_radius);
-  check_position(position, lo_, hi_, {radius, "point_radius", kCloudOrigin, "cloud"},
+  check_position(position, lo_, hi_, {radius_, "point_radius", kCloudOrigin, "cloud"},
                  "station view");
   const auto start = Clock::now();
-  LargeVector<Ray> rays(points_);
-  LargeVector<PrimitiveId> ignore(points_);
-  LargeVector<std::uint8_t> blocked(points_);
-  parallel_for(points_, kRayGrain, options_.threads, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i) {
-      rays[i] = surfels_ ? scan_surfel_ray(position, surfels_->surfels[i], surfels_->thickness[i],
-                                           near_viewpoint_, options_.self_tolerance)
-                         : scan_shadow_ray(position, positions_[i], options_);
-      ignore[i] = static_cast<PrimitiveId>(i);
-    }
-  });
-  if (disc_tree_) {
-    disc_tree_->occluded_batch(rays.data(), points_, ignore.data(), blocked.data(),
-                               options_.threads);
-  } else {
-    sphere_tree_->occluded_batch(rays.data(), points_, ignore.data(), blocked.data(),
-                                 options_.threads);
-  }
+  const std::size_t count = indices_.size();
+  LargeVector<Ray> rays(count);
+  LargeVector<std::uint8_t> blocked(count);
   CloudStationSight sight;
-  sight.seen.resize(points_);
-  for (std::size_t i = 0; i < points_; ++i) {
-    sight.seen[i] = blocked[i] ? 0 : 1;
-    sight.seen_points += sight.seen[i];
-  }
+  sight.seen.resize(count);
+  tracer_->trace(position, indices_.data(), count, sight.seen.data(), rays.data(), blocked.data());
+  for (const auto seen : sight.seen) sight.seen_points += seen;
   sight.trace_seconds = seconds_since(start);
   return sight;
 }
@@ -152,8 +128,7 @@ MeshStationSight MeshStationView::see(const Eigen::Vector3d& position) const {
   for (std::size_t f = 0; f < areas_.size(); ++f) {
     std::size_t seen = 0;
     for (std::size_t s = samples_.first[f]; s < samples_.first[f + 1]; ++s) seen += !blocked[s];
-    const double fraction =
-        static_cast<double>(seen) / static_cast<double>(samples_.count_on(f));
+    const double fraction = static_cast<double>(seen) / static_cast<double>(samples_.count_on(f));
     sight.face_seen_fraction[f] = static_cast<float>(fraction);
     sight.visible_area += fraction * areas_[f];
     sight.total_area += areas_[f];

@@ -29,19 +29,21 @@ std::string LiveStation::settings_key(const ScanRequest& q) {
 }
 
 std::string LiveStation::settings_key(const MeshOcclusionRequest& q) {
-  return joined("mesh", q.samples_per_unit_area, q.seed, q.octree_resolution,
-                q.enable_acceleration, q.threads);
+  return joined("mesh", q.samples_per_unit_area, q.seed, q.octree_resolution, q.enable_acceleration,
+                q.threads);
 }
 
-std::shared_ptr<const LiveStation> LiveStation::for_cloud(const PointCloud& cloud,
+std::shared_ptr<const LiveStation> LiveStation::for_cloud(std::shared_ptr<const PointCloud> points,
                                                           const ScanRequest& request,
                                                           const Progress& progress) {
+  const PointCloud& cloud = *points;
   check_keys(scan_keys(), request);
   const bool discs = request.primitive == "disc";
   check_memory_budget(scan_memory(cloud.size(), 1, discs), request.max_memory_mb);
   check_work_budget(scan_work(cloud.size(), 1, request.enable_acceleration), request.max_work);
   std::shared_ptr<LiveStation> station(new LiveStation());
   station->shift_ = cloud.shift;
+  station->points_ = std::move(points);
   job::PointModel model = job::choose_point_model(cloud, job::point_settings(request), "-fscan",
                                                   station->warnings_, progress);
   ScanOptions options;
@@ -51,8 +53,8 @@ std::shared_ptr<const LiveStation> LiveStation::for_cloud(const PointCloud& clou
   options.octree.enable_acceleration = request.enable_acceleration;
   options.threads = request.threads;
   try {
-    station->cloud_ = std::make_unique<CloudStationView>(cloud, std::move(model.surfels), options,
-                                                         progress);
+    station->cloud_ =
+        std::make_unique<CloudStationView>(cloud, std::move(model.surfels), options, progress);
   } catch (const std::invalid_argument& e) {
     throw UsageError(e.what());
   }

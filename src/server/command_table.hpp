@@ -34,9 +34,9 @@ const std::vector<Command>& command_table();
 const Command* find_command(const std::string& name);
 
 // The command groups the table is made of.
-std::vector<Command> file_commands();  // ping, list_files, save_polygon, read_polygons
-std::vector<Command> load_commands();  // load
-std::vector<Command> job_commands();   // mesh_occlusion, cloud_occlusion, ...
+std::vector<Command> file_commands();          // ping, list_files, save_polygon, read_polygons
+std::vector<Command> load_commands();          // load
+std::vector<Command> job_commands();           // mesh_occlusion, cloud_occlusion, ...
 std::vector<Command> live_station_commands();  // station_view
 
 }  // namespace occlusion::server

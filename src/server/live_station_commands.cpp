@@ -29,11 +29,10 @@ namespace {
 
 // The keys of the job whose rule the station follows that shape its model.
 const std::vector<std::string> kCloudModelKeys = {
-    "primitive",         "point_radius",        "disc_coverage", "normal_neighbours",
-    "self_tolerance",    "octree_resolution",   "enable_acceleration", "threads"};
-const std::vector<std::string> kMeshModelKeys = {"samples_per_unit_area", "seed",
-                                                 "octree_resolution", "enable_acceleration",
-                                                 "threads"};
+    "primitive",      "point_radius",      "disc_coverage",       "normal_neighbours",
+    "self_tolerance", "octree_resolution", "enable_acceleration", "threads"};
+const std::vector<std::string> kMeshModelKeys = {
+    "samples_per_unit_area", "seed", "octree_resolution", "enable_acceleration", "threads"};
 const std::vector<std::string> kOwnKeys = {"path", "skip_bad_lines", "position"};
 
 // The model keys of `params` as the job `job_name` reads them: the same checks,
@@ -77,7 +76,7 @@ Json::Value station_view(CommandContext& context) {
     const ScanRequest request = model_request(context, kCloudModelKeys, "scan", scan_keys());
     station = scene.live_station.get(
         LiveStation::settings_key(request),
-        [&] { return LiveStation::for_cloud(*scene.cloud, request, context.progress()); }, built);
+        [&] { return LiveStation::for_cloud(scene.cloud, request, context.progress()); }, built);
   } else if (scene.mesh) {
     const MeshOcclusionRequest request =
         model_request(context, kMeshModelKeys, "mesh_occlusion", mesh_occlusion_keys());

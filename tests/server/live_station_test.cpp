@@ -135,8 +135,7 @@ TEST_F(LiveStation, MeshFacesAsMeshOcclusionFromOneViewpoint) {
                                  "samples_per_unit_area": 20, "seed": 3})");
   ASSERT_TRUE(live.ok()) << live.final;
   const Reply job = client_->request(
-      6, "mesh_occlusion",
-      params(R"({"path": "sample_room.obj", "viewpoints": [[1, 1, 1.2]],
+      6, "mesh_occlusion", params(R"({"path": "sample_room.obj", "viewpoints": [[1, 1, 1.2]],
                  "samples_per_unit_area": 20, "seed": 3, "out": ""})"));
   ASSERT_TRUE(job.ok()) << job.final;
   const auto live_faces = frame_values<float>(*find_frame(live, "face_visible_fraction"));
@@ -158,9 +157,9 @@ TEST_F(LiveStation, RefusesWhatItCannotTrace) {
                         "samples_per_unit_area": 5})")
                 .error_code(),
             "invalid_request");
-  EXPECT_EQ(view(11, R"({"path": "two_rooms.ply", "position": [1, 1, 1], "pattern": 2})")
-                .error_code(),
-            "invalid_request");
+  EXPECT_EQ(
+      view(11, R"({"path": "two_rooms.ply", "position": [1, 1, 1], "pattern": 2})").error_code(),
+      "invalid_request");
   const Reply range =
       view(12, R"({"path": "two_rooms.ply", "position": [1, 1, 1], "disc_coverage": 2})");
   EXPECT_EQ(range.error_code(), "invalid_request") << range.final;

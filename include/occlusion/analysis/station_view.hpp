@@ -2,7 +2,7 @@
 // What one scanner station sees, for a station that moves: the point model
 // (discs or spheres) or the mesh and its octree are built once, and each new
 // position traces one ray per point (or per surface sample). The rules are
-// -fscan's for clouds (scan.hpp: scan_surfel_ray, scan_shadow_ray) and -moc's
+// -fscan's for clouds (scan.hpp, through its ScanTracer) and -moc's
 // for meshes (mesh_occlusion.hpp: mesh_shadow_ray, the sample's own face
 // ignored), so a position answers what `scan` or `mesh_occlusion` with that
 // one viewpoint would, without their build. The viewer's live station (a
@@ -19,13 +19,12 @@
 #include "occlusion/analysis/mesh_occlusion.hpp"
 #include "occlusion/analysis/mesh_sampling.hpp"
 #include "occlusion/analysis/scan.hpp"
+#include "occlusion/analysis/scan_tracer.hpp"
 #include "occlusion/analysis/surfel_estimation.hpp"
 #include "occlusion/core/mesh.hpp"
 #include "occlusion/core/octree.hpp"
 #include "occlusion/core/point_cloud.hpp"
 #include "occlusion/core/progress.hpp"
-#include "occlusion/core/sphere_octree.hpp"
-#include "occlusion/core/surfel_octree.hpp"
 #include "occlusion/core/triangle_octree.hpp"
 
 namespace occlusion {
@@ -39,30 +38,30 @@ struct CloudStationSight {
 class CloudStationView {
  public:
   // `surfels`: the disc model of `cloud` (kept by the view), or none for
-  // spheres of options.point_radius. options.surfels and
-  // options.field_of_view are ignored: the station is a new, full-dome one.
-  // Throws std::invalid_argument as scan_cloud does; Cancelled on cancel.
+  // spheres of options.point_radius. `cloud` must outlive the view.
+  // options.surfels and options.field_of_view are ignored: the station is a
+  // new one that turns all the way round. Throws std::invalid_argument as
+  // scan_cloud does; Cancelled on cancel.
   CloudStationView(const PointCloud& cloud, std::optional<SurfelEstimate> surfels,
                    const ScanOptions& options, const Progress& progress = {});
+  CloudStationView(const CloudStationView&) = delete;  // the tracer points into it
+  CloudStationView& operator=(const CloudStationView&) = delete;
 
   // `position` in the cloud's local frame. std::invalid_argument for a
   // position that is not finite or too far for float (scan_cloud's checks).
   CloudStationSight see(const Eigen::Vector3d& position) const;
 
-  std::size_t size() const { return points_; }
-  const OctreeStats& octree() const;
+  std::size_t size() const { return indices_.size(); }
+  const OctreeStats& octree() const { return tracer_->stats(); }
   double build_seconds() const { return build_seconds_; }
-  const std::optional<SurfelEstimate>& surfels() const { return surfels_; }
 
  private:
-  std::size_t points_ = 0;
   ScanOptions options_;
   std::optional<SurfelEstimate> surfels_;
-  std::vector<Eigen::Vector3f> positions_;  // spheres' centres (the rays' targets)
-  Eigen::Vector3f lo_, hi_;                 // the cloud's box, for the precision check
-  double near_viewpoint_ = 0.0;             // discs: 2 x the median radius (scan.hpp)
-  std::unique_ptr<SurfelOctree> disc_tree_;
-  std::unique_ptr<SphereOctree> sphere_tree_;
+  std::vector<std::uint32_t> indices_;  // 0, 1, ..., n - 1: every point is a target
+  Eigen::Vector3f lo_, hi_;             // the cloud's box, for the precision check
+  double radius_ = 0.0;                 // the length rays must resolve
+  std::unique_ptr<ScanTracer> tracer_;
   double build_seconds_ = 0.0;
 };
 

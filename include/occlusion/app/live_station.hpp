@@ -25,7 +25,7 @@
 namespace occlusion {
 
 struct LiveStationSight {
-  Json::Value json;                // position, counts, fraction, trace time
+  Json::Value json;                 // position, counts, fraction, trace time
   std::vector<std::uint16_t> seen;  // clouds: per point 1 (seen) or 0, as -fscan's visible_count
   std::vector<float> face_seen_fraction;  // meshes: per face
 };
@@ -37,7 +37,8 @@ class LiveStation {
   // its viewpoints, outputs and station filter are not used. UsageError when
   // the model or one trace would exceed max_memory_mb / max_work (the
   // request's, as the job checks them).
-  static std::shared_ptr<const LiveStation> for_cloud(const PointCloud& cloud,
+  // The station keeps `cloud` (its tracer refers to it).
+  static std::shared_ptr<const LiveStation> for_cloud(std::shared_ptr<const PointCloud> cloud,
                                                       const ScanRequest& request,
                                                       const Progress& progress = {});
   // The samples and octree from samples_per_unit_area, seed and the octree keys.
@@ -62,6 +63,7 @@ class LiveStation {
   LiveStation() = default;
 
   Eigen::Vector3d shift_ = Eigen::Vector3d::Zero();
+  std::shared_ptr<const PointCloud> points_;
   std::unique_ptr<CloudStationView> cloud_;
   std::unique_ptr<MeshStationView> mesh_;
   Json::Value model_;
