@@ -135,9 +135,15 @@ describe("scan planning (e2e)", () => {
   });
 
   test("the live station's visible count follows it from room to room", async () => {
+    await page.locator("[data-testid=tab-plan]").click();
     await page.locator("[data-testid=plan-live]").click();
+    // The live station is the selected marker (a planned station, or the first viewpoint).
+    const station = await page.evaluate(
+      () => (window as any).__occlusion.app.ctx.markers.selection as string,
+    );
+    expect(station).toBeTruthy();
     await expect.poll(liveCount, { timeout: 60_000 }).toBeGreaterThan(0);
-    await drag("station1", [2, 2, 1.5]);
+    await drag(station, [2, 2, 1.5]);
     await expect
       .poll(() => page.evaluate(() => (window as any).__occlusion.app.plan.lastLive?.visible), {
         timeout: 30_000,
@@ -147,7 +153,7 @@ describe("scan planning (e2e)", () => {
       .poll(() => page.evaluate(() => (window as any).__occlusion.app.plan.live.busy))
       .toBe(false);
     const inA = await liveCount();
-    await drag("station1", [7, 2, 1.5]);
+    await drag(station, [7, 2, 1.5]);
     await expect.poll(liveCount, { timeout: 30_000 }).not.toBe(inA);
     const inB = await liveCount();
     // Room B is larger: more of the cloud is in sight from it.
@@ -161,14 +167,14 @@ describe("scan planning (e2e)", () => {
       .poll(() => page.evaluate(() => (window as any).__occlusion.app.plan.live.busy))
       .toBe(false);
     const before = sent.filter((r) => r.command === "station_view").length;
-    await page.evaluate(() => {
+    await page.evaluate((name) => {
       const markers = (window as any).__occlusion.app.ctx.markers;
-      markers.select("station1");
+      markers.select(name);
       for (let k = 0; k <= 20; ++k) {
-        markers.setPosition("station1", k < 20 ? [6 + 0.05 * k, 2, 1.5] : [2, 2, 1.5]);
+        markers.setPosition(name, k < 20 ? [6 + 0.05 * k, 2, 1.5] : [2, 2, 1.5]);
         markers.gizmo.dispatchEvent({ type: "objectChange" });
       }
-    });
+    }, station);
     await expect.poll(liveCount, { timeout: 30_000 }).toBe(inA);
     await expect
       .poll(() => page.evaluate(() => (window as any).__occlusion.app.plan.live.busy))
