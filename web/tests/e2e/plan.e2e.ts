@@ -84,9 +84,9 @@ describe("scan planning (e2e)", () => {
     browser = await launchBrowser();
     ({ page, problems, sent } = await openPage(browser, `${server.url}/?scene=two_rooms.ply`));
     await page.locator("[data-testid=connection][data-state=online]").waitFor();
-    await expect
-      .poll(() => page.locator("[data-testid=status-scene]").textContent(), { timeout: 30_000 })
-      .toContain("two_rooms.ply");
+    await page
+      .locator("[data-testid=status-scene]", { hasText: "two_rooms.ply" })
+      .waitFor({ timeout: 30_000 });
   });
 
   afterAll(async () => {
