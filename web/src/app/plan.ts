@@ -69,6 +69,10 @@ export class Plan {
       notices.info("Load a scene first (Files, on the left).");
       return;
     }
+    if (!this.ctx.client.available("plan")) {
+      notices.info("This server build cannot plan stations yet (no `plan` job in its hello).");
+      return;
+    }
     let params: Record<string, unknown>;
     try {
       params = planJobParams(this.panel.fields(), this.panel.declarations);
@@ -151,9 +155,13 @@ export class Plan {
       return;
     }
     const { markers, notices } = this.ctx;
-    if (this.ctx.view.info === null) {
+    if (this.ctx.view.info === null || !this.ctx.client.available("station_view")) {
       this.liveOn = false;
-      notices.info("Load a scene first (Files, on the left).");
+      notices.info(
+        this.ctx.view.info === null
+          ? "Load a scene first (Files, on the left)."
+          : "This server build has no live station (station_view).",
+      );
       return;
     }
     if (markers.selection === null) {

@@ -130,6 +130,7 @@ export class ViewpointMarkers {
     const marker = this.markers.get(name);
     if (!marker) return;
     if (this.selected === name) this.deselect();
+    this.setBadge(name, "", "");
     marker.object.removeFromParent();
     marker.sphere.geometry.dispose();
     marker.sphere.material.dispose();
