@@ -56,4 +56,15 @@ double CoverageMatrix::gain(std::size_t candidate,
   return sum;
 }
 
+double CoverageMatrix::weight_of(const std::vector<std::uint64_t>& covered) const {
+  if (covered.size() != words_per_row_) {
+    throw std::invalid_argument("coverage matrix: the covered set has the wrong size");
+  }
+  double sum = 0.0;
+  for (std::size_t word = 0; word < words_per_row_; ++word) {
+    if (covered[word] != 0) sum += weight_of_bits(covered[word], word * 64, target_weight_);
+  }
+  return sum;
+}
+
 }  // namespace occlusion

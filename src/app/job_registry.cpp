@@ -6,6 +6,7 @@
 #include "occlusion/app/evaluate_job.hpp"
 #include "occlusion/app/extract_polygons_job.hpp"
 #include "occlusion/app/mesh_occlusion_job.hpp"
+#include "occlusion/app/plan_job.hpp"
 #include "occlusion/app/reconstruct_job.hpp"
 #include "occlusion/app/region_growing_job.hpp"
 #include "occlusion/app/scan_job.hpp"
@@ -142,6 +143,27 @@ std::vector<JobInfo> make_jobs() {
                     {},
                     {}},
             &extract_polygons_keys, &run_extract_polygons),
+      entry(
+          JobInfo{"plan",
+                  {"plan"},
+                  "plan",
+                  "plan",
+                  "path",
+                  "SCENE [options]",
+                  "where to put scanner stations: the best K, or the fewest for a coverage",
+                  "Scan planning. Candidate stations stand on a grid over the floor (spacing, at\n"
+                  "height), where nothing is nearer than clearance and they are neither inside a\n"
+                  "solid nor outside the scene (or at the positions of a candidates file). What\n"
+                  "each sees is traced as -fscan sees a cloud's points (discs by default) or as\n"
+                  "-moc sees a mesh's samples, weighted by area, within the scanner's limits.\n"
+                  "Lazy greedy then picks the best K stations (stations; within 1 - 1/e of the\n"
+                  "best K) or the fewest that cover target_coverage (default 0.99), and an\n"
+                  "improvement pass drops, merges and swaps stations while the target holds.\n"
+                  "A cloud's own stations (E57 scans) count as placed. The report says what is\n"
+                  "guaranteed; docs/plan.md has the details.",
+                  {},
+                  {}},
+          &plan_keys, &run_plan),
       entry(
           JobInfo{"study",
                   {"study"},

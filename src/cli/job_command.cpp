@@ -35,6 +35,7 @@ const std::map<std::string, JobFace>& job_faces() {
       {"evaluate", {&print_evaluate, nullptr, true}},
       {"extract_polygons", {&print_extract_polygons}},
       {"study", {&print_study, &study_exit_status}},
+      {"plan", {&print_plan}},
   };
   return table;
 }

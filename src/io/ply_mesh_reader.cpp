@@ -2,11 +2,13 @@
 // body walker (ply_body.hpp), groups from a face `group_id` property.
 
 #include <cmath>
+#include <fstream>
 #include <limits>
 #include <map>
 #include <string>
 #include <vector>
 
+#include "file_names.hpp"
 #include "mesh_checks.hpp"
 #include "occlusion/io/file_bytes.hpp"
 #include "occlusion/io/input_error.hpp"
@@ -194,6 +196,23 @@ TriangleMesh read_ply_mesh(const std::string& path, MeshReadReport* report) {
   const std::string bytes = read_file_bytes(path);
   MeshReadReport local;
   return PlyMeshReader(bytes, path, report != nullptr ? *report : local).run();
+}
+
+bool holds_mesh(const std::string& path) {
+  if (!detail::has_suffix(path, ".ply")) return is_mesh_file(path);
+  // A header longer than this is not one a person or a tool writes.
+  constexpr std::size_t kHeaderBytes = 1 << 20;
+  std::ifstream in(path, std::ios::binary);
+  std::string bytes(kHeaderBytes, '\0');
+  in.read(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  bytes.resize(static_cast<std::size_t>(in.gcount()));
+  try {
+    const PlyHeader header = detail::parse_header(bytes, path);
+    const std::size_t face = find_element(header, "face");
+    return face != kNone && header.elements[face].count > 0;
+  } catch (const InputError&) {
+    return false;
+  }
 }
 
 }  // namespace occlusion

@@ -28,6 +28,7 @@
 #include "occlusion/app/key.hpp"
 #include "occlusion/app/key_sources.hpp"
 #include "occlusion/app/mesh_occlusion_job.hpp"
+#include "occlusion/app/plan_job.hpp"
 #include "occlusion/app/reconstruct_job.hpp"
 #include "occlusion/app/region_growing_job.hpp"
 #include "occlusion/app/scan_job.hpp"
@@ -189,6 +190,44 @@ JobResult scan(const py::handle& source, const py::object& labels, const py::obj
   return result;
 }
 
+// A scene given as a path, (vertices, faces), points (N, 3) or a Cloud.
+JobResult plan(const py::handle& source, const py::object& labels, const py::object& class_names,
+               const py::object& progress, const py::kwargs& keys) {
+  const std::string path = source_path(source);
+  PlanRequest request = request_from(plan_keys(), "plan", keys, path);
+  PythonProgress watch(progress);
+  PlanReport report;
+  if (!path.empty()) {
+    report = watch.run([&](const Progress& p) { return run_plan(request, p); });
+  } else if (py::isinstance<py::tuple>(source)) {
+    const py::tuple pair = py::reinterpret_borrow<py::object>(source).cast<py::tuple>();
+    if (pair.size() != 2)
+      throw py::value_error("source: a path, (vertices, faces), points or a Cloud");
+    const TriangleMesh mesh = mesh_from_arrays(pair[0], pair[1], py::none(), py::none());
+    request.path = "<arrays>";
+    report = watch.run([&](const Progress& p) { return plan_mesh(mesh, request, p); });
+  } else {
+    const PointCloud cloud = cloud_from_source(source, labels, class_names);
+    request.path = "<arrays>";
+    report = watch.run([&](const Progress& p) { return plan_cloud(cloud, request, p); });
+  }
+  JobResult result = result_of(report);
+  std::vector<Eigen::Vector3d> stations;
+  std::vector<double> curve;
+  for (const SelectedStation& s : report.selection.stations) {
+    stations.push_back(report.candidate_positions.at(s.candidate));
+    curve.push_back(s.coverage);
+  }
+  result.arrays["stations"] = to_numpy<double>(std::move(stations));
+  result.arrays["coverage_curve"] = to_numpy<double>(std::move(curve));
+  result.arrays["covered_by"] =
+      to_numpy<std::int32_t>(std::vector<std::int32_t>(report.selection.first_rank));
+  result.arrays["candidates"] =
+      to_numpy<double>(std::vector<Eigen::Vector3d>(report.candidate_positions));
+  result.arrays["gain_left"] = to_numpy<double>(std::vector<double>(report.selection.gain_left));
+  return result;
+}
+
 JobResult region_growing_occlusion(const py::handle& source, const py::object& progress,
                                    const py::kwargs& keys) {
   const auto request =
@@ -328,6 +367,16 @@ result.occlusion_level, result.face_visible_fraction.)doc")
                      "arrays: visible_count uint16 (N,) (viewpoints that see each point), mask "
                      "bool (N,) (seen by any).") +
          keys_doc("scan"))
+            .c_str());
+  m.def("plan", &plan, source, py::kw_only(), py::arg("labels") = py::none(),
+        py::arg("class_names") = py::none(), progress,
+        (std::string("Scan planning: where to put scanner stations. source: a path, (vertices, "
+                     "faces), points (N, 3) or a Cloud (labels and class_names for classes=).\n"
+                     "arrays: stations float64 (k, 3) in order, coverage_curve float64 (k,) "
+                     "(coverage after each), covered_by int32 (T,) per target (a point, or a "
+                     "mesh's sample) the rank of the first station that sees it, -1 none; "
+                     "candidates float64 (n, 3) and gain_left float64 (n,).") +
+         keys_doc("plan"))
             .c_str());
   m.def(
       "region_growing_occlusion", &region_growing_occlusion, source, py::kw_only(), progress,

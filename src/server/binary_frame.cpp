@@ -74,6 +74,8 @@ const char* kind_name(FrameKind kind) {
       return "escape_directions";
     case FrameKind::kPointClusters:
       return "point_clusters";
+    case FrameKind::kCoveredBy:
+      return "covered_by";
     case FrameKind::kUpload:
       return "upload";
   }

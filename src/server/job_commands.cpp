@@ -15,6 +15,7 @@
 #include "occlusion/app/extract_polygons_job.hpp"
 #include "occlusion/app/job_registry.hpp"
 #include "occlusion/app/mesh_occlusion_job.hpp"
+#include "occlusion/app/plan_job.hpp"
 #include "occlusion/app/reconstruct_job.hpp"
 #include "occlusion/app/region_growing_job.hpp"
 #include "occlusion/app/scan_job.hpp"
@@ -43,6 +44,13 @@ void escape_frames(CommandContext& context, const CloudOcclusionReport& report) 
 void scan_frames(CommandContext& context, const ScanReport& report) {
   const auto& count = report.result.visible_count;
   context.send(make_frame(FrameKind::kVisibleCount, count.data(), count.size(), 1));
+}
+
+// Per target (a cloud's point, a mesh's sample): the rank of the first
+// station that sees it, -1 for none.
+void plan_frames(CommandContext& context, const PlanReport& report) {
+  const auto& rank = report.selection.first_rank;
+  context.send(make_frame(FrameKind::kCoveredBy, rank.data(), rank.size(), 1));
 }
 
 Frame point_clusters_frame(const MeshEstimate& estimate) {
@@ -101,6 +109,7 @@ const std::map<std::string, Frames>& job_frames() {
       {"scan", &typed_frames<ScanReport, scan_frames>},
       {"reconstruct", &typed_frames<ReconstructReport, reconstruct_frames>},
       {"extract_polygons", &typed_frames<ExtractPolygonsReport, extract_polygons_frames>},
+      {"plan", &typed_frames<PlanReport, plan_frames>},
   };
   return table;
 }

@@ -43,6 +43,8 @@ class CoverageMatrix {
   // The weight of the targets `candidate` sees that `covered` (a row-sized
   // bit set) does not hold: what it would add.
   double gain(std::size_t candidate, const std::vector<std::uint64_t>& covered) const;
+  // The weight of the targets a row-sized bit set holds.
+  double weight_of(const std::vector<std::uint64_t>& covered) const;
 
  private:
   std::size_t candidates_ = 0;

@@ -33,6 +33,11 @@ TriangleMesh read_mesh(const std::string& path, MeshReadReport* report = nullptr
 const std::vector<std::string>& mesh_file_suffixes();
 // Whether read_mesh reads `path` by its name (any letter case; ScanNet folders aside).
 bool is_mesh_file(const std::string& path);
+// Whether `path` holds a mesh rather than a cloud: an OBJ (or a ScanNet
+// scene's mesh by its name), or a PLY whose header declares at least one face
+// (a PLY of points is a cloud). Reads at most the header; false when the
+// header cannot be read, so that the cloud reader says why.
+bool holds_mesh(const std::string& path);
 TriangleMesh read_ply_mesh(const std::string& path, MeshReadReport* report = nullptr);
 
 }  // namespace occlusion

@@ -24,6 +24,7 @@ enum class FrameKind : std::uint16_t {
   kVisibleCount = 8,
   kEscapeDirections = 9,
   kPointClusters = 10,
+  kCoveredBy = 11,  // plan: per target, the first station's rank (int32, -1 none)
   kUpload = 100,
 };
 

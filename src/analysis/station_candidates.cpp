@@ -1,0 +1,240 @@
+#include "occlusion/analysis/station_candidates.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <stdexcept>
+
+#include "occlusion/analysis/inside_solid.hpp"
+#include "occlusion/analysis/label_transfer.hpp"
+#include "occlusion/analysis/point_spacing.hpp"
+#include "occlusion/core/parallel.hpp"
+#include "occlusion/core/sphere_octree.hpp"
+#include "occlusion/core/triangle_octree.hpp"
+
+namespace occlusion {
+
+namespace {
+
+// The probe directions: an unrotated Fibonacci lattice (fixed, evenly
+// spread), cut to those at most kOutsideProbeTopDegrees above the horizontal.
+std::vector<Eigen::Vector3f> probe_directions(const UpAxis& up) {
+  const double golden = M_PI * (3.0 - std::sqrt(5.0));
+  const Eigen::Vector3d up_vector = up.vector();
+  const double top = std::sin(kOutsideProbeTopDegrees * M_PI / 180.0);
+  std::vector<Eigen::Vector3f> directions;
+  for (std::size_t k = 0; k < kOutsideProbeRays; ++k) {
+    const double z = 1.0 - (2.0 * static_cast<double>(k) + 1.0) / kOutsideProbeRays;
+    const double r = std::sqrt(1.0 - z * z);
+    const double phi = golden * static_cast<double>(k);
+    const Eigen::Vector3d d(r * std::cos(phi), r * std::sin(phi), z);
+    if (d.dot(up_vector) <= top) directions.push_back(d.cast<float>());
+  }
+  return directions;
+}
+
+// Does the share of probe rays that escape `tree` exceed kOutsideEscapeShare?
+template <class Tree>
+bool escapes(const Tree& tree, const Eigen::Vector3d& position,
+             const std::vector<Eigen::Vector3f>& directions) {
+  std::size_t escaped = 0;
+  for (const auto& direction : directions) {
+    Ray ray;
+    ray.origin = position.cast<float>();
+    ray.direction = direction;
+    if (!tree.occluded(ray)) ++escaped;
+  }
+  return static_cast<double>(escaped) >
+         kOutsideEscapeShare * static_cast<double>(directions.size());
+}
+
+// Squared distance from p to triangle abc (Ericson, Real-Time Collision
+// Detection 5.1.5: the closest point by Voronoi region).
+double squared_distance(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
+                        const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
+  const Eigen::Vector3d ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
+  if (d1 <= 0.0 && d2 <= 0.0) return ap.squaredNorm();
+  const Eigen::Vector3d bp = p - b;
+  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
+  if (d3 >= 0.0 && d4 <= d3) return bp.squaredNorm();
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) {
+    return (p - (a + d1 / (d1 - d3) * ab)).squaredNorm();
+  }
+  const Eigen::Vector3d cp = p - c;
+  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
+  if (d6 >= 0.0 && d5 <= d6) return cp.squaredNorm();
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) {
+    return (p - (a + d2 / (d2 - d6) * ac)).squaredNorm();
+  }
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0) {
+    return (p - (b + (d4 - d3) / ((d4 - d3) + (d5 - d6)) * (c - b))).squaredNorm();
+  }
+  const double denominator = 1.0 / (va + vb + vc);
+  const double v = vb * denominator, w = vc * denominator;
+  return (p - (a + ab * v + ac * w)).squaredNorm();
+}
+
+// Positions with nothing nearer than `clearance` among the mesh's faces.
+std::vector<bool> clear_of_faces(const TriangleMesh& mesh,
+                                 const std::vector<Eigen::Vector3d>& positions, double clearance,
+                                 unsigned threads, const Progress& progress) {
+  struct Face {
+    Eigen::Vector3d a, b, c, lo, hi;
+  };
+  std::vector<Face> faces(mesh.face_count());
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    const auto& v = mesh.faces[f];
+    Face& face = faces[f];
+    face.a = mesh.vertices[v[0]];
+    face.b = mesh.vertices[v[1]];
+    face.c = mesh.vertices[v[2]];
+    face.lo = face.a.cwiseMin(face.b).cwiseMin(face.c).array() - clearance;
+    face.hi = face.a.cwiseMax(face.b).cwiseMax(face.c).array() + clearance;
+  }
+  const double limit = clearance * clearance;
+  std::vector<char> clear(positions.size(), 1);
+  std::atomic<bool> cancelled{false};
+  parallel_for(positions.size(), 16, threads, [&](std::size_t begin, std::size_t end) {
+    if (progress.cancel != nullptr && progress.cancel->load()) {
+      cancelled = true;
+      return;
+    }
+    for (std::size_t i = begin; i < end; ++i) {
+      const Eigen::Vector3d& p = positions[i];
+      for (const Face& face : faces) {
+        if ((p.array() < face.lo.array()).any() || (p.array() > face.hi.array()).any()) continue;
+        if (squared_distance(p, face.a, face.b, face.c) < limit) {
+          clear[i] = 0;
+          break;
+        }
+      }
+    }
+  });
+  if (cancelled) throw Cancelled();
+  return {clear.begin(), clear.end()};
+}
+
+// Positions with no point nearer than `clearance` (a kd-tree's nearest neighbour).
+std::vector<bool> clear_of_points(const PointCloud& cloud,
+                                  const std::vector<Eigen::Vector3d>& positions, double clearance,
+                                  unsigned threads, const Progress& progress) {
+  std::vector<bool> clear(positions.size(), true);
+  if (clearance <= 0.0 || positions.empty()) return clear;
+  std::vector<Eigen::Vector3f> targets;
+  for (const auto& p : positions) targets.push_back(p.cast<float>());
+  LabelTransferOptions options;
+  options.max_distance = clearance;
+  options.threads = threads;
+  // A position that gets a label has a point within the clearance.
+  const LabelTransfer nearest = transfer_labels(
+      cloud.positions, std::vector<std::int32_t>(cloud.size(), 0), targets, options, progress);
+  for (std::size_t i = 0; i < positions.size(); ++i) clear[i] = nearest.labels[i] < 0;
+  return clear;
+}
+
+template <class Tree>
+StationCandidates keep(std::vector<Eigen::Vector3d> positions, const std::vector<bool>& clear,
+                       const std::vector<double>& back_faces, const Tree& tree, const UpAxis& up,
+                       const Progress& progress) {
+  const auto directions = probe_directions(up);
+  StationCandidates result;
+  result.tested = positions.size();
+  for (std::size_t i = 0; i < positions.size(); ++i) {
+    if (i % 64 == 0) {
+      progress.check_cancel();
+      progress("candidates", static_cast<double>(i) / static_cast<double>(positions.size()));
+    }
+    if (!clear[i]) {
+      ++result.rejected.clearance;
+    } else if (!back_faces.empty() && back_faces[i] > kInsideBackFaceShare) {
+      ++result.rejected.inside_solid;
+    } else if (escapes(tree, positions[i], directions)) {
+      ++result.rejected.outside;
+    } else {
+      result.positions.push_back(positions[i]);
+    }
+  }
+  return result;
+}
+
+void check_positions(const std::vector<Eigen::Vector3d>& positions, double clearance) {
+  if (!(clearance >= 0.0) || !std::isfinite(clearance)) {
+    throw std::invalid_argument("station candidates: the clearance must be >= 0");
+  }
+  for (const auto& p : positions) {
+    if (!p.allFinite()) throw std::invalid_argument("station candidates: a position is not finite");
+  }
+}
+
+}  // namespace
+
+std::vector<Eigen::Vector3d> floor_grid(const Box& frame, const UpAxis& up, double spacing,
+                                        double height) {
+  if (!(spacing > 0.0) || !std::isfinite(spacing) || !(height > 0.0) || !std::isfinite(height)) {
+    throw std::invalid_argument("station candidates: spacing and height must be > 0");
+  }
+  const int a = up.axis, u = (a + 1) % 3, v = (a + 2) % 3;
+  const double floor = up.sign > 0 ? frame.lo[a] : -frame.hi[a];
+  const double top = up.sign > 0 ? frame.hi[a] : -frame.lo[a];
+  if (floor + height > top) {
+    throw std::invalid_argument("station candidates: the height " + std::to_string(height) +
+                                " is above the scene (" + std::to_string(top - floor) + " high)");
+  }
+  // Steps that fit along each floor axis, the grid centred between the walls.
+  const auto steps = [&](int axis) {
+    const double extent = frame.hi[axis] - frame.lo[axis];
+    return std::floor(extent / spacing) + 1.0;
+  };
+  const double nu = steps(u), nv = steps(v);
+  if (nu * nv > static_cast<double>(kMaxGridCandidates)) {
+    throw std::invalid_argument("station candidates: spacing " + std::to_string(spacing) +
+                                " gives " + std::to_string(nu * nv) +
+                                " grid positions, more than " + std::to_string(kMaxGridCandidates));
+  }
+  const double start_u = (frame.lo[u] + frame.hi[u] - (nu - 1.0) * spacing) / 2.0;
+  const double start_v = (frame.lo[v] + frame.hi[v] - (nv - 1.0) * spacing) / 2.0;
+  std::vector<Eigen::Vector3d> positions;
+  for (std::size_t j = 0; j < static_cast<std::size_t>(nv); ++j) {
+    for (std::size_t i = 0; i < static_cast<std::size_t>(nu); ++i) {
+      Eigen::Vector3d p;
+      p[a] = up.sign * (floor + height);
+      p[u] = start_u + static_cast<double>(i) * spacing;
+      p[v] = start_v + static_cast<double>(j) * spacing;
+      positions.push_back(p);
+    }
+  }
+  return positions;
+}
+
+StationCandidates keep_free_positions(const PointCloud& cloud,
+                                      std::vector<Eigen::Vector3d> positions, double clearance,
+                                      const UpAxis& up, unsigned threads,
+                                      const Progress& progress) {
+  if (cloud.size() == 0) throw std::invalid_argument("station candidates: the cloud is empty");
+  check_positions(positions, clearance);
+  const std::vector<bool> clear = clear_of_points(cloud, positions, clearance, threads, progress);
+  const double radius = kProbeRadiusPerSpacing * measure_point_spacing(cloud).spacing;
+  const SphereOctree tree(make_spheres(cloud.positions, static_cast<float>(radius)),
+                          sphere_octree_options(), progress);
+  return keep(std::move(positions), clear, {}, tree, up, progress);
+}
+
+StationCandidates keep_free_positions(const TriangleMesh& mesh,
+                                      std::vector<Eigen::Vector3d> positions, double clearance,
+                                      const UpAxis& up, unsigned threads,
+                                      const Progress& progress) {
+  if (mesh.face_count() == 0)
+    throw std::invalid_argument("station candidates: the mesh has no faces");
+  check_positions(positions, clearance);
+  const std::vector<bool> clear = clear_of_faces(mesh, positions, clearance, threads, progress);
+  const TriangleOctree tree(pack_triangles(mesh.triangles()), {}, progress);
+  const std::vector<double> back_faces =
+      positions.empty() ? std::vector<double>{} : back_face_shares(tree, positions);
+  return keep(std::move(positions), clear, back_faces, tree, up, progress);
+}
+
+}  // namespace occlusion
