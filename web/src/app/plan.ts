@@ -119,6 +119,8 @@ export class Plan {
     this.layer.show(c.positions, c.gainLeft, size, c.height ?? 0);
     markers.placeStations(result.stations.map((s) => ({ name: s.name, position: s.position })));
     result.stations.forEach((s, i) => {
+      const [r, g, b] = stationColour(s.rank);
+      markers.recolour(`station${i + 1}`, (r << 16) | (g << 8) | b);
       markers.setBadge(`station${i + 1}`, String(s.rank), css(stationColour(s.rank)));
     });
     this.panel.show(result, covered, seconds);

@@ -182,6 +182,19 @@ export class ViewpointMarkers {
     this.onChange?.();
   }
 
+  /** Gives a marker another colour (0xRRGGBB): its sphere, glow, light, rays and list entry. */
+  recolour(name: MarkerId, hex: number): void {
+    const marker = this.markers.get(name);
+    if (!marker) return;
+    marker.colour = hex;
+    marker.sphere.material.color.set(hex);
+    marker.light.color.set(hex);
+    for (const child of marker.object.children) {
+      if (child instanceof Sprite && child.userData.badge !== true) child.material.color.set(hex);
+    }
+    this.onChange?.();
+  }
+
   /**
    * A number beside the marker, in `colour` (a planned station's rank), or
    * none with an empty text. It moves with the marker.
