@@ -10,10 +10,15 @@
 //   - the time to stream the cloud: `load` from request to result, cold (file
 //     read, encoded, cached) and warm (from the cache: pure streaming), best of 3;
 //   - the time to upload the same file as a browser would (announce + one binary
-//     message) until the server has read, stored and streamed it back.
+//     message) until the server has read, stored and streamed it back;
+//   - the live station (`station_view`): the first request, which builds the
+//     disc model and its octree, then the median over 20 positions walking
+//     across the room of the server's trace time and of the round trip (the
+//     per-point frame included): the viewer's latency per dragged position.
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cstdio>
 #include <filesystem>
@@ -153,6 +158,46 @@ Streamed load(BlockingClient& client, std::uint32_t id, const std::string& path)
   return streamed;
 }
 
+struct LiveTimes {
+  double first = 0.0;         // round trip of the request that built the model
+  double trace_median = 0.0;  // the server's trace time, median of the later ones
+  double round_trip_median = 0.0;
+  std::size_t visible = 0;  // points seen from the last position
+};
+
+LiveTimes live_station(BlockingClient& client, std::uint32_t first_id) {
+  const auto request = [&](std::uint32_t id, double x) {
+    Json::Value params(Json::objectValue);
+    params["path"] = "cloud.ply";
+    Json::Value position(Json::arrayValue);
+    for (double value : {x, 4.0, 1.5}) position.append(value);
+    params["position"] = position;
+    const auto start = Clock::now();
+    const occlusion::server::Reply reply =
+        client.request(id, "station_view", params, Millis(300000));
+    const double seconds = seconds_since(start);
+    if (!reply.ok())
+      throw std::runtime_error("station_view failed: " + reply.final.toStyledString());
+    return std::make_pair(seconds, reply.final["result"]);
+  };
+  LiveTimes times;
+  times.first = request(first_id, 5.0).first;
+  std::vector<double> traces, trips;
+  for (std::uint32_t k = 0; k < 20; ++k) {
+    const auto [seconds, result] = request(first_id + 1 + k, 1.0 + 0.4 * k);
+    trips.push_back(seconds);
+    traces.push_back(result["trace_seconds"].asDouble());
+    times.visible = result["visible_points"].asUInt64();
+  }
+  const auto median = [](std::vector<double> values) {
+    std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
+    return values[values.size() / 2];
+  };
+  times.trace_median = median(traces);
+  times.round_trip_median = median(trips);
+  return times;
+}
+
 double upload(BlockingClient& client, std::uint32_t id, const std::string& bytes) {
   Json::Value params(Json::objectValue);
   params["name"] = "bench_upload.ply";
@@ -223,6 +268,12 @@ int main(int argc, char** argv) try {
       last.cached ? "" : " [not cached!]");
   std::printf("upload %s-byte PLY, read, store and stream back: %.3f s\n",
               grouped(ply.size()).c_str(), upload(client, 10, ply));
+  const LiveTimes live = live_station(client, 20);
+  std::printf(
+      "live station on %s points: first (builds the disc model) %.3f s; per position: trace "
+      "%.1f ms, round trip %.1f ms (median of 20; %s points seen from the last)\n",
+      grouped(options.points).c_str(), live.first, 1e3 * live.trace_median,
+      1e3 * live.round_trip_median, grouped(live.visible).c_str());
 
   client.close();
   server.stop();

@@ -1,6 +1,7 @@
 #include "command_params.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "occlusion/server/protocol_error.hpp"
 
@@ -47,6 +48,20 @@ std::uint64_t required_unsigned(const Json::Value& params, const std::string& ke
   const Json::Value& value = params[key];
   if (value.isBool() || !value.isUInt64()) fail("'" + key + "' must be a non-negative integer");
   return value.asUInt64();
+}
+
+std::array<double, 3> required_point(const Json::Value& params, const std::string& key) {
+  if (!params.isMember(key)) fail("missing parameter '" + key + "'");
+  const Json::Value& value = params[key];
+  std::array<double, 3> point{};
+  if (!value.isArray() || value.size() != 3) fail("'" + key + "' must be [x, y, z]");
+  for (Json::ArrayIndex a = 0; a < 3; ++a) {
+    if (value[a].isBool() || !value[a].isNumeric() || !std::isfinite(value[a].asDouble())) {
+      fail("'" + key + "' must be [x, y, z], three finite numbers");
+    }
+    point[a] = value[a].asDouble();
+  }
+  return point;
 }
 
 }  // namespace occlusion::server

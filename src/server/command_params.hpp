@@ -5,6 +5,7 @@
 
 #include <json/value.h>
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -17,5 +18,7 @@ std::string string_param(const Json::Value& params, const std::string& key,
 std::string required_string(const Json::Value& params, const std::string& key);
 bool bool_param(const Json::Value& params, const std::string& key, bool fallback);
 std::uint64_t required_unsigned(const Json::Value& params, const std::string& key);
+// [x, y, z], three finite numbers.
+std::array<double, 3> required_point(const Json::Value& params, const std::string& key);
 
 }  // namespace occlusion::server

@@ -5,10 +5,10 @@ namespace occlusion::server {
 const std::vector<Command>& command_table() {
   static const std::vector<Command> kTable = [] {
     std::vector<Command> table;
-    for (auto group : {file_commands(), load_commands(), job_commands()}) {
+    for (auto group : {file_commands(), load_commands(), job_commands(), live_station_commands()}) {
       for (auto& command : group) table.push_back(std::move(command));
     }
-    table.push_back(Command{"upload", Where::kSession, {}});
+    table.push_back(Command{"upload", Where::kSession, {}, true});
     table.push_back(Command{"cancel", Where::kSession, {}});
     return table;
   }();

@@ -35,13 +35,17 @@ std::shared_ptr<LoadedScene> read_scene(const fs::path& path, const std::string&
                                         bool skip_bad_lines) {
   try {
     if (lower_case(fs::path(path).extension().string()) == ".obj" && !fs::is_directory(path)) {
-      return mesh_scene(read_obj(path.string()));
+      auto mesh = std::make_shared<const TriangleMesh>(read_obj(path.string()));
+      auto scene = mesh_scene(*mesh);
+      scene->mesh = std::move(mesh);
+      return scene;
     }
     CloudReadOptions options;
     options.skip_bad_lines = skip_bad_lines;
     CloudReadReport report;
-    const PointCloud cloud = read_cloud(path.string(), options, &report);
-    auto scene = cloud_scene(cloud);
+    auto cloud = std::make_shared<const PointCloud>(read_cloud(path.string(), options, &report));
+    auto scene = cloud_scene(*cloud);
+    scene->cloud = std::move(cloud);
     scene->summary["dropped_nan"] = Json::UInt64(report.dropped_nan);
     scene->summary["skipped_lines"] = Json::UInt64(report.skipped_lines);
     return scene;
@@ -63,24 +67,28 @@ Json::Value reply(CommandContext& context, const LoadedScene& scene, const std::
 
 Json::Value load(CommandContext& context) {
   allow_keys(context.params, {"path", "skip_bad_lines"});
-  const std::string path = required_string(context.params, "path");
-  const bool skip_bad_lines = bool_param(context.params, "skip_bad_lines", false);
-  const DataRoot& root = context.server.root;
-  const fs::path resolved = root.resolve(path, true);
-  const std::string relative = root.relative(resolved.string());
-
-  const std::string key = scene_key(resolved, skip_bad_lines ? "skip_bad_lines" : "");
-  std::shared_ptr<const LoadedScene> scene = context.server.cache.find(key);
-  const bool cached = scene != nullptr;
-  if (!cached) {
-    context.progress()("loading", 0.0);
-    scene = read_scene(resolved, relative, skip_bad_lines);
-    context.server.cache.insert(key, scene);
-  }
-  return reply(context, *scene, relative, cached);
+  const SceneLookup found = find_scene(context, required_string(context.params, "path"),
+                                       bool_param(context.params, "skip_bad_lines", false));
+  return reply(context, *found.scene, found.relative, found.cached);
 }
 
 }  // namespace
+
+SceneLookup find_scene(CommandContext& context, const std::string& path, bool skip_bad_lines) {
+  const DataRoot& root = context.server.root;
+  const fs::path resolved = root.resolve(path, true);
+  SceneLookup found;
+  found.relative = root.relative(resolved.string());
+  const std::string key = scene_key(resolved, skip_bad_lines ? "skip_bad_lines" : "");
+  found.scene = context.server.cache.find(key);
+  found.cached = found.scene != nullptr;
+  if (!found.cached) {
+    context.progress()("loading", 0.0);
+    found.scene = read_scene(resolved, found.relative, skip_bad_lines);
+    context.server.cache.insert(key, found.scene);
+  }
+  return found;
+}
 
 const std::vector<std::string>& upload_suffixes() {
   static const std::vector<std::string> suffixes = [] {
@@ -145,7 +153,7 @@ Json::Value store_upload(CommandContext& context, const std::string& name, std::
 }
 
 std::vector<Command> load_commands() {
-  return {Command{"load", Where::kWorker, &load}};
+  return {Command{"load", Where::kWorker, &load, true}};
 }
 
 }  // namespace occlusion::server

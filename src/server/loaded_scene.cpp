@@ -18,7 +18,28 @@ Json::Value bounds_json(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi) {
 std::size_t LoadedScene::bytes() const {
   std::size_t total = 1024;  // the summary, roughly
   for (const auto& frame : frames) total += frame.message.size();
+  if (cloud) {
+    total += cloud->positions.size() * sizeof(Eigen::Vector3f) + cloud->colours.size() * 3 +
+             (cloud->labels.size() + cloud->instances.size() + cloud->station_ids.size()) * 4 +
+             cloud->intensities.size() * sizeof(float);
+  }
+  if (mesh) {
+    total += mesh->vertices.size() * sizeof(Eigen::Vector3d) +
+             mesh->face_count() * (3 * sizeof(std::uint32_t) + sizeof(std::uint32_t));
+  }
   return total;
+}
+
+std::shared_ptr<const LiveStation> LiveStationSlot::get(const std::string& key, const Build& build,
+                                                        bool& built) {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  built = false;
+  if (station_ && key_ == key) return station_;
+  station_.reset();  // the old model goes before the new one is built
+  station_ = build();
+  key_ = key;
+  built = true;
+  return station_;
 }
 
 std::vector<Frame> cloud_frames(const PointCloud& cloud) {

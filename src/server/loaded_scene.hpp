@@ -5,8 +5,13 @@
 
 #include <json/value.h>
 
+#include <functional>
 #include <memory>
+#include <mutex>
+#include <string>
 #include <vector>
+
+#include "occlusion/app/live_station.hpp"
 
 #include "occlusion/core/mesh.hpp"
 #include "occlusion/core/point_cloud.hpp"
@@ -14,10 +19,32 @@
 
 namespace occlusion::server {
 
+// The live station's model of one scene (app/live_station.hpp), built by the
+// first request that needs it and kept for the next ones with the same
+// settings; other settings replace it. Requests that find it being built wait
+// for that build instead of making a second one.
+class LiveStationSlot {
+ public:
+  using Build = std::function<std::shared_ptr<const LiveStation>()>;
+  // `built` is set to whether this call built it.
+  std::shared_ptr<const LiveStation> get(const std::string& key, const Build& build, bool& built);
+
+ private:
+  std::mutex mutex_;
+  std::string key_;
+  std::shared_ptr<const LiveStation> station_;
+};
+
 struct LoadedScene {
   Json::Value summary;  // "kind", counts, bounds, ... (without "path" and "cached")
   std::vector<Frame> frames;
+  // The scene itself (one of the two), for commands that work on it where it
+  // is (the live station) instead of reading the file again.
+  std::shared_ptr<const PointCloud> cloud;
+  std::shared_ptr<const TriangleMesh> mesh;
+  mutable LiveStationSlot live_station;
 
+  // The frames and the scene; not the live station's model, built later.
   std::size_t bytes() const;
 };
 

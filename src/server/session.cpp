@@ -113,7 +113,7 @@ void Session::dispatch(const Request& request) {
       job != nullptr && std::any_of(job->keys.begin(), job->keys.end(),
                                     [](const KeyInfo& info) { return info.name == "max_work"; });
   submit(request.command, request.id, request.params, command->run, flag,
-         request.command == "load" || estimates_work);
+         command->waited_on || estimates_work);
 }
 
 WorkerPool::OnPosition Session::position_reporter(std::uint32_t id) const {
@@ -125,9 +125,11 @@ WorkerPool::OnPosition Session::position_reporter(std::uint32_t id) const {
 void Session::submit(const std::string& command, std::uint32_t id, Json::Value params, Run run,
                      const Flag& flag, bool may_use_reserve) {
   auto self = shared_from_this();
-  // Jobs share the workers fairly between clients; loads and uploads, which a
-  // client waits on to go on working, are not held back behind its own jobs.
-  const bool is_job = command != "load" && command != "upload";
+  // Jobs share the workers fairly between clients; loads, uploads and the
+  // live station, which a client waits on to go on working, are not held back
+  // behind its own jobs.
+  const Command* entry = find_command(command);
+  const bool is_job = entry == nullptr || !entry->waited_on;
   const bool queued = server_.pool.submit(
       is_job ? this : nullptr,
       [self, command, id, params = std::move(params), run = std::move(run), flag](Lane lane) {

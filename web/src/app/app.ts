@@ -36,6 +36,7 @@ import { JobRunner } from "./job_runner";
 import { Loading } from "./loading";
 import { Occlusion } from "./occlusion";
 import { Openings } from "./openings";
+import { Plan } from "./plan";
 import { SceneView } from "./scene_view";
 import { exposeForTests } from "./test_hooks";
 
@@ -55,6 +56,7 @@ export class App {
   readonly occlusion: Occlusion;
   readonly openingFlow: Openings;
   readonly evaluation: Evaluation;
+  readonly plan: Plan;
   private readonly stats: StatsPanel;
   private readonly toolbar: Toolbar;
   private readonly upload: UploadControl;
@@ -151,6 +153,7 @@ export class App {
 
     this.ctx = {
       client,
+      api,
       viewer,
       view,
       runner,
@@ -164,6 +167,7 @@ export class App {
       openings,
       history,
       renderViewpoints: () => this.renderViewpoints(),
+      sceneShown: [],
       status: {
         scene: (text) => (byId("status-scene").textContent = text),
         timing: (text) => (byId("status-timing").textContent = text),
@@ -174,6 +178,8 @@ export class App {
     this.occlusion = new Occlusion(this.ctx);
     this.openingFlow = new Openings(this.ctx);
     this.evaluation = new Evaluation(this.ctx);
+    this.plan = new Plan(this.ctx);
+    this.ctx.sceneShown.push(() => this.plan.reset());
 
     openings.onOpeningsChange = (path) => void this.openingFlow.draw(path);
     gui.onChange = (key) => this.onSetting(key);
@@ -238,7 +244,9 @@ export class App {
     };
     pickerMaterials.useShader = gui.settings.useShaderMaterial;
 
-    listenForClicks(viewer.renderer.domElement, (click) => this.openingFlow.onClick(click));
+    listenForClicks(viewer.renderer.domElement, (click) => {
+      if (!this.plan.onClick(click)) this.openingFlow.onClick(click);
+    });
     this.upload = installUpload(
       document.body,
       this.toolbar.get("upload"),
@@ -266,6 +274,7 @@ export class App {
       this.upload.setSuffixes(hello.upload_suffixes);
       // Defaults and ranges from the server's key declarations, where it has them.
       this.ctx.gui.refreshDeclared(adoptServerKeys({ keys: hello.keys }));
+      this.plan.declare(hello.keys);
       this.syncAvailability();
       this.evaluation.renderStudy();
       await this.ctx.files.show(this.ctx.files.current);
@@ -316,6 +325,7 @@ export class App {
     this.toolbar.enable("polygons", client.available("extract_polygons"), missing);
     this.toolbar.enable("evaluate", client.available("evaluate"), missing);
     this.toolbar.enable("upload", client.available("upload"), missing);
+    this.toolbar.enable("plan", client.available("plan"), missing);
     this.toolbar.enable(
       "compute",
       client.available("mesh_occlusion") || client.available("cloud_occlusion"),
@@ -384,6 +394,8 @@ export class App {
         return;
       case "compute":
         return this.occlusion.compute();
+      case "plan":
+        return this.plan.run();
       case "polygons":
         return this.evaluation.extractPolygons();
       case "evaluate":

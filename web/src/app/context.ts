@@ -1,6 +1,7 @@
 // What the app's flows share: the viewer, the panels, the job runner, and
 // what this session has computed so far.
 
+import type { Api } from "../api";
 import type { ProtocolClient } from "../protocol/client";
 import type { StudyPoint } from "../results";
 import type { MeasureId } from "../study_measures";
@@ -35,6 +36,8 @@ export interface StatusLine {
 
 export interface AppContext {
   client: ProtocolClient;
+  /** Requests with their decoded frames, without a job row (the live station's). */
+  api: Api;
   viewer: Viewer;
   view: SceneView;
   runner: JobRunner;
@@ -50,4 +53,6 @@ export interface AppContext {
   history: SessionHistory;
   /** Redraws the viewpoint list (its warnings use the point radius in use). */
   renderViewpoints(): void;
+  /** Called once a new scene is on screen (what belonged to the last one goes). */
+  sceneShown: ((path: string) => void)[];
 }

@@ -225,6 +225,7 @@ export class Loading {
     this.ctx.openings.setOpenings("");
     this.ctx.openings.setOpenings(this.ctx.view.cloud ? openings : "");
     this.ctx.results.switchScene(path);
+    for (const shown of this.ctx.sceneShown) shown(path);
   }
 }
 

@@ -6,11 +6,19 @@
 import { FrameError } from "../protocol/frame";
 import type { Frame } from "../protocol/frame";
 import type { FrameInfo } from "../protocol/messages";
-import { classColour, ramp, segmentColour, visibilityColour } from "./colour_maps";
+import {
+  UNSEEN_COLOUR,
+  classColour,
+  ramp,
+  segmentColour,
+  stationColour,
+  visibilityColour,
+} from "./colour_maps";
 import type {
   AssembleContext,
   Bounds,
   CloudData,
+  CoveredByData,
   Decoded,
   EscapeData,
   FaceFractionData,
@@ -314,6 +322,26 @@ export function assembleVisibility(frame: Frame, context: AssembleContext): Visi
   };
 }
 
+export function assembleCoveredBy(frame: Frame): CoveredByData {
+  const rank = frame.data as Int32Array;
+  const covered = [0];
+  for (let i = 0; i < rank.length; ++i) {
+    const k = rank[i] as number;
+    if (k === -1) covered[0] = (covered[0] as number) + 1;
+    else if (k >= 1 && k <= rank.length) {
+      while (covered.length <= k) covered.push(0);
+      covered[k] = (covered[k] as number) + 1;
+    } else throw new FrameError(`covered_by: target ${i} has rank ${k}, not −1 or a station's`);
+  }
+  return {
+    kind: "covered_by",
+    count: rank.length,
+    rank,
+    colours: paintByKey(rank, (k) => (k < 1 ? UNSEEN_COLOUR : stationColour(k))),
+    covered,
+  };
+}
+
 export function assembleEscapes(frames: Frame[], context: AssembleContext): EscapeData {
   const n = Math.max(context.viewpoints ?? 0, ...frames.map((f) => f.item + 1));
   const directions: Float32Array[] = Array.from({ length: n }, () => new Float32Array(0));
@@ -351,6 +379,8 @@ export function assemble(
       return assembleVisibility(single(frames, "visible_count")!, context);
     case "escape_directions":
       return assembleEscapes(frames, context);
+    case "covered_by":
+      return assembleCoveredBy(single(frames, "covered_by")!);
     default:
       throw new FrameError(`${first.kind} frames without positions`);
   }

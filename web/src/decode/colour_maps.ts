@@ -84,6 +84,25 @@ export function visibilityColour(count: number, max: number): Rgb {
   return ramp(max <= 1 ? 1 : 0.25 + (0.75 * (count - 1)) / (max - 1));
 }
 
+/**
+ * The colour of planned station `rank` (from 1): its marker, its number and
+ * the points it is the first to see share it. Distinct hues, none of them the
+ * unseen red.
+ */
+export function stationColour(rank: number): Rgb {
+  return segmentColour(rank + 3);
+}
+
+/**
+ * A candidate's colour on the plan's heat map: the ramp at its gain left as a
+ * share of the largest one (the best next station is the ramp's top); a
+ * candidate that adds nothing is the ramp's bottom. Largest 0: all bottom.
+ */
+export function heatColour(gain: number, largest: number): Rgb {
+  if (!Number.isFinite(gain)) return NO_LABEL_COLOUR;
+  return ramp(largest > 0 ? Math.max(0, gain) / largest : 0);
+}
+
 export function css(rgb: Rgb): string {
   return `rgb(${rgb[0]}, ${rgb[1]}, ${rgb[2]})`;
 }

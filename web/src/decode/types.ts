@@ -73,6 +73,18 @@ export interface VisibilityData {
   histogram: number[];
 }
 
+/** plan: per target (a cloud's point, a mesh's sample), the first station that sees it. */
+export interface CoveredByData {
+  kind: "covered_by";
+  count: number;
+  /** The rank (from 1) of the first station that sees the target, −1 none. */
+  rank: Int32Array;
+  /** Per-target RGB: the station's colour (stationColour), unseen red. */
+  colours: Uint8Array;
+  /** covered[k] = targets first covered by station k (k from 1); covered[0] = by none. */
+  covered: number[];
+}
+
 export interface EscapeData {
   kind: "escapes";
   /** Unit directions (x y z …) of each viewpoint's occlusion rays, by item. */
@@ -96,7 +108,13 @@ export interface RegionGrowingData {
 }
 
 export type Decoded =
-  CloudData | MeshData | FaceFractionData | VisibilityData | EscapeData | RegionGrowingData;
+  | CloudData
+  | MeshData
+  | FaceFractionData
+  | VisibilityData
+  | EscapeData
+  | RegionGrowingData
+  | CoveredByData;
 
 /** Context the result gives the assembler (class names, number of viewpoints). */
 export interface AssembleContext {
@@ -132,6 +150,9 @@ export function transferables(value: Decoded | null): ArrayBuffer[] {
       break;
     case "escapes":
       arrays.push(...value.directions);
+      break;
+    case "covered_by":
+      arrays.push(value.rank, value.colours);
       break;
     case "region_growing":
       return [

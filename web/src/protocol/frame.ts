@@ -39,6 +39,7 @@ export type FrameKind =
   | "visible_count"
   | "escape_directions"
   | "point_clusters"
+  | "covered_by"
   | "upload";
 
 interface KindSpec {
@@ -59,6 +60,7 @@ export const FRAME_KINDS: Record<FrameKind, KindSpec> = {
   visible_count: { code: 8, type: "uint16", components: 1 },
   escape_directions: { code: 9, type: "float32", components: 3 },
   point_clusters: { code: 10, type: "int32", components: 1 },
+  covered_by: { code: 11, type: "int32", components: 1 },
   upload: { code: 100, type: "uint8", components: 1 },
 };
 

@@ -130,6 +130,7 @@ export class ViewpointMarkers {
     const marker = this.markers.get(name);
     if (!marker) return;
     if (this.selected === name) this.deselect();
+    this.setBadge(name, "", "");
     marker.object.removeFromParent();
     marker.sphere.geometry.dispose();
     marker.sphere.material.dispose();
@@ -179,6 +180,57 @@ export class ViewpointMarkers {
       marker.object.scale.setScalar(this.size);
     });
     this.onChange?.();
+  }
+
+  /** Gives a marker another colour (0xRRGGBB): its sphere, glow, light, rays and list entry. */
+  recolour(name: MarkerId, hex: number): void {
+    const marker = this.markers.get(name);
+    if (!marker) return;
+    marker.colour = hex;
+    marker.sphere.material.color.set(hex);
+    marker.light.color.set(hex);
+    for (const child of marker.object.children) {
+      if (child instanceof Sprite && child.userData.badge !== true) child.material.color.set(hex);
+    }
+    this.onChange?.();
+  }
+
+  /**
+   * A number beside the marker, in `colour` (a planned station's rank), or
+   * none with an empty text. It moves with the marker.
+   */
+  setBadge(name: MarkerId, text: string, colour: string): void {
+    const marker = this.markers.get(name);
+    if (!marker) return;
+    for (const child of [...marker.object.children]) {
+      if (child.userData.badge === true) {
+        child.removeFromParent();
+        (child as Sprite).material.map?.dispose();
+        (child as Sprite).material.dispose();
+      }
+    }
+    if (text === "") return;
+    const canvas = document.createElement("canvas");
+    canvas.width = canvas.height = 64;
+    const g = canvas.getContext("2d")!;
+    g.fillStyle = colour;
+    g.beginPath();
+    g.arc(32, 32, 30, 0, 2 * Math.PI);
+    g.fill();
+    g.fillStyle = "#0b1220";
+    g.font = "bold 34px sans-serif";
+    g.textAlign = "center";
+    g.textBaseline = "middle";
+    g.fillText(text, 32, 34);
+    const badge = new Sprite(
+      new SpriteMaterial({ map: new CanvasTexture(canvas), depthTest: false, transparent: true }),
+    );
+    badge.userData.badge = true;
+    badge.userData.viewpoint = name;
+    badge.position.set(0, 0, 3.2);
+    badge.scale.setScalar(3.2);
+    badge.renderOrder = 2;
+    marker.object.add(badge);
   }
 
   setEnabled(name: MarkerId, enabled: boolean): void {

@@ -3,12 +3,13 @@
 
 import { clear, h } from "./dom";
 
-export type ResultsTab = "occlusion" | "evaluation" | "study";
+export type ResultsTab = "occlusion" | "evaluation" | "study" | "plan";
 
 const TITLES: Record<ResultsTab, string> = {
   occlusion: "Occlusion",
   evaluation: "Evaluation",
   study: "Study",
+  plan: "Plan",
 };
 
 export class ResultsPanel {
@@ -125,6 +126,8 @@ function placeholder(tab: ResultsTab): string {
       return "Press Evaluate to compare a segmentation with the ground truth.";
     case "study":
       return "Each evaluation after an occlusion computation adds a point (occlusion, mIoU).";
+    case "plan":
+      return "Where to put the scanner: press Plan stations.";
   }
 }
 

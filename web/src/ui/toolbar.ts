@@ -3,7 +3,15 @@
 import { BUTTON_PRIMARY, BUTTON_SECONDARY, h } from "./dom";
 
 export type ToolbarButton =
-  "original" | "segmented" | "semantic" | "mesh" | "compute" | "polygons" | "evaluate" | "upload";
+  | "original"
+  | "segmented"
+  | "semantic"
+  | "mesh"
+  | "compute"
+  | "plan"
+  | "polygons"
+  | "evaluate"
+  | "upload";
 
 const BUTTONS: [ToolbarButton, string, string, boolean][] = [
   ["original", "Original Cloud", "Show the cloud in its own colours", false],
@@ -11,6 +19,7 @@ const BUTTONS: [ToolbarButton, string, string, boolean][] = [
   ["semantic", "Semantic Cloud", "Colour by semantic class", false],
   ["mesh", "Mesh", "Show the mesh", false],
   ["compute", "Compute Occlusion", "Occlusion from the enabled viewpoints", true],
+  ["plan", "Plan", "Where to put scanner stations: the fewest that cover the scene", false],
   [
     "polygons",
     "Extract Polygons",

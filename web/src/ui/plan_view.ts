@@ -1,0 +1,232 @@
+// The Plan tab: the plan's settings (their defaults, ranges and docs from the
+// server's declaration of the `plan` job in hello), Run, the live station
+// switch and its count, and the result card (coverage, the curve, the
+// stations in order).
+
+import { css, stationColour } from "../decode/colour_maps";
+import type { PlanResult } from "../plan_report";
+import { coverageChart } from "./coverage_chart";
+import { BUTTON_PRIMARY, BUTTON_SMALL, INPUT, clear, h } from "./dom";
+import { fixed, integer, percent } from "./format";
+import { card, facts, headline, table, warnings } from "./results_panel";
+
+/** The plan keys the tab offers (the rest take the server's defaults). */
+export const PLAN_FIELDS = ["stations", "target_coverage", "spacing", "height"] as const;
+export type PlanField = (typeof PLAN_FIELDS)[number];
+
+export interface FieldDeclaration {
+  key: PlanField;
+  /** The server's default, null when it has none (stations: the other question). */
+  default: number | null;
+  min: number | null;
+  max: number | null;
+  unit: string;
+  doc: string;
+}
+
+/** The tab's fields as `hello` declares the `plan` job's keys; null for a key it does not declare. */
+export function planDeclarations(keys: unknown): Map<PlanField, FieldDeclaration> {
+  const out = new Map<PlanField, FieldDeclaration>();
+  const plan = (keys as Record<string, unknown> | null)?.plan;
+  if (typeof plan !== "object" || plan === null) return out;
+  const num = (v: unknown) => (typeof v === "number" && Number.isFinite(v) ? v : null);
+  for (const key of PLAN_FIELDS) {
+    const k = (plan as Record<string, Record<string, unknown> | undefined>)[key];
+    if (typeof k !== "object" || k === null) continue;
+    out.set(key, {
+      key,
+      default: num(k.default),
+      min: num(k.min),
+      max: num(k.max),
+      unit: typeof k.unit === "string" ? k.unit : "",
+      doc: typeof k.doc === "string" ? k.doc : "",
+    });
+  }
+  return out;
+}
+
+/**
+ * The params of a plan from the tab's fields (their text): only what the user
+ * set and what differs from the server's default, as the cloud jobs do, so
+ * an untouched tab plans as `occlusion plan SCENE` would. `stations` and
+ * `target_coverage` are the two questions: a number of stations wins.
+ * Throws an Error naming a field whose text is not a number.
+ */
+export function planJobParams(
+  fields: Partial<Record<PlanField, string>>,
+  declarations: Map<PlanField, FieldDeclaration>,
+): Record<string, unknown> {
+  const params: Record<string, unknown> = {};
+  for (const key of PLAN_FIELDS) {
+    const text = (fields[key] ?? "").trim();
+    if (text === "") continue;
+    const value = Number(text);
+    if (!Number.isFinite(value)) throw new Error(`${key}: '${text}' is not a number`);
+    if (value === declarations.get(key)?.default) continue;
+    params[key] = key === "stations" ? Math.round(value) : value;
+  }
+  if ("stations" in params) delete params.target_coverage;
+  return params;
+}
+
+export interface PlanPanelActions {
+  run(): void;
+  toggleLive(): void;
+}
+
+export class PlanPanel {
+  private readonly inputs = new Map<PlanField, HTMLInputElement>();
+  private readonly form: HTMLElement;
+  private readonly liveButton: HTMLButtonElement;
+  private readonly liveText: HTMLElement;
+  readonly results: HTMLElement;
+  declarations = new Map<PlanField, FieldDeclaration>();
+
+  constructor(container: HTMLElement, actions: PlanPanelActions) {
+    this.form = h("div", { class: "grid grid-cols-2 gap-2 text-xs", testid: "plan-form" });
+    const run = h("button", {
+      class: BUTTON_PRIMARY,
+      text: "Plan stations",
+      testid: "plan-run",
+      title: "Where to put scanner stations: the plan job on this scene",
+      on: { click: () => actions.run() },
+    });
+    this.liveButton = h("button", {
+      class: BUTTON_SMALL,
+      text: "Live station: off",
+      testid: "plan-live",
+      title:
+        "Drag a station (or any viewpoint marker) and see the points it sees, traced on the server",
+      on: { click: () => actions.toggleLive() },
+    });
+    this.liveText = h("span", {
+      class: "text-xs tabular-nums text-slate-300",
+      testid: "live-count",
+    });
+    this.results = h("div", { class: "space-y-3" });
+    container.append(
+      h("div", { class: "space-y-2" }, [
+        this.form,
+        h("div", { class: "flex flex-wrap items-center gap-2" }, [run, this.liveButton]),
+        this.liveText,
+      ]),
+      this.results,
+    );
+    this.declare(new Map());
+  }
+
+  /** Builds the fields from the server's declarations (blank: the server's default). */
+  declare(declarations: Map<PlanField, FieldDeclaration>): void {
+    this.declarations = declarations;
+    clear(this.form);
+    this.inputs.clear();
+    for (const key of PLAN_FIELDS) {
+      const d = declarations.get(key);
+      const input = h("input", {
+        class: INPUT,
+        testid: `plan-${key}`,
+        title: d?.doc ?? "",
+        attrs: {
+          type: "number",
+          placeholder: d?.default !== null && d?.default !== undefined ? String(d.default) : "—",
+          ...(d?.min !== null && d?.min !== undefined ? { min: String(d.min) } : {}),
+          ...(d?.max !== null && d?.max !== undefined ? { max: String(d.max) } : {}),
+          step: "any",
+        },
+      });
+      this.inputs.set(key, input);
+      const label = key.replace("_", " ") + (d?.unit ? ` (${d.unit})` : "");
+      this.form.append(
+        h("label", { class: "flex flex-col gap-0.5 text-slate-400", title: d?.doc ?? "" }, [
+          label,
+          input,
+        ]),
+      );
+    }
+  }
+
+  fields(): Partial<Record<PlanField, string>> {
+    const out: Partial<Record<PlanField, string>> = {};
+    for (const [key, input] of this.inputs) out[key] = input.value;
+    return out;
+  }
+
+  setLive(on: boolean, text: string, visible?: number): void {
+    this.liveButton.textContent = on ? "Live station: on" : "Live station: off";
+    this.liveButton.setAttribute("aria-pressed", String(on));
+    this.liveText.textContent = text;
+    if (visible === undefined) delete this.liveText.dataset.value;
+    else this.liveText.dataset.value = String(visible);
+  }
+
+  show(result: PlanResult, coveredBy: number[] | null, seconds: number | null): void {
+    clear(this.results);
+    this.results.append(planCard(result, coveredBy, seconds));
+  }
+}
+
+export function planCard(
+  result: PlanResult,
+  coveredBy: number[] | null,
+  seconds: number | null,
+): HTMLElement {
+  const question =
+    result.targetCoverage !== null
+      ? `fewest stations for ${percent(result.targetCoverage, 1)}` +
+        (result.targetReached ? " (reached)" : " (not reached)")
+      : `best ${result.stations.filter((s) => !s.existing).length} stations`;
+  const rows = result.stations.map((s) => {
+    const swatch = h("span", {
+      class: "mr-1 inline-block h-2.5 w-2.5 rounded-full align-middle",
+      style: { background: css(stationColour(s.rank)) },
+    });
+    return [
+      h("span", {}, [swatch, `${s.rank}. ${s.name}${s.existing ? " (placed)" : ""}`]),
+      s.position.map((v) => fixed(v, 2)).join(", "),
+      percent(s.gain, 1),
+      percent(s.coverage, 1),
+      ...(coveredBy ? [integer(coveredBy[s.rank] ?? 0)] : []),
+    ];
+  });
+  const candidates = result.candidates;
+  const rejected = Object.entries(candidates.rejected)
+    .filter(([, n]) => n > 0)
+    .map(([why, n]) => `${n} ${why}`)
+    .join(", ");
+  return card(
+    "Scan plan",
+    [
+      headline("Coverage", percent(result.coverage, 1), "plan-coverage", result.coverage),
+      facts([
+        ["Question", question],
+        ["Stations", String(result.stations.length)],
+        [
+          "Candidates",
+          `${candidates.positions.length}${rejected ? ` (refused: ${rejected})` : ""}`,
+        ],
+        ["Targets", result.targets],
+        ...(seconds !== null ? ([["Time", `${seconds.toFixed(2)} s`]] as [string, string][]) : []),
+      ]),
+      h("div", { class: "mt-2 text-xs text-slate-400", text: "Coverage after each station" }),
+      h("div", { class: "mt-1" }, [coverageChart(result.curve, result.targetCoverage)]),
+      table(
+        ["Station", "Position", "Adds", "Coverage", ...(coveredBy ? ["First sees"] : [])],
+        rows,
+        "plan-stations",
+        true,
+        [0, 1],
+      ),
+      result.guarantee
+        ? h("p", { class: "mt-2 text-[11px] text-slate-400", text: result.guarantee })
+        : null,
+      h("p", {
+        class: "mt-1 text-[11px] text-slate-500",
+        text:
+          "Squares on the floor: each candidate's gain left (the ramp's top adds most). " +
+          "Click one to place a station there and plan again.",
+      }),
+      warnings(result.warnings),
+    ],
+    "plan-card",
+  );
+}

@@ -1,0 +1,191 @@
+// Scan planning in the viewer against the real server, in headless Chromium:
+// two rooms joined by no door (a closed wall between them), Plan for the best
+// two stations (one in each room is the known answer), the heat map, numbered
+// stations and the coverage curve drawn; then the live station: dragged from
+// one room to the other its visible count changes, and a burst of positions
+// is traced latest-first, not queued.
+
+import { writeFileSync } from "node:fs";
+import { join } from "node:path";
+import type { Browser, Page } from "playwright-core";
+import { afterAll, beforeAll, describe, expect, test } from "vitest";
+import {
+  launchBrowser,
+  openPage,
+  prepareData,
+  removeData,
+  screenshot,
+  startServer,
+} from "./harness";
+import type { SentRequest, Server } from "./harness";
+
+/** Room A: x in [0, 4]; room B, larger: x in [4, 10]; y in [0, 4], z in [0, 3]; a closed wall at x = 4. */
+function twoRooms(): string {
+  const points: string[] = [];
+  const step = 0.1;
+  const plane = (axis: number, at: number, u: [number, number], v: [number, number]) => {
+    const [ua, va] = axis === 0 ? [1, 2] : axis === 1 ? [0, 2] : [0, 1];
+    for (let u0 = u[0]; u0 <= u[1] + 1e-9; u0 += step) {
+      for (let v0 = v[0]; v0 <= v[1] + 1e-9; v0 += step) {
+        const p = [0, 0, 0];
+        p[axis] = at;
+        p[ua!] = u0;
+        p[va!] = v0;
+        points.push(p.map((x) => x.toFixed(3)).join(" "));
+      }
+    }
+  };
+  plane(2, 0, [0.05, 9.95], [0.05, 3.95]); // floor
+  plane(2, 3, [0.05, 9.95], [0.05, 3.95]); // ceiling
+  plane(1, 0, [0.05, 9.95], [0.05, 2.95]);
+  plane(1, 4, [0.05, 9.95], [0.05, 2.95]);
+  plane(0, 0, [0.05, 3.95], [0.05, 2.95]);
+  plane(0, 10, [0.05, 3.95], [0.05, 2.95]);
+  plane(0, 4, [0.05, 3.95], [0.05, 2.95]); // the wall between the rooms
+  const header = [
+    "ply",
+    "format ascii 1.0",
+    `element vertex ${points.length}`,
+    "property float x",
+    "property float y",
+    "property float z",
+    "end_header",
+  ];
+  return [...header, ...points].join("\n") + "\n";
+}
+
+let server: Server;
+let browser: Browser;
+let page: Page;
+let problems: string[];
+let sent: SentRequest[];
+
+const liveCount = async () =>
+  Number(await page.locator("[data-testid=live-count]").getAttribute("data-value"));
+
+/** Moves a marker as a gizmo drag does (the same event the live station follows). */
+async function drag(name: string, position: number[]): Promise<void> {
+  await page.evaluate(
+    ([marker, p]) => {
+      const markers = (window as any).__occlusion.app.ctx.markers;
+      markers.select(marker);
+      markers.setPosition(marker, p);
+      markers.gizmo.dispatchEvent({ type: "objectChange" });
+    },
+    [name, position] as const,
+  );
+}
+
+describe("scan planning (e2e)", () => {
+  beforeAll(async () => {
+    const data = prepareData();
+    writeFileSync(join(data, "two_rooms.ply"), twoRooms());
+    server = await startServer(data);
+    browser = await launchBrowser();
+    ({ page, problems, sent } = await openPage(browser, `${server.url}/?scene=two_rooms.ply`));
+    await page.locator("[data-testid=connection][data-state=online]").waitFor();
+    await page
+      .locator("[data-testid=status-scene]", { hasText: "two_rooms.ply" })
+      .waitFor({ timeout: 30_000 });
+  });
+
+  afterAll(async () => {
+    await browser?.close().catch(() => undefined);
+    await server?.stop();
+    if (server) removeData(server.dataDir);
+  });
+
+  test("Plan draws the heat map, one numbered station in each room and the curve", async () => {
+    await page.locator("[data-testid=tab-plan]").click();
+    // Its fields start from the server's declarations of the plan keys.
+    const spacing = page.locator("[data-testid=plan-spacing]");
+    expect(Number(await spacing.getAttribute("placeholder"))).toBeGreaterThan(0);
+    await page.locator("[data-testid=plan-stations]").fill("2");
+    await page.locator("[data-testid=btn-plan]").click();
+    const card = page.locator("[data-testid=plan-card]");
+    await card.waitFor({ state: "visible", timeout: 90_000 });
+    const request = [...sent].reverse().find((r) => r.command === "plan")!;
+    expect(request.params.stations).toBe(2);
+    expect(request.params.spacing).toBeUndefined(); // left to the server's default
+
+    const coverage = Number(
+      await card.locator("[data-testid=plan-coverage]").getAttribute("data-value"),
+    );
+    expect(coverage).toBeGreaterThan(0.9);
+    const rows = card.locator("[data-testid=plan-stations] tbody tr");
+    await expect.poll(() => rows.count()).toBe(2);
+    expect(await card.locator("[data-testid=plan-curve] circle").count()).toBe(2);
+    const state = await page.evaluate(() => {
+      const app = (window as any).__occlusion.app;
+      const markers = [...app.ctx.markers.markers.values()];
+      return {
+        squares: app.plan.layer.shown,
+        stations: markers.map((m: any) => ({
+          x: m.object.position.x,
+          badge: m.object.children.some((c: any) => c.userData.badge === true),
+        })),
+      };
+    });
+    expect(state.squares).toBeGreaterThan(10);
+    expect(state.stations).toHaveLength(2);
+    expect(state.stations.every((s) => s.badge)).toBe(true);
+    // The known answer: one station on each side of the wall.
+    expect(state.stations.map((s) => s.x < 4).sort()).toEqual([false, true]);
+    await screenshot(page, "plan-two-rooms");
+  });
+
+  test("the live station's visible count follows it from room to room", async () => {
+    await page.locator("[data-testid=tab-plan]").click();
+    await page.locator("[data-testid=plan-live]").click();
+    // The live station is the selected marker (a planned station, or the first viewpoint).
+    const station = await page.evaluate(
+      () => (window as any).__occlusion.app.ctx.markers.selection as string,
+    );
+    expect(station).toBeTruthy();
+    await expect.poll(liveCount, { timeout: 60_000 }).toBeGreaterThan(0);
+    await drag(station, [2, 2, 1.5]);
+    await expect
+      .poll(() => page.evaluate(() => (window as any).__occlusion.app.plan.lastLive?.visible), {
+        timeout: 30_000,
+      })
+      .toBeGreaterThan(0);
+    await expect
+      .poll(() => page.evaluate(() => (window as any).__occlusion.app.plan.live.busy))
+      .toBe(false);
+    const inA = await liveCount();
+    await drag(station, [7, 2, 1.5]);
+    await expect.poll(liveCount, { timeout: 30_000 }).not.toBe(inA);
+    const inB = await liveCount();
+    // Room B is larger: more of the cloud is in sight from it.
+    expect(inB).toBeGreaterThan(inA);
+    const legend = await page.locator("[data-testid=legend]").textContent();
+    expect(legend?.length ?? 0).toBeGreaterThan(0);
+    await screenshot(page, "plan-live-station");
+
+    // A burst of positions: traced latest-first, ending where the marker ends.
+    await expect
+      .poll(() => page.evaluate(() => (window as any).__occlusion.app.plan.live.busy))
+      .toBe(false);
+    const before = sent.filter((r) => r.command === "station_view").length;
+    await page.evaluate((name) => {
+      const markers = (window as any).__occlusion.app.ctx.markers;
+      markers.select(name);
+      for (let k = 0; k <= 20; ++k) {
+        markers.setPosition(name, k < 20 ? [6 + 0.05 * k, 2, 1.5] : [2, 2, 1.5]);
+        markers.gizmo.dispatchEvent({ type: "objectChange" });
+      }
+    }, station);
+    await expect.poll(liveCount, { timeout: 30_000 }).toBe(inA);
+    await expect
+      .poll(() => page.evaluate(() => (window as any).__occlusion.app.plan.live.busy))
+      .toBe(false);
+    const traced = sent.filter((r) => r.command === "station_view").length - before;
+    // The first position at once, then only the last one: the 19 between were replaced.
+    expect(traced).toBe(2);
+    const last = [...sent].reverse().find((r) => r.command === "station_view")!;
+    expect(last.params.position).toEqual([2, 2, 1.5]);
+    const latency = await page.evaluate(() => (window as any).__occlusion.app.plan.lastLive);
+    console.log(`live station: ${JSON.stringify(latency)}, ${traced} of 21 positions traced`);
+    expect(problems).toEqual([]);
+  });
+});
