@@ -1,5 +1,6 @@
 #include "surface_sampler.hpp"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 

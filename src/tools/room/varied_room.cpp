@@ -63,11 +63,12 @@ class Builder {
     add_openings(count(1, hallway ? 3 : 2), count(hallway ? 0 : 1, open ? 5 : 3));
     add_beams(chance(0.5) ? count(1, 3) : 0);
     add_columns(count(0, open || conference ? 2 : 1));
+    // Tables first among the furniture: they need the most room.
+    const int tables = hallway ? 0 : (conference ? 1 : count(1, open ? 5 : 2));
+    for (int t = 0; t < tables; ++t) add_table_with_chairs(conference);
     add_boards(count(conference ? 1 : 0, conference || open ? 2 : 1));
     add_bookcases(count(hallway ? 0 : 1, open ? 3 : 2));
     add_sofas(count(conference ? 0 : (kind == "lounge" ? 1 : 0), open ? 2 : 1));
-    const int tables = hallway ? 0 : (conference ? 1 : count(1, open ? 5 : 2));
-    for (int t = 0; t < tables; ++t) add_table_with_chairs(conference);
     for (int c = count(hallway ? 1 : 0, 3); c > 0; --c) add_free_chair();
     for (int c = count(2, open ? 9 : 5); c > 0; --c) add_floor_clutter();
     for (std::size_t t = 0; t < table_tops_.size(); ++t) {
