@@ -43,8 +43,7 @@ class SegmenterWorker {
   // waits for its answer. Throws Cancelled (the worker killed) on cancel,
   // std::runtime_error when no process can be started.
   WorkerAnswer request(const std::string& command, const std::string& input,
-                       const std::string& output, double timeout_seconds,
-                       const Progress& progress);
+                       const std::string& output, double timeout_seconds, const Progress& progress);
 
   // How many processes this object has started: 1 for a study whose worker
   // never died.

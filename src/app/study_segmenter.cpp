@@ -139,8 +139,7 @@ void pair_with_scan(Prediction& prediction, const PointCloud& scanned,
 
 // The prediction `prediction_path` holds, read and paired with the scan.
 Prediction checked_prediction(const StudyRequest& request, const PointCloud& scanned,
-                              const std::string& prediction_path,
-                              const std::string& output_tail) {
+                              const std::string& prediction_path, const std::string& output_tail) {
   if (!std::filesystem::exists(prediction_path)) {
     throw RunFailure("the segmenter wrote nothing to {output} (" + prediction_path + ")",
                      output_tail);

@@ -74,8 +74,8 @@ auto whole_text_number(const std::string& text, Convert convert) {
 }
 
 double number(const std::string& text) {
-  return whole_text_number(text,
-                           [](const std::string& t, std::size_t* end) { return std::stod(t, end); });
+  return whole_text_number(
+      text, [](const std::string& t, std::size_t* end) { return std::stod(t, end); });
 }
 
 bool plain_folder_name(const std::string& name) {
@@ -135,8 +135,9 @@ Options parse(int argc, char** argv) {
   if (options.dataset) {
     if (!(options.rooms >= 1 && options.rooms <= 10000)) usage("--rooms must be in [1, 10000]");
     if (named || !options.openings.empty() || options.varied) {
-      usage("--dataset names its rooms and writes their openings itself: drop --name, "
-            "--openings and --varied");
+      usage(
+          "--dataset names its rooms and writes their openings itself: drop --name, "
+          "--openings and --varied");
     }
     if (!plain_folder_name(options.area)) usage("--area must be a plain folder name");
   } else if (options.rooms != 0) {
@@ -160,8 +161,8 @@ void write_dataset(const Options& options) {
     if (!made.openings.empty()) {
       occlusion::write_polygons((fs::path(openings) / (name + ".txt")).string(), made.openings);
     }
-    table += name + "\t" + made.kind + "\t" + std::to_string(seed) + "\t" +
-             std::to_string(points) + "\n";
+    table += name + "\t" + made.kind + "\t" + std::to_string(seed) + "\t" + std::to_string(points) +
+             "\n";
     total += points;
   }
   occlusion::write_file_atomically((fs::path(options.out_dir) / "rooms.tsv").string(),

@@ -48,7 +48,9 @@ std::string cell(const CsvTable& table, std::size_t row, const std::string& colu
   return table.rows.at(row).at(table.column(column));
 }
 
-double miou(const CsvTable& table, std::size_t row) { return std::stod(cell(table, row, "miou")); }
+double miou(const CsvTable& table, std::size_t row) {
+  return std::stod(cell(table, row, "miou"));
+}
 
 TEST(StudyWorker, IsStartedOncePerStudyAndEveryRunScores) {
   const ScratchDirectory dir;

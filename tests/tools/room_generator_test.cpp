@@ -31,8 +31,8 @@ using testing::ScratchDirectory;
 const std::string kSource = OCCLUSION_SOURCE_DIR;
 const std::string kTool = GENERATE_S3DIS_ROOM_PATH;
 
-const std::vector<std::string> kS3disClasses{"ceiling", "floor", "wall",  "beam",     "column",
-                                             "window",  "door",  "table", "chair",    "sofa",
+const std::vector<std::string> kS3disClasses{"ceiling",  "floor", "wall",   "beam",  "column",
+                                             "window",   "door",  "table",  "chair", "sofa",
                                              "bookcase", "board", "clutter"};
 
 Eigen::AlignedBox3d bounds(const std::vector<room::Instance>& instances) {

@@ -99,8 +99,8 @@ FloorPlan random_floor_plan(Rng& rng) {
     const double notch_x = width - between(rng, 0.35, 0.55) * width;
     const double notch_y = depth - between(rng, 0.35, 0.55) * depth;
     plan.pieces = {{0, 0, width, notch_y}, {0, notch_y, notch_x, depth}};
-    plan.walls = walls_of({{0, 0}, {width, 0}, {width, notch_y}, {notch_x, notch_y},
-                           {notch_x, depth}, {0, depth}});
+    plan.walls = walls_of(
+        {{0, 0}, {width, 0}, {width, notch_y}, {notch_x, notch_y}, {notch_x, depth}, {0, depth}});
   } else {
     plan.pieces = {{0, 0, width, depth}};
     plan.walls = walls_of({{0, 0}, {width, 0}, {width, depth}, {0, depth}});

@@ -26,7 +26,8 @@ std::vector<Part> furniture() {
   const Box top{{2.2, 1.9, 0.71}, {3.8, 2.7, 0.75}};
   std::vector<Box> table{top};
   for (const double x : {2.25, 3.75 - leg}) {
-    for (const double y : {1.95, 2.65 - leg}) table.push_back({{x, y, 0}, {x + leg, y + leg, 0.71}});
+    for (const double y : {1.95, 2.65 - leg})
+      table.push_back({{x, y, 0}, {x + leg, y + leg, 0.71}});
   }
   parts.push_back({"table", table, {0, kMinZ, kMinZ, kMinZ, kMinZ}, {178, 138, 88}});
 
@@ -51,8 +52,10 @@ std::vector<Part> furniture() {
     parts.push_back({"chair", boxes, {0, kMinZ, kMinZ, kMinZ, kMinZ, 0}, {58, 60, 72}});
   }
 
-  parts.push_back(
-      {"bookcase", {{{kRoomX - 0.38, 2.8, 0}, {kRoomX, 4.0, 2.0}}}, {kMaxX | kMinZ}, {118, 80, 50}});
+  parts.push_back({"bookcase",
+                   {{{kRoomX - 0.38, 2.8, 0}, {kRoomX, 4.0, 2.0}}},
+                   {kMaxX | kMinZ},
+                   {118, 80, 50}});
   parts.push_back({"board", {{{1.8, 0, 0.9}, {3.8, 0.02, 2.1}}}, {kMinY}, {248, 248, 246}});
 
   parts.push_back(

@@ -12,8 +12,8 @@ namespace {
 
 using Family = std::vector<Colour>;
 
-const Family kNeutral{{232, 232, 226}, {214, 210, 200}, {190, 190, 186}, {245, 243, 238},
-                      {170, 168, 160}};
+const Family kNeutral{
+    {232, 232, 226}, {214, 210, 200}, {190, 190, 186}, {245, 243, 238}, {170, 168, 160}};
 const Family kPastel{{226, 206, 170}, {210, 190, 160}, {200, 214, 220}, {196, 210, 190}};
 const Family kWood{{178, 138, 88}, {148, 98, 58}, {118, 80, 50}, {196, 160, 110}, {90, 62, 40}};
 const Family kDark{{38, 38, 42}, {58, 60, 72}, {70, 70, 70}, {30, 40, 60}};
@@ -51,8 +51,8 @@ Colour object_colour(const std::string& class_name, Rng& rng) {
   const Family& family = *found->second[pick(rng, found->second.size())];
   Colour colour = family[pick(rng, family.size())];
   for (int& channel : colour) {
-    channel = std::clamp(channel + static_cast<int>(std::lround(rng.uniform() * 50.0 - 25.0)), 0,
-                         255);
+    channel =
+        std::clamp(channel + static_cast<int>(std::lround(rng.uniform() * 50.0 - 25.0)), 0, 255);
   }
   return colour;
 }

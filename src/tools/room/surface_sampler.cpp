@@ -19,7 +19,8 @@ SurfaceSampler::SurfaceSampler(std::uint64_t seed, double spacing, double sensor
 
 void SurfaceSampler::set_solids(const std::vector<Part>& parts) {
   solids_.clear();
-  for (const Part& part : parts) solids_.insert(solids_.end(), part.boxes.begin(), part.boxes.end());
+  for (const Part& part : parts)
+    solids_.insert(solids_.end(), part.boxes.begin(), part.boxes.end());
 }
 
 Instance& SurfaceSampler::start(std::vector<Instance>& instances, const std::string& class_name) {

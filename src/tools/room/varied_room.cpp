@@ -116,9 +116,9 @@ class Builder {
   // and of what stands there already (with `clearance` around it).
   std::optional<Spot> wall_spot(double width, double depth, double clearance) {
     for (int attempt = 0; attempt < 40; ++attempt) {
-      const std::size_t w = std::min(plan_.walls.size() - 1,
-                                     static_cast<std::size_t>(layout_.uniform() *
-                                                              static_cast<double>(plan_.walls.size())));
+      const std::size_t w = std::min(
+          plan_.walls.size() - 1,
+          static_cast<std::size_t>(layout_.uniform() * static_cast<double>(plan_.walls.size())));
       const Wall& wall = plan_.walls[w];
       if (wall.length < width + 0.4) continue;
       const double s = between(0.2, wall.length - width - 0.2);
@@ -163,9 +163,9 @@ class Builder {
       const bool door = i < doors;
       const double width = door ? between(0.8, 1.0) : between(0.8, 2.4);
       for (int attempt = 0; attempt < 40; ++attempt) {
-        const std::size_t w = std::min(plan_.walls.size() - 1,
-                                       static_cast<std::size_t>(layout_.uniform() *
-                                                                static_cast<double>(plan_.walls.size())));
+        const std::size_t w = std::min(
+            plan_.walls.size() - 1,
+            static_cast<std::size_t>(layout_.uniform() * static_cast<double>(plan_.walls.size())));
         const Wall& wall = plan_.walls[w];
         if (wall.length < width + 0.5) continue;
         const double s = between(0.25, wall.length - width - 0.25);
@@ -197,8 +197,9 @@ class Builder {
       const Rect& piece = plan_.pieces[plan_.pieces.size() == 2 && chance(0.5) ? 1 : 0];
       // Beams across y (at some x) need walls at both y ends: in an L's
       // lower leg only east of the notch.
-      const bool across_y = plan_.pieces.size() == 2 ? &piece == &plan_.pieces[0]
-                                                     : (piece.x1 - piece.x0) > (piece.y1 - piece.y0);
+      const bool across_y = plan_.pieces.size() == 2
+                                ? &piece == &plan_.pieces[0]
+                                : (piece.x1 - piece.x0) > (piece.y1 - piece.y0);
       if (across_y) {
         const double lo = plan_.pieces.size() == 2 ? plan_.pieces[1].x1 + 0.3 : piece.x0 + 0.5;
         if (piece.x1 - 0.5 - width <= lo) continue;
@@ -262,7 +263,8 @@ class Builder {
       if (chance(0.4)) {  // a box on top
         const double w = between(0.2, std::min(0.6, width - 0.1));
         const double s = spot->s + between(0.05, width - w - 0.05);
-        add("clutter", {wall_box(wall, s, s + w, 0.02, depth - 0.02, height, height + between(0.1, 0.3))},
+        add("clutter",
+            {wall_box(wall, s, s + w, 0.02, depth - 0.02, height, height + between(0.1, 0.3))},
             {kMinZ});
       }
     }
@@ -455,10 +457,9 @@ class Builder {
       }
       const Wall& wall = plan_.walls[o.wall];
       const double z0 = std::max(0.0, o.z0);
-      room.openings.push_back({wall.at(o.s0) + Vector3d(0, 0, z0),
-                               wall.at(o.s1) + Vector3d(0, 0, z0),
-                               wall.at(o.s1) + Vector3d(0, 0, o.z1),
-                               wall.at(o.s0) + Vector3d(0, 0, o.z1)});
+      room.openings.push_back(
+          {wall.at(o.s0) + Vector3d(0, 0, z0), wall.at(o.s1) + Vector3d(0, 0, z0),
+           wall.at(o.s1) + Vector3d(0, 0, o.z1), wall.at(o.s0) + Vector3d(0, 0, o.z1)});
     }
     sampler_.parts(out, parts_);
     return room;
