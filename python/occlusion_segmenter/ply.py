@@ -23,7 +23,8 @@ def read_vertices(path):
         data = stream.read()
     end = data.find(b"end_header")
     if not data.startswith(b"ply") or end < 0:
-        raise PlyError(f"{path}: not a PLY file (no 'ply' magic or end_header)")
+        raise PlyError(f"{path}: not a PLY file (no 'ply' magic or "
+                       "end_header)")
     body = data.index(b"\n", end) + 1
     header = data[:body].decode("ascii", "replace").splitlines()
     fmt = None

@@ -1,4 +1,7 @@
-"""Labelled rooms in the S3DIS layout (Area_N/<room>/Annotations/<class>_<k>.txt)."""
+"""Labelled rooms in the S3DIS layout.
+
+AREA/<room>/Annotations/<class>_<k>.txt, x y z r g b per line.
+"""
 
 import os
 

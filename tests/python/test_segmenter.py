@@ -92,7 +92,8 @@ def test_the_study_loads_the_model_once_and_scores(dataset, tmp_path):
     worker = (f"worker: PYTHONPATH={ROOT / 'python'} {sys.executable} -m "
               f"occlusion_segmenter serve {checkpoint}")
     result = subprocess.run(
-        [str(occlusion), "study", "--scene", room, "--pattern", "7", "--pattern", "1",
+        [str(occlusion), "study", "--scene", room,
+         "--pattern", "7", "--pattern", "1",
          "--num-rays-per-vp", "300", "--point-radius", "0.2",
          "--segmenter", worker, "--out", str(tmp_path / "study")],
         capture_output=True, text=True)
