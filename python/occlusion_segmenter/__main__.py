@@ -114,8 +114,12 @@ def main(argv=None):
     if args.command == "infer":
         _segment_file(model, to_ids, args.input, args.output)
         return 0
-    # The protocol owns stdout; anything else printed goes to stderr.
-    answers = os.fdopen(os.dup(sys.stdout.fileno()), "w")
+    # The protocol owns stdout: answers go to a copy of it, and file
+    # descriptor 1 becomes stderr, so that nothing else printed (by Python
+    # or by torch's C++) can pass for an answer.
+    sys.stdout.flush()
+    answers = os.fdopen(os.dup(1), "w")
+    os.dup2(2, 1)
     sys.stdout = sys.stderr
     serve(model, to_ids, sys.stdin, answers)
     return 0
