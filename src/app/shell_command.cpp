@@ -15,9 +15,15 @@ namespace occlusion::job {
 
 namespace {
 
-// Forwards what the command wrote since the last call to our stderr and keeps
-// its tail. Non-blocking: returns when the pipe is empty.
-void drain(int fd, std::string& tail) {
+void kill_group(pid_t pid, int& status) {
+  ::kill(-pid, SIGKILL);
+  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+}
+
+}  // namespace
+
+void forward_output(int fd, std::string& tail) {
   char buffer[4096];
   for (;;) {
     const ssize_t got = ::read(fd, buffer, sizeof buffer);
@@ -33,14 +39,6 @@ void drain(int fd, std::string& tail) {
     if (tail.size() > kShellOutputTail) tail.erase(0, tail.size() - kShellOutputTail);
   }
 }
-
-void kill_group(pid_t pid, int& status) {
-  ::kill(-pid, SIGKILL);
-  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-  }
-}
-
-}  // namespace
 
 std::string shell_quote(const std::string& text) {
   std::string quoted = "'";
@@ -88,7 +86,7 @@ ShellResult run_shell_command(const std::string& command, const Progress& progre
   ShellResult result;
   int status = 0;
   for (;;) {
-    drain(output, result.output_tail);
+    forward_output(output, result.output_tail);
     const pid_t done = ::waitpid(pid, &status, WNOHANG);
     if (done == pid) break;
     if (done < 0 && errno != EINTR) {
@@ -110,7 +108,7 @@ ShellResult run_shell_command(const std::string& command, const Progress& progre
   }
   // What the shell wrote just before it ended; a child it left behind that
   // still holds the pipe does not hold us up (non-blocking).
-  drain(output, result.output_tail);
+  forward_output(output, result.output_tail);
   ::close(output);
   if (WIFEXITED(status)) {
     result.status = WEXITSTATUS(status);

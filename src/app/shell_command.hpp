@@ -1,14 +1,22 @@
 #pragma once
 // Running a command the user wrote (the study's --segmenter), internal to app/.
 
+#include <cstddef>
 #include <string>
 
 #include "occlusion/core/progress.hpp"
 
 namespace occlusion::job {
 
+inline constexpr std::size_t kShellOutputTail = 2000;
+
 // `text` as one shell word: 'it'\''s' for it's.
 std::string shell_quote(const std::string& text);
+
+// Forwards what a child wrote on `fd` since the last call to our stderr and
+// keeps its last kShellOutputTail bytes in `tail`. `fd` must be non-blocking:
+// returns when it is empty.
+void forward_output(int fd, std::string& tail);
 
 struct ShellResult {
   // The exit status; a command killed by signal s gives 128 + s, as the
@@ -19,7 +27,6 @@ struct ShellResult {
   // stderr: why it failed, for a report.
   std::string output_tail;
 };
-inline constexpr std::size_t kShellOutputTail = 2000;
 
 // Runs `command` with /bin/sh -c in its own process group, stdin from
 // /dev/null and its stdout and stderr forwarded to our stderr (our stdout

@@ -86,16 +86,18 @@ const Keys<StudyRequest>& study_keys() {
                 "scene, the points the scan missed counting as misses of their class"),
        key("segmenter", &R::segmenter)
            .metavar("CMD")
-           .doc("'baseline' (a geometric baseline on the region-growing planes, not a network) "
-                "or a command with {input} (the scanned cloud) and {output} (its prediction in "
-                "evaluation ids, as segmenter_output says), e.g. 'python infer.py {input} "
-                "{output}'"),
+           .doc("'baseline' (a geometric baseline on the region-growing planes, not a network); "
+                "a command with {input} (the scanned cloud) and {output} (its prediction in "
+                "evaluation ids, as segmenter_output says), run once per run, e.g. 'python "
+                "infer.py {input} {output}'; or 'worker: COMMAND', started once per study, "
+                "that reads one 'INPUT<TAB>OUTPUT' line per run on stdin, writes OUTPUT and "
+                "answers 'ok' on stdout (docs/study.md)"),
        key("segmenter_timeout", &R::segmenter_timeout)
            .range(0, 1e9)
            .unit("seconds")
            .metavar("S")
-           .doc("a segmenter still running after S seconds is killed and its run fails; 0: no "
-                "limit"),
+           .doc("a segmenter still running after S seconds is killed and its run fails (a "
+                "worker: S per run, its start-up included in its first); 0: no limit"),
        key("skip_failed", &R::skip_failed)
            .doc("a resumed study leaves failed runs as they are instead of retrying them"),
        key("fresh", &R::fresh)

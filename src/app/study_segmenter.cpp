@@ -1,4 +1,5 @@
-// The study's segmentation step: the built-in baseline, or the user's command.
+// The study's segmentation step: the built-in baseline, the user's command
+// run once per run, or the user's persistent worker (segmenter_worker.hpp).
 
 #include <filesystem>
 
@@ -136,30 +137,9 @@ void pair_with_scan(Prediction& prediction, const PointCloud& scanned,
   prediction.positions.clear();
 }
 
-Prediction external(const StudyContext& context, const PointCloud& scanned,
-                    const std::string& scanned_path, const std::string& stem,
-                    const Progress& progress, std::string& prediction_path,
-                    std::string& output_tail) {
-  const StudyRequest& request = context.request;
-  prediction_path =
-      (std::filesystem::path(context.runs_dir) / (stem + ".prediction." + request.segmenter_output))
-          .string();
-  // A stale prediction of an earlier attempt must not pass for this one's.
-  std::filesystem::remove(prediction_path);
-  const std::string command =
-      replaced(replaced(request.segmenter, kInput, shell_quote(scanned_path)), kOutput,
-               shell_quote(prediction_path));
-  const ShellResult result = run_shell_command(command, progress, request.segmenter_timeout);
-  output_tail = one_line(result.output_tail);
-  if (result.timed_out) {
-    throw RunFailure("the segmenter timed out after " + std::to_string(request.segmenter_timeout) +
-                         " s (segmenter_timeout) and was killed",
-                     output_tail);
-  }
-  if (result.status != 0) {
-    throw RunFailure("the segmenter failed (exit status " + std::to_string(result.status) + ")",
-                     output_tail);
-  }
+// The prediction `prediction_path` holds, read and paired with the scan.
+Prediction checked_prediction(const StudyRequest& request, const PointCloud& scanned,
+                              const std::string& prediction_path, const std::string& output_tail) {
   if (!std::filesystem::exists(prediction_path)) {
     throw RunFailure("the segmenter wrote nothing to {output} (" + prediction_path + ")",
                      output_tail);
@@ -182,6 +162,54 @@ Prediction external(const StudyContext& context, const PointCloud& scanned,
   return prediction;
 }
 
+void run_command(const StudyRequest& request, const std::string& scanned_path,
+                 const std::string& prediction_path, const Progress& progress,
+                 std::string& output_tail) {
+  const std::string command =
+      replaced(replaced(request.segmenter, kInput, shell_quote(scanned_path)), kOutput,
+               shell_quote(prediction_path));
+  const ShellResult result = run_shell_command(command, progress, request.segmenter_timeout);
+  output_tail = one_line(result.output_tail);
+  if (result.timed_out) {
+    throw RunFailure("the segmenter timed out after " + std::to_string(request.segmenter_timeout) +
+                         " s (segmenter_timeout) and was killed",
+                     output_tail);
+  }
+  if (result.status != 0) {
+    throw RunFailure("the segmenter failed (exit status " + std::to_string(result.status) + ")",
+                     output_tail);
+  }
+}
+
+void ask_worker(const StudyContext& context, const std::string& scanned_path,
+                const std::string& prediction_path, const Progress& progress,
+                std::string& output_tail) {
+  std::string command;
+  is_worker_segmenter(context.request.segmenter, &command);
+  const WorkerAnswer answer = context.worker->request(command, scanned_path, prediction_path,
+                                                      context.request.segmenter_timeout, progress);
+  output_tail = one_line(answer.output_tail);
+  if (!answer.ok) throw RunFailure(answer.failure, output_tail);
+}
+
+Prediction external(const StudyContext& context, const PointCloud& scanned,
+                    const std::string& scanned_path, const std::string& stem,
+                    const Progress& progress, std::string& prediction_path,
+                    std::string& output_tail) {
+  const StudyRequest& request = context.request;
+  prediction_path =
+      (std::filesystem::path(context.runs_dir) / (stem + ".prediction." + request.segmenter_output))
+          .string();
+  // A stale prediction of an earlier attempt must not pass for this one's.
+  std::filesystem::remove(prediction_path);
+  if (is_worker_segmenter(request.segmenter)) {
+    ask_worker(context, scanned_path, prediction_path, progress, output_tail);
+  } else {
+    run_command(request, scanned_path, prediction_path, progress, output_tail);
+  }
+  return checked_prediction(request, scanned, prediction_path, output_tail);
+}
+
 }  // namespace
 
 std::string segmenter_name(const std::string& segmenter) {
@@ -190,11 +218,23 @@ std::string segmenter_name(const std::string& segmenter) {
 
 void validate_segmenter(const StudyRequest& request) {
   if (is_baseline(request.segmenter)) return;
+  std::string worker;
+  if (is_worker_segmenter(request.segmenter, &worker)) {
+    if (worker.empty() || worker.find(kInput) != std::string::npos ||
+        worker.find(kOutput) != std::string::npos) {
+      throw KeyError("segmenter",
+                     "a worker is 'worker: COMMAND', a command that reads one 'INPUT<TAB>OUTPUT' "
+                     "line per run on stdin and answers 'ok' (no {input} or {output} in it: "
+                     "each run's paths come on its stdin), got '" +
+                         request.segmenter + "'");
+    }
+    return;
+  }
   if (request.segmenter.find(kInput) == std::string::npos ||
       request.segmenter.find(kOutput) == std::string::npos) {
     throw KeyError("segmenter",
-                   "must be 'baseline' or a command with {input} and {output} in it "
-                   "(e.g. 'python infer.py {input} {output}'), got '" +
+                   "must be 'baseline', a command with {input} and {output} in it "
+                   "(e.g. 'python infer.py {input} {output}') or 'worker: COMMAND', got '" +
                        request.segmenter + "'");
   }
 }

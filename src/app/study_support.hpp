@@ -5,6 +5,7 @@
 
 #include <json/value.h>
 
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -15,6 +16,7 @@
 #include "occlusion/app/scan_job.hpp"
 #include "occlusion/app/study_job.hpp"
 #include "occlusion/core/polygon.hpp"
+#include "segmenter_worker.hpp"
 
 namespace occlusion::job {
 
@@ -25,6 +27,9 @@ struct StudyContext {
   std::vector<PlanarPolygon> openings;
   std::string runs_dir;        // OUT/runs: scanned clouds and predictions
   Json::Value row_parameters;  // row_parameters(request), for the fingerprints
+  // A "worker: COMMAND" segmenter's process, kept from run to run and ended
+  // with the study (segmenter_worker.hpp).
+  std::shared_ptr<SegmenterWorker> worker = idle_segmenter_worker();
 };
 
 // Why one run failed on its own (the segmenter crashed, timed out or wrote a
@@ -82,8 +87,9 @@ Prediction segment_scanned_cloud(const StudyContext& context, const PointCloud& 
                                  const std::string& scanned_path, const std::string& stem,
                                  const Progress& progress, std::string& prediction_path,
                                  std::string& output_tail, std::vector<std::string>& warnings);
-// UsageError unless the segmenter is the baseline or a template with {input}
-// and {output}, and segmenter_output an extension -eval reads.
+// UsageError unless the segmenter is the baseline, a template with {input}
+// and {output}, or "worker: COMMAND" (neither in it), and segmenter_output an
+// extension -eval reads.
 void validate_segmenter(const StudyRequest& request);
 
 // Every parameter that changes a row's figures (not the scenes, the

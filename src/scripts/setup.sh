@@ -20,6 +20,10 @@ packages=(
   clang-14 libfuzzer-14-dev libclang-rt-14-dev
   # The Python module (src/python) and its tests.
   pybind11-dev python3-dev python3-numpy python3-pytest
+  # The learned reference segmenter (python/occlusion_segmenter, docs/study.md).
+  # libopenblas0-pthread: with Debian's reference BLAS torch is ~40x slower
+  # (a 2000^3 matmul 8.4 s instead of 0.2 s; 127 s a training epoch).
+  python3-torch libopenblas0-pthread
 )
 if [[ "${1:-}" == "--bench" ]]; then
   packages+=(libembree-dev)

@@ -15,10 +15,19 @@ MODE: truth (the ground truth, points in reverse order), wall (evaluation id
 5), and two that write a bare label file whatever OUTPUT's extension:
 labels_in_order (the ground truth) and off_by_one (the ground truth one line
 late: the last point's label first). Only the standard library.
+
+    python3 study_segmenter.py serve MODE STARTS [MISBEHAVIOUR RUN_TEXT]
+
+is the same as a persistent worker (segmenter "worker: ..."): it appends a
+line to STARTS when it starts, then reads "INPUT<TAB>OUTPUT" lines on stdin,
+answers "ok" for each, and exits at the end of stdin. MISBEHAVIOUR, for an
+input path containing RUN_TEXT: die (exit 9 without answering), hang (no
+answer), or refuse (answers "cannot segment this").
 """
 
 import struct
 import sys
+import time
 
 # Table 3.1's evaluation ids of S3DIS's classes (docs/metrics.md).
 EVALUATION_IDS = {
@@ -84,8 +93,32 @@ def write_ply(path, points, coordinate_type, comments):
             f.write(record.pack(*point))
 
 
+def serve(mode, starts, misbehaviour=None, run_text=None):
+    with open(starts, "a") as f:
+        f.write("started\n")
+    for line in sys.stdin:
+        input_path, output_path = line.rstrip("\n").split("\t")
+        if run_text is not None and run_text in input_path:
+            if misbehaviour == "die":
+                print("worker dying", file=sys.stderr)
+                sys.exit(9)
+            if misbehaviour == "hang":
+                time.sleep(3600)
+            if misbehaviour == "refuse":
+                print("cannot segment this", flush=True)
+                continue
+        segment(mode, input_path, output_path)
+        print("ok", flush=True)
+
+
 def main():
-    mode, input_path, output_path = sys.argv[1:4]
+    if sys.argv[1] == "serve":
+        serve(*sys.argv[2:])
+        return
+    segment(*sys.argv[1:4])
+
+
+def segment(mode, input_path, output_path):
     if mode == "binary_failure":
         # Invalid UTF-8, NUL, an escape sequence, a C1 byte, a cut sequence.
         sys.stderr.buffer.write(b"model crashed \xff\xfe\x00\x1b[31m\x9b\xc3(")
@@ -128,6 +161,7 @@ def main():
                          for x, y, z, v in points)
     else:
         write_ply(output_path, points, coordinate_type, comments)
+
 
 if __name__ == "__main__":
     main()

@@ -1,0 +1,44 @@
+#pragma once
+// What a generated room is made of: labelled instances of coloured points,
+// sampled from axis-aligned boxes and rectangles.
+
+#include <Eigen/Core>
+#include <array>
+#include <string>
+#include <vector>
+
+namespace occlusion::room {
+
+using Colour = std::array<int, 3>;
+
+struct Box {
+  Eigen::Vector3d lo, hi;
+  bool contains(const Eigen::Vector3d& p, double margin) const {
+    return (p.array() > lo.array() - margin).all() && (p.array() < hi.array() + margin).all();
+  }
+};
+
+// Axis-aligned box faces, to leave out those resting on the floor or a wall.
+enum Face : unsigned { kMinX = 1, kMaxX = 2, kMinY = 4, kMaxY = 8, kMinZ = 16, kMaxZ = 32 };
+
+struct Point {
+  Eigen::Vector3d position;
+  Colour colour;
+};
+
+// One object: an S3DIS class name and its points.
+struct Instance {
+  std::string class_name;
+  std::vector<Point> points;
+};
+
+// A piece of furniture before sampling: its boxes hide the surfaces they
+// touch, so every part is registered before any surface is sampled.
+struct Part {
+  std::string class_name;
+  std::vector<Box> boxes;
+  std::vector<unsigned> skipped_faces;  // per box; missing entries skip none
+  Colour colour;
+};
+
+}  // namespace occlusion::room
