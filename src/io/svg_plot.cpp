@@ -137,7 +137,7 @@ void check(const ScatterPanel& panel) {
                                 "' has a value that is not finite");
   }
   if (panel.y_range) {
-    const auto [lo, hi] = *panel.y_range;
+    const double lo = panel.y_range->first, hi = panel.y_range->second;
     if (!(lo < hi) || !std::isfinite(lo) || !std::isfinite(hi) ||
         std::any_of(panel.y.begin(), panel.y.end(), [&](double v) { return v < lo || v > hi; })) {
       throw std::invalid_argument("scatter_plot_svg: panel '" + panel.title +
