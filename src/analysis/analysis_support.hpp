@@ -12,6 +12,7 @@
 
 #include "occlusion/analysis/surfel_estimation.hpp"
 #include "occlusion/core/point_cloud.hpp"
+#include "occlusion/core/ray.hpp"
 
 namespace occlusion::analysis_support {
 
@@ -19,6 +20,17 @@ using Clock = std::chrono::steady_clock;
 
 inline double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// A ray nothing can block (its interval [1, 0] is empty): the slot of a
+// target that needs no ray (a sample on the viewpoint) in a block traced whole.
+inline Ray unblockable_ray(const Eigen::Vector3d& from) {
+  Ray ray;
+  ray.origin = from.cast<float>();
+  ray.direction = Eigen::Vector3f::UnitX();
+  ray.t_min = 1.0f;
+  ray.t_max = 0.0f;
+  return ray;
 }
 
 // Throws std::invalid_argument("<analysis>: ...") for no viewpoints or a non-finite one.

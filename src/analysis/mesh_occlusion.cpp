@@ -24,16 +24,6 @@ constexpr std::size_t kRaysPerBlock = std::size_t{1} << 16;
 // Rays made per task: enough to outweigh handing out the task.
 constexpr std::size_t kMadeRaysGrain = 4096;
 
-// A ray nothing can block: its interval [1, 0] is empty.
-Ray unblockable_ray(const Eigen::Vector3d& from) {
-  Ray ray;
-  ray.origin = from.cast<float>();
-  ray.direction = Eigen::Vector3f::UnitX();
-  ray.t_min = 1.0f;
-  ray.t_max = 0.0f;
-  return ray;
-}
-
 void check_inputs(const TriangleMesh& mesh, const std::vector<Eigen::Vector3d>& viewpoints,
                   const MeshOcclusionOptions& options) {
   mesh.validate();
@@ -143,7 +133,7 @@ MeshOcclusionResult compute_mesh_occlusion(const TriangleMesh& mesh,
                      const std::size_t v = i / count, s = first + i % count;
                      if (!mesh_shadow_ray(samples.points[s] - origin, local_viewpoints[v], epsilon,
                                           rays[i], reach)) {
-                       rays[i] = unblockable_ray(local_viewpoints[v]);
+                       rays[i] = analysis_support::unblockable_ray(local_viewpoints[v]);
                      }
                      ignore[i] = samples.face[s];
                    }

@@ -19,16 +19,6 @@ using analysis_support::seconds_since;
 // Rays made per task: enough to outweigh handing out the task.
 constexpr std::size_t kRayGrain = 4096;
 
-// A ray nothing can block: its interval [1, 0] is empty.
-Ray unblockable_ray(const Eigen::Vector3d& from) {
-  Ray ray;
-  ray.origin = from.cast<float>();
-  ray.direction = Eigen::Vector3f::UnitX();
-  ray.t_min = 1.0f;
-  ray.t_max = 0.0f;
-  return ray;
-}
-
 void check_position(const Eigen::Vector3d& position, const Eigen::Vector3f& lo,
                     const Eigen::Vector3f& hi, const analysis_support::PrecisionFrame& frame,
                     const std::string& analysis) {
@@ -117,7 +107,7 @@ MeshStationSight MeshStationView::see(const Eigen::Vector3d& position) const {
   parallel_for(count, kRayGrain, options_.threads, [&](std::size_t begin, std::size_t end) {
     for (std::size_t s = begin; s < end; ++s) {
       if (!mesh_shadow_ray(samples_.points[s] - origin_, local, epsilon_, rays[s], reach_)) {
-        rays[s] = unblockable_ray(local);
+        rays[s] = analysis_support::unblockable_ray(local);
       }
       ignore[s] = samples_.face[s];
     }
