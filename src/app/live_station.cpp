@@ -76,12 +76,7 @@ std::shared_ptr<const LiveStation> LiveStation::for_mesh(const TriangleMesh& mes
   check_work_budget(
       mesh_occlusion_work(mesh, request.samples_per_unit_area, 1, request.enable_acceleration),
       request.max_work);
-  MeshOcclusionOptions options;
-  options.samples_per_unit_area = request.samples_per_unit_area;
-  options.octree.min_cell_size = static_cast<float>(request.octree_resolution);
-  options.octree.enable_acceleration = request.enable_acceleration;
-  options.seed = request.seed;
-  options.threads = request.threads;
+  const MeshOcclusionOptions options = mesh_occlusion_options(request);
   std::shared_ptr<LiveStation> station(new LiveStation());
   try {
     station->mesh_ = std::make_unique<MeshStationView>(mesh, options, progress);

@@ -23,6 +23,16 @@ void validate(const MeshOcclusionRequest& request) {
   request.viewpoints.validate();
 }
 
+MeshOcclusionOptions mesh_occlusion_options(const MeshOcclusionRequest& request) {
+  MeshOcclusionOptions options;
+  options.samples_per_unit_area = request.samples_per_unit_area;
+  options.octree.min_cell_size = static_cast<float>(request.octree_resolution);
+  options.octree.enable_acceleration = request.enable_acceleration;
+  options.seed = request.seed;
+  options.threads = request.threads;
+  return options;
+}
+
 MeshOcclusionReport run_mesh_occlusion_on(const TriangleMesh& mesh,
                                           const MeshOcclusionRequest& request,
                                           const Progress& progress) {
@@ -48,12 +58,7 @@ MeshOcclusionReport run_mesh_occlusion_on(const TriangleMesh& mesh,
                               "): the octree cannot subdivide, so every ray tests every triangle");
   }
 
-  MeshOcclusionOptions options;
-  options.samples_per_unit_area = request.samples_per_unit_area;
-  options.octree.min_cell_size = static_cast<float>(request.octree_resolution);
-  options.octree.enable_acceleration = request.enable_acceleration;
-  options.seed = request.seed;
-  options.threads = request.threads;
+  const MeshOcclusionOptions options = mesh_occlusion_options(request);
   report.result = compute_mesh_occlusion(mesh, viewpoints.positions, options, progress);
   job::warn_viewpoints_inside_solids(report.result.viewpoints, viewpoints, report.warnings);
   return report;

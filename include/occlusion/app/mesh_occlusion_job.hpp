@@ -53,6 +53,9 @@ const Keys<MeshOcclusionRequest>& mesh_occlusion_keys();
 
 // Loads the mesh, computes, writes outputs. Throws UsageError, InputError,
 // OutputError, Cancelled.
+// The analysis's options as the request's keys set them (the job and the
+// server's live station trace the same way).
+MeshOcclusionOptions mesh_occlusion_options(const MeshOcclusionRequest& request);
 MeshOcclusionReport run_mesh_occlusion(const MeshOcclusionRequest& request,
                                        const Progress& progress = {});
 
