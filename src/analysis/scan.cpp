@@ -48,47 +48,71 @@ void check_inputs(const PointCloud& cloud, const std::vector<Eigen::Vector3d>& v
 constexpr double kMinReachPerRadius = 1.5;
 constexpr double kThicknessSigmas = 3.0;
 
-}  // namespace
-
-double own_surface_reach(const Surfel& surfel, float thickness, const Eigen::Vector3d& unit) {
-  const double radius = surfel.radius;
-  if (!surfel.oriented()) return 2.0 * radius;
-  const double sine = std::abs(surfel.normal.cast<double>().dot(unit));
+// The reach of the rule for a surfel whose plane the ray meets at `sine`
+// (|cos| of the angle between the ray and the normal).
+double reach_at(double radius, bool oriented, double sine, float thickness) {
+  if (!oriented) return 2.0 * radius;
   const double reach = kThicknessSigmas * thickness / std::max(sine, 1e-12);
   return std::clamp(reach, kMinReachPerRadius * radius, 2.0 * radius);
 }
-
-namespace {
 
 // The segment from the viewpoint to `direction` (t = 1 at the point) without
 // its first `near_viewpoint` and its last `reach`; the empty interval [1, 0]
 // (which the octree answers with "not occluded" at once) for a point too close
 // to the viewpoint to be hidden.
-Ray shortened_segment(const Eigen::Vector3d& viewpoint, const Eigen::Vector3d& direction,
-                      double length, double near_viewpoint, double reach) {
+void shorten(double length, double near_viewpoint, double reach, Ray& ray) {
+  const bool open = length > near_viewpoint + reach;
+  const double inverse = 1.0 / length;
+  ray.t_min = open ? static_cast<float>(near_viewpoint * inverse) : 1.0f;
+  ray.t_max = open ? static_cast<float>(1.0 - reach * inverse) : 0.0f;
+}
+
+// shorten's segment along `direction` from `from`.
+Ray segment_ray(const Eigen::Vector3d& from, const Eigen::Vector3d& direction,
+                double near_viewpoint, double reach) {
   Ray ray;
-  ray.origin = viewpoint.cast<float>();
+  ray.origin = from.cast<float>();
   ray.direction = direction.cast<float>();
-  if (length > near_viewpoint + reach) {
-    ray.t_min = static_cast<float>(near_viewpoint / length);
-    ray.t_max = static_cast<float>(1.0 - reach / length);
-  } else {
-    ray.t_min = 1.0f;
-    ray.t_max = 0.0f;
-  }
+  shorten(direction.norm(), near_viewpoint, reach, ray);
   return ray;
+}
+
+// One surfel's ray, in scalars and without early returns, so that the loop
+// of ScanTracer::rays over many surfels compiles to straight code; a single
+// ray (scan_surfel_ray) is made by the same function, bit for bit.
+inline void surfel_ray(const Eigen::Vector3d& viewpoint, const Eigen::Vector3f& origin,
+                       const Surfel& surfel, float thickness, double near_viewpoint,
+                       double fixed_reach, Ray& ray) {
+  const double dx = static_cast<double>(surfel.center.x()) - viewpoint.x();
+  const double dy = static_cast<double>(surfel.center.y()) - viewpoint.y();
+  const double dz = static_cast<double>(surfel.center.z()) - viewpoint.z();
+  const double length = std::sqrt(dx * dx + dy * dy + dz * dz);
+  const double sine = std::abs(static_cast<double>(surfel.normal.x()) * dx +
+                               static_cast<double>(surfel.normal.y()) * dy +
+                               static_cast<double>(surfel.normal.z()) * dz) /
+                      length;
+  const double reach = fixed_reach >= 0.0 ? fixed_reach
+                       : length > 0.0 ? reach_at(surfel.radius, surfel.oriented(), sine, thickness)
+                                      : 0.0;
+  ray.origin = origin;
+  ray.direction =
+      Eigen::Vector3f(static_cast<float>(dx), static_cast<float>(dy), static_cast<float>(dz));
+  shorten(length, near_viewpoint, reach, ray);
 }
 
 }  // namespace
 
+double own_surface_reach(const Surfel& surfel, float thickness, const Eigen::Vector3d& unit) {
+  return reach_at(surfel.radius, surfel.oriented(),
+                  std::abs(surfel.normal.cast<double>().dot(unit)), thickness);
+}
+
 Ray scan_surfel_ray(const Eigen::Vector3d& viewpoint, const Surfel& surfel, float thickness,
                     double near_viewpoint, double fixed_reach) {
-  const Eigen::Vector3d direction = surfel.center.cast<double>() - viewpoint;
-  const double length = direction.norm();
-  const double reach = fixed_reach >= 0.0 ? fixed_reach
-                       : length > 0.0     ? own_surface_reach(surfel, thickness, direction / length)
-                                          : 0.0;
-  return shortened_segment(viewpoint, direction, length, near_viewpoint, reach);
+  Ray ray;
+  surfel_ray(viewpoint, viewpoint.cast<float>(), surfel, thickness, near_viewpoint, fixed_reach,
+             ray);
+  return ray;
 }
 
 Ray scan_shadow_ray(const Eigen::Vector3d& viewpoint, const Eigen::Vector3f& point,
@@ -98,7 +122,7 @@ Ray scan_shadow_ray(const Eigen::Vector3d& viewpoint, const Eigen::Vector3f& poi
   // Any sphere holding the viewpoint ends within 2 r of it, so ignoring that
   // much of each ray lets a viewpoint placed inside (or on) a point see out.
   const Eigen::Vector3d direction = point.cast<double>() - viewpoint;
-  return shortened_segment(viewpoint, direction, direction.norm(), 2.0 * radius, tolerance);
+  return segment_ray(viewpoint, direction, 2.0 * radius, tolerance);
 }
 
 ScanTracer::ScanTracer(const PointCloud& cloud, const ScanOptions& options,
@@ -131,17 +155,29 @@ Ray ScanTracer::ray(const Eigen::Vector3d& viewpoint, const Target& target) cons
   return scan_shadow_ray(viewpoint, target.surfel.center, options_);
 }
 
+void ScanTracer::rays(const Eigen::Vector3d& viewpoint, const Target* targets, std::size_t count,
+                      Ray* out) const {
+  if (!discs_) {
+    for (std::size_t k = 0; k < count; ++k) out[k] = ray(viewpoint, targets[k]);
+    return;
+  }
+  const Eigen::Vector3f origin = viewpoint.cast<float>();
+  for (std::size_t k = 0; k < count; ++k) {
+    surfel_ray(viewpoint, origin, targets[k].surfel, targets[k].thickness, near_viewpoint_,
+               options_.self_tolerance, out[k]);
+  }
+}
+
 Ray ScanTracer::segment(const Eigen::Vector3d& from, const Eigen::Vector3d& to) const {
-  const Eigen::Vector3d direction = to - from;
-  return shortened_segment(from, direction, direction.norm(), near_viewpoint_, near_viewpoint_);
+  return segment_ray(from, to - from, near_viewpoint_, near_viewpoint_);
 }
 
 void ScanTracer::occluded(const Ray* rays, std::size_t count, const PrimitiveId* ignore,
-                          std::uint8_t* blocked, unsigned threads) const {
+                          std::uint8_t* blocked, unsigned threads, BatchOrder order) const {
   if (discs_) {
-    discs_->occluded_batch(rays, count, ignore, blocked, threads);
+    discs_->occluded_batch(rays, count, ignore, blocked, threads, order);
   } else {
-    spheres_->occluded_batch(rays, count, ignore, blocked, threads);
+    spheres_->occluded_batch(rays, count, ignore, blocked, threads, order);
   }
 }
 

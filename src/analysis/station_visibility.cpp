@@ -147,31 +147,43 @@ struct RayBlock {
 };
 
 // Sets the bits of the targets (of `order`) each candidate sees.
-// admits(station, k) applies the limits to target order[k]; make(station, k,
-// ray, ignore) makes its shadow ray, or returns false for a target seen
-// without one; occluded(rays, count, ignore, blocked, threads) traces them.
+// make_all(station, first, last, rays) makes the rays of targets order[first
+// .. last) in one go, ignoring each its own primitive (order[k] is its id), or
+// returns false where it cannot: then admits(station, k) applies the limits to
+// target order[k], and make(station, k, ray, ignore) makes its shadow ray, or
+// returns false for a target seen without one. occluded(rays, count, ignore,
+// blocked, threads) traces them.
 // Many candidates: each thread fills whole rows, one candidate at a time, its
 // rays traced on that thread (no two threads write one row). Few: one
 // candidate at a time, its blocks traced on every thread.
-template <class Admits, class Make, class Occluded>
+template <class MakeAll, class Admits, class Make, class Occluded>
 void fill_rows(CoverageMatrix& matrix, const std::vector<Eigen::Vector3d>& candidates,
                const std::vector<std::uint32_t>& order, unsigned threads, const Progress& progress,
-               const Admits& admits, const Make& make, const Occluded& occluded) {
+               const MakeAll& make_all, const Admits& admits, const Make& make,
+               const Occluded& occluded) {
+  static_assert(sizeof(PrimitiveId) == sizeof(std::uint32_t), "target indices are primitive ids");
   const auto trace_block = [&](std::size_t c, std::size_t first, std::size_t last,
                                unsigned block_threads, RayBlock& block) {
     const Eigen::Vector3d& station = candidates[c];
     std::size_t count = 0;
-    for (std::size_t k = first; k < last; ++k) {
-      if (!admits(station, k)) continue;
-      if (!make(station, k, block.rays[count], block.ignore[count])) {
-        matrix.set_seen(c, order[k]);
-        continue;
+    const std::uint32_t* target = block.target.data();
+    const PrimitiveId* ignore = block.ignore.data();
+    if (make_all(station, first, last, block.rays.data())) {
+      count = last - first;
+      target = ignore = order.data() + first;
+    } else {
+      for (std::size_t k = first; k < last; ++k) {
+        if (!admits(station, k)) continue;
+        if (!make(station, k, block.rays[count], block.ignore[count])) {
+          matrix.set_seen(c, order[k]);
+          continue;
+        }
+        block.target[count++] = order[k];
       }
-      block.target[count++] = order[k];
     }
-    occluded(block.rays.data(), count, block.ignore.data(), block.blocked.data(), block_threads);
+    occluded(block.rays.data(), count, ignore, block.blocked.data(), block_threads);
     for (std::size_t k = 0; k < count; ++k) {
-      if (!block.blocked[k]) matrix.set_seen(c, block.target[k]);
+      if (!block.blocked[k]) matrix.set_seen(c, target[k]);
     }
   };
   const std::size_t n = candidates.size();
@@ -335,6 +347,11 @@ CoverageMatrix CloudStationVisibility::coverage(const std::vector<Eigen::Vector3
   CoverageMatrix matrix(candidates.size(), weight_);
   fill_rows(
       matrix, candidates, order_, options_.threads, progress,
+      [&](const Eigen::Vector3d& station, std::size_t first, std::size_t last, Ray* rays) {
+        if (!limits_.unlimited()) return false;
+        tracer_.rays(station, targets_.data() + first, last - first, rays);
+        return true;
+      },
       [&](const Eigen::Vector3d& station, std::size_t k) {
         const Surfel& surfel = targets_[k].surfel;
         return limits_.admits(surfel.center.cast<double>() - station, surfel.normal);
@@ -345,7 +362,11 @@ CoverageMatrix CloudStationVisibility::coverage(const std::vector<Eigen::Vector3
         return true;
       },
       [&](const Ray* rays, std::size_t count, const PrimitiveId* ignore, std::uint8_t* blocked,
-          unsigned threads) { tracer_.occluded(rays, count, ignore, blocked, threads); });
+          unsigned threads) {
+        // A block of targets in Morton order is a patch of surface: its rays
+        // from one candidate are coherent as they come.
+        tracer_.occluded(rays, count, ignore, blocked, threads, BatchOrder::kAsGiven);
+      });
   progress("done", 1.0);
   return matrix;
 }
@@ -400,6 +421,7 @@ CoverageMatrix MeshStationVisibility::coverage(const std::vector<Eigen::Vector3d
   CoverageMatrix matrix(candidates.size(), weight_);
   fill_rows(
       matrix, candidates, order_, options_.threads, progress,
+      [](const Eigen::Vector3d&, std::size_t, std::size_t, Ray*) { return false; },
       [&](const Eigen::Vector3d& station, std::size_t k) {
         return limits_.admits(samples_.points[order_[k]] - station, normals_[ordered_[k].face]);
       },
@@ -408,7 +430,9 @@ CoverageMatrix MeshStationVisibility::coverage(const std::vector<Eigen::Vector3d
         return mesh_shadow_ray(ordered_[k].local, station - origin_, epsilon_, ray, reach_);
       },
       [&](const Ray* rays, std::size_t count, const PrimitiveId* ignore, std::uint8_t* blocked,
-          unsigned threads) { tree_.occluded_batch(rays, count, ignore, blocked, threads); });
+          unsigned threads) {
+        tree_.occluded_batch(rays, count, ignore, blocked, threads, BatchOrder::kAsGiven);
+      });
   progress("done", 1.0);
   return matrix;
 }

@@ -123,7 +123,7 @@ template <class Shape>
 template <bool kAnyHit>
 void Octree<Shape>::trace_batch(const Ray* rays, std::size_t count, const PrimitiveId* ignore_ids,
                                 std::optional<Hit>* hits, std::uint8_t* occluded_out,
-                                unsigned threads) const {
+                                unsigned threads, BatchOrder ray_order) const {
   const auto single = [&](std::size_t i) {
     const std::optional<Hit> hit =
         traverse<kAnyHit>(rays[i], ignore_ids ? ignore_ids[i] : kNoPrimitive);
@@ -148,7 +148,11 @@ void Octree<Shape>::trace_batch(const Ray* rays, std::size_t count, const Primit
       const std::size_t window_end = std::min(e, window + kOrderWindow);
       const std::size_t n = window_end - window;
       order.resize(n);
-      order_by_direction(rays, window, window_end, order.data(), scratch);
+      if (ray_order == BatchOrder::kAsGiven) {
+        for (std::size_t k = 0; k < n; ++k) order[k] = static_cast<std::uint32_t>(window + k);
+      } else {
+        order_by_direction(rays, window, window_end, order.data(), scratch);
+      }
       switch (traversal_) {
         case OctreeTraversal::kPacketAvx512:
           octree_detail::packet_avx512::trace_packets<Shape, kAnyHit>(tree, query, order.data(), n);
@@ -168,15 +172,15 @@ void Octree<Shape>::trace_batch(const Ray* rays, std::size_t count, const Primit
 template <class Shape>
 void Octree<Shape>::intersect_batch(const Ray* rays, std::size_t count,
                                     const PrimitiveId* ignore_ids, std::optional<Hit>* hits,
-                                    unsigned threads) const {
-  trace_batch<false>(rays, count, ignore_ids, hits, nullptr, threads);
+                                    unsigned threads, BatchOrder order) const {
+  trace_batch<false>(rays, count, ignore_ids, hits, nullptr, threads, order);
 }
 
 template <class Shape>
 void Octree<Shape>::occluded_batch(const Ray* rays, std::size_t count,
                                    const PrimitiveId* ignore_ids, std::uint8_t* occluded_out,
-                                   unsigned threads) const {
-  trace_batch<true>(rays, count, ignore_ids, nullptr, occluded_out, threads);
+                                   unsigned threads, BatchOrder order) const {
+  trace_batch<true>(rays, count, ignore_ids, nullptr, occluded_out, threads, order);
 }
 
 }  // namespace occlusion

@@ -44,6 +44,10 @@ class ScanTracer {
     return ray(viewpoint, target(point));
   }
   Ray ray(const Eigen::Vector3d& viewpoint, const Target& target) const;
+  // out[k] = ray(viewpoint, targets[k]) for k < count, in one tight loop:
+  // many points' rays from one viewpoint (a plan's candidate).
+  void rays(const Eigen::Vector3d& viewpoint, const Target* targets, std::size_t count,
+            Ray* out) const;
   // The segment between two viewpoints, without what the rule ignores near a
   // viewpoint at both ends (the empty interval when they are closer than that).
   Ray segment(const Eigen::Vector3d& from, const Eigen::Vector3d& to) const;
@@ -59,8 +63,10 @@ class ScanTracer {
   // The same for rays made by the caller, ignoring ignore[k] (a point's own
   // primitive, or kNoPrimitive; ignore may be null): blocked[k] = 1 if
   // something lies on ray k. On `threads` threads (0 = all cores).
+  // BatchOrder::kAsGiven for rays that are coherent already (octree.hpp).
   void occluded(const Ray* rays, std::size_t count, const PrimitiveId* ignore,
-                std::uint8_t* blocked, unsigned threads) const;
+                std::uint8_t* blocked, unsigned threads,
+                BatchOrder order = BatchOrder::kSortByDirection) const;
 
   const OctreeStats& stats() const;
   const PointCloud& cloud() const { return cloud_; }

@@ -66,6 +66,12 @@ struct OctreeOptions {
   OctreeTraversal traversal = OctreeTraversal::kAuto;
 };
 
+// How a batch query forms its packets. kAsGiven is for rays that are
+// coherent already: one viewpoint's rays to targets in Morton order point
+// nearly the same way in runs, and a plan's candidates skip the sort's cost
+// (9 % of a matrix, bench_plan).
+enum class BatchOrder { kSortByDirection, kAsGiven };
+
 struct OctreeStats {
   std::size_t primitives = 0;
   std::size_t inner_nodes = 0;
@@ -129,11 +135,15 @@ class Octree {
   bool occluded(const Ray& ray, PrimitiveId ignore_id = kNoPrimitive) const;
 
   // rays[i] -> hits[i] / occluded[i] (1 or 0). ignore_ids may be null (ignore nothing)
-  // or point to `count` ids.
+  // or point to `count` ids. `order` says whether the rays are grouped into
+  // packets as given or sorted by direction first (ray_order.hpp); the answers
+  // are the same either way.
   void intersect_batch(const Ray* rays, std::size_t count, const PrimitiveId* ignore_ids,
-                       std::optional<Hit>* hits, unsigned threads = 0) const;
+                       std::optional<Hit>* hits, unsigned threads = 0,
+                       BatchOrder order = BatchOrder::kSortByDirection) const;
   void occluded_batch(const Ray* rays, std::size_t count, const PrimitiveId* ignore_ids,
-                      std::uint8_t* occluded, unsigned threads = 0) const;
+                      std::uint8_t* occluded, unsigned threads = 0,
+                      BatchOrder order = BatchOrder::kSortByDirection) const;
 
   std::size_t size() const { return shapes_.size(); }
   const Aabb& bounds() const { return bounds_; }
@@ -151,7 +161,8 @@ class Octree {
   void build(Shapes& shapes, const OctreeOptions& options, const Progress& progress);
   template <bool kAnyHit>
   void trace_batch(const Ray* rays, std::size_t count, const PrimitiveId* ignore_ids,
-                   std::optional<Hit>* hits, std::uint8_t* occluded, unsigned threads) const;
+                   std::optional<Hit>* hits, std::uint8_t* occluded, unsigned threads,
+                   BatchOrder order) const;
 
   LargeVector<OctreeNode> nodes_;           // nodes_[0] is the root
   LargeVector<Shape> shapes_;               // in leaf order
