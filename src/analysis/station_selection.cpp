@@ -360,12 +360,18 @@ void Selector::describe(StationSelection& result) const {
             "guarantee; "
           : std::string();
   if (!target_mode()) {
+    // One station: greedy's first pick weighs every candidate's gain, so it
+    // is the best, not merely within 1 - 1/e of it.
+    const bool one = options_.stations == 1 && greedy_chosen_.size() == 1;
     std::string text =
-        chain.empty() ? "Greedy's " + greedy_n + " new station(s)" + placed +
-                            " add at least 1 - 1/e (63.2 %) of what the best " +
-                            std::to_string(options_.stations) +
-                            " among these candidates would add (coverage is monotone submodular); "
-                      : chain;
+        !chain.empty() ? chain
+        : one          ? "Greedy's new station" + placed +
+                    " is the one that adds most among these candidates (every candidate's "
+                    "gain was weighed); "
+              : "Greedy's " + greedy_n + " new station(s)" + placed +
+                    " add at least 1 - 1/e (63.2 %) of what the best " +
+                    std::to_string(options_.stations) +
+                    " among these candidates would add (coverage is monotone submodular); ";
     text += "the improvement pass only raised coverage (" + percent(result.greedy_coverage) +
             " -> " + percent(result.coverage) + "), and no " + std::to_string(options_.stations) +
             " new stations can cover more than " + percent(result.optimum_coverage_bound) +

@@ -1,10 +1,12 @@
 #include "occlusion/analysis/station_visibility.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <functional>
 #include <stdexcept>
 #include <string>
+#include <thread>
 
 #include "analysis_support.hpp"
 #include "occlusion/analysis/scan_tracer.hpp"
@@ -18,11 +20,11 @@ namespace {
 
 constexpr char kAnalysis[] = "station visibility";
 
-// Candidates a thread takes per round between progress reports: enough to
-// keep every thread busy, few enough to report every second or so.
-constexpr std::size_t kCandidatesPerRound = 8;
+// Progress reports per matrix at most (candidates finish every few tens of
+// milliseconds).
+constexpr std::size_t kProgressSteps = 100;
 // Targets per block traced on one thread: one window of the octree's
-// direction sort (ray_order.hpp).
+// direction sort (ray_order.hpp), a patch of surface.
 constexpr std::size_t kTargetsPerThreadBlock = 4096;
 // Targets per block traced on all threads (few candidates): bounds the scratch
 // memory and sets how often cancel is checked.
@@ -190,20 +192,27 @@ void fill_rows(CoverageMatrix& matrix, const std::vector<Eigen::Vector3d>& candi
   const unsigned workers = resolve_thread_count(threads);
   progress("tracing", 0.0);
   if (n >= 2 * std::size_t{workers}) {
-    const std::size_t round = kCandidatesPerRound * workers;
-    for (std::size_t first = 0; first < n; first += round) {
-      const std::size_t last = std::min(n, first + round);
-      parallel_for(last - first, 1, threads, [&](std::size_t b, std::size_t e) {
-        RayBlock block(std::min(order.size(), kTargetsPerThreadBlock));
-        for (std::size_t c = first + b; c < first + e; ++c) {
-          for (std::size_t k = 0; k < order.size(); k += kTargetsPerThreadBlock) {
-            trace_block(c, k, std::min(order.size(), k + kTargetsPerThreadBlock), 1, block);
-          }
-          progress.check_cancel();
+    // Candidates are handed out one at a time with no barrier between them
+    // (their costs differ: one inside furniture is blocked at once); the
+    // calling thread, one of the workers, reports.
+    const std::thread::id caller = std::this_thread::get_id();
+    std::atomic<std::size_t> finished{0};
+    std::size_t reported = 0;
+    parallel_for(n, 1, threads, [&](std::size_t b, std::size_t e) {
+      RayBlock block(std::min(order.size(), kTargetsPerThreadBlock));
+      for (std::size_t c = b; c < e; ++c) {
+        for (std::size_t k = 0; k < order.size(); k += kTargetsPerThreadBlock) {
+          trace_block(c, k, std::min(order.size(), k + kTargetsPerThreadBlock), 1, block);
         }
-      });
-      progress("tracing", static_cast<double>(last) / static_cast<double>(n));
-    }
+        progress.check_cancel();
+        const std::size_t done = finished.fetch_add(1) + 1;
+        if (std::this_thread::get_id() == caller && done * kProgressSteps / n > reported) {
+          reported = done * kProgressSteps / n;
+          progress("tracing", static_cast<double>(done) / static_cast<double>(n));
+        }
+      }
+    });
+    progress("tracing", 1.0);
     return;
   }
   RayBlock block(std::min(order.size(), kTargetsPerSharedBlock));

@@ -116,6 +116,16 @@ MemoryEstimate scan_memory(std::size_t points, std::size_t viewpoints, bool disc
           ""};
 }
 
+MemoryEstimate plan_memory(MemoryEstimate model, std::size_t targets, std::size_t candidates) {
+  // One bit per (candidate, target), each row padded to whole 64-bit words.
+  const std::uint64_t row_bytes = times((static_cast<std::uint64_t>(targets) + 63) / 64, 8);
+  model.bytes = plus(model.bytes, times(candidates, row_bytes));
+  model.made_of += " (" + count(candidates) + " candidates x " + count(targets) +
+                   " targets in the coverage matrix)";
+  model.lower = "spacing";
+  return model;
+}
+
 MemoryEstimate region_growing_memory(std::size_t points, const RegionGrowingOptions& options) {
   // PCL's point (16 bytes), normal (32), kd-tree (~40), label and cluster ids.
   std::uint64_t bytes = times(points, 100);

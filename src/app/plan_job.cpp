@@ -208,7 +208,8 @@ PlanReport plan_cloud_impl(const PointCloud& cloud, const PlanRequest& request,
                                progress);
   };
   side.coverage = [&](const std::vector<Eigen::Vector3d>& candidates, const Progress& p) {
-    check_memory_budget(scan_memory(cloud.size(), candidates.size(), options.surfels != nullptr),
+    check_memory_budget(plan_memory(scan_memory(cloud.size(), 1, options.surfels != nullptr),
+                                    cloud.size(), candidates.size()),
                         request.max_memory_mb);
     check_work_budget(scan_work(cloud.size(), candidates.size(), true), request.max_work);
     return cloud_station_coverage(cloud, candidates, weight, options, limits, p);
@@ -266,9 +267,9 @@ PlanReport plan_mesh_impl(const TriangleMesh& mesh, const PlanRequest& request,
                                progress);
   };
   side.coverage = [&](const std::vector<Eigen::Vector3d>& candidates, const Progress& p) {
-    check_memory_budget(
-        mesh_occlusion_memory(mesh, request.samples_per_unit_area, candidates.size()),
-        request.max_memory_mb);
+    check_memory_budget(plan_memory(mesh_occlusion_memory(mesh, request.samples_per_unit_area, 1),
+                                    samples.size(), candidates.size()),
+                        request.max_memory_mb);
     check_work_budget(
         mesh_occlusion_work(mesh, request.samples_per_unit_area, candidates.size(), true),
         request.max_work);

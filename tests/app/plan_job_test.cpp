@@ -12,6 +12,7 @@
 #include "io/scratch_directory.hpp"
 #include "occlusion/app/errors.hpp"
 #include "occlusion/app/job_registry.hpp"
+#include "occlusion/app/memory_budget.hpp"
 #include "occlusion/io/csv_file.hpp"
 #include "occlusion/io/ply_mesh_writer.hpp"
 #include "support/mesh_truth.hpp"
@@ -61,7 +62,31 @@ TEST(PlanJob, TheBestSingleStationOfTwoRoomsStandsInTheLargerOne) {
   // part of B through the door; the bound holds it.
   EXPECT_GT(report.selection.coverage, 0.55);
   EXPECT_LE(report.selection.coverage, report.selection.optimum_coverage_bound);
-  EXPECT_NE(report.selection.guarantee.find("1 - 1/e"), std::string::npos);
+  // One station is the best one, which says more than greedy's 1 - 1/e.
+  EXPECT_NE(report.selection.guarantee.find("adds most among these candidates"), std::string::npos)
+      << report.selection.guarantee;
+  EXPECT_EQ(report.selection.guarantee.find("1 - 1/e"), std::string::npos);
+}
+
+TEST(PlanJob, TheCoverageMatrixCountsInTheMemoryBudget) {
+  // 100 targets: two 64-bit words a row, 16 bytes; three rows.
+  const MemoryEstimate model{1000, "the model", ""};
+  const MemoryEstimate plan = plan_memory(model, 100, 3);
+  EXPECT_EQ(plan.bytes, 1000u + 3u * 16u);
+  EXPECT_NE(plan.made_of.find("3 candidates x 100 targets"), std::string::npos) << plan.made_of;
+  // A fine grid over a large room: refused before the matrix is filled,
+  // naming it and what to lower.
+  PlanRequest request = mesh_request();
+  request.samples_per_unit_area = 2000.0;
+  request.spacing = 0.05;
+  request.max_memory_mb = 64;
+  try {
+    plan_mesh(testing::two_rooms(), request);
+    FAIL() << "a plan over the budget ran";
+  } catch (const UsageError& error) {
+    EXPECT_NE(std::string(error.what()).find("coverage matrix"), std::string::npos) << error.what();
+    EXPECT_NE(std::string(error.what()).find("spacing"), std::string::npos) << error.what();
+  }
 }
 
 TEST(PlanJob, APillarRoomNeedsTwoStationsOnOppositeSides) {

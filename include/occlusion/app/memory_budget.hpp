@@ -39,6 +39,9 @@ MemoryEstimate cloud_occlusion_memory(std::size_t points, std::size_t viewpoints
                                       bool discs);
 // -fscan: the point octree and the per-point counts.
 MemoryEstimate scan_memory(std::size_t points, std::size_t viewpoints, bool discs);
+// plan: the scene's model (scan_memory or mesh_occlusion_memory with one
+// viewpoint) and the coverage matrix of `candidates` rows over `targets`.
+MemoryEstimate plan_memory(MemoryEstimate model, std::size_t targets, std::size_t candidates);
 // -rgoc and extract_polygons: PCL's cloud, normals, kd-tree and the
 // neighbour lists of region growing and normal estimation.
 MemoryEstimate region_growing_memory(std::size_t points, const RegionGrowingOptions& options);
