@@ -11,6 +11,7 @@
 #include "occlusion/core/parallel.hpp"
 #include "occlusion/core/sphere_octree.hpp"
 #include "occlusion/core/surfel_octree.hpp"
+#include "surfel_ray_rule.hpp"
 
 namespace occlusion {
 
@@ -39,80 +40,38 @@ void check_inputs(const PointCloud& cloud, const std::vector<Eigen::Vector3d>& v
   }
 }
 
-// The shortest reach of a point's own surface, as a share of its radius: its
-// neighbours' discs overlap it, and where the surface is noisy (a depth
-// camera's steps) they stand a little in front of it, up to about one radius
-// along the ray (on the real Kinect frame, 0.1 r kept 86 % of the points from
-// their own sensor, 1 r 95 %, 1.5 r 98 %; 2 r lets a 2 cm board's far side
-// show through from 1.5 cm spacing).
-constexpr double kMinReachPerRadius = 1.5;
-constexpr double kThicknessSigmas = 3.0;
-
-// The reach of the rule for a surfel whose plane the ray meets at `sine`
-// (|cos| of the angle between the ray and the normal).
-double reach_at(double radius, bool oriented, double sine, float thickness) {
-  if (!oriented) return 2.0 * radius;
-  const double reach = kThicknessSigmas * thickness / std::max(sine, 1e-12);
-  return std::clamp(reach, kMinReachPerRadius * radius, 2.0 * radius);
-}
-
-// The segment from the viewpoint to `direction` (t = 1 at the point) without
-// its first `near_viewpoint` and its last `reach`; the empty interval [1, 0]
-// (which the octree answers with "not occluded" at once) for a point too close
-// to the viewpoint to be hidden.
-void shorten(double length, double near_viewpoint, double reach, Ray& ray) {
-  const bool open = length > near_viewpoint + reach;
-  const double inverse = 1.0 / length;
-  ray.t_min = open ? static_cast<float>(near_viewpoint * inverse) : 1.0f;
-  ray.t_max = open ? static_cast<float>(1.0 - reach * inverse) : 0.0f;
-}
-
-// shorten's segment along `direction` from `from`.
+// The segment from `from` along `direction` (t = 1 at its end) without its
+// first `near_viewpoint` and its last `reach`; the empty interval [1, 0]
+// (which the octree answers with "not occluded" at once) for an end too close
+// to `from` to be hidden.
 Ray segment_ray(const Eigen::Vector3d& from, const Eigen::Vector3d& direction,
                 double near_viewpoint, double reach) {
   Ray ray;
   ray.origin = from.cast<float>();
   ray.direction = direction.cast<float>();
-  shorten(direction.norm(), near_viewpoint, reach, ray);
+  const double length = direction.norm();
+  if (length > near_viewpoint + reach) {
+    ray.t_min = static_cast<float>(near_viewpoint / length);
+    ray.t_max = static_cast<float>(1.0 - reach / length);
+  } else {
+    ray.t_min = 1.0f;
+    ray.t_max = 0.0f;
+  }
   return ray;
-}
-
-// One surfel's ray, in scalars and without early returns, so that the loop
-// of ScanTracer::rays over many surfels compiles to straight code; a single
-// ray (scan_surfel_ray) is made by the same function, bit for bit.
-inline void surfel_ray(const Eigen::Vector3d& viewpoint, const Eigen::Vector3f& origin,
-                       const Surfel& surfel, float thickness, double near_viewpoint,
-                       double fixed_reach, Ray& ray) {
-  const double dx = static_cast<double>(surfel.center.x()) - viewpoint.x();
-  const double dy = static_cast<double>(surfel.center.y()) - viewpoint.y();
-  const double dz = static_cast<double>(surfel.center.z()) - viewpoint.z();
-  const double length = std::sqrt(dx * dx + dy * dy + dz * dz);
-  const double sine = std::abs(static_cast<double>(surfel.normal.x()) * dx +
-                               static_cast<double>(surfel.normal.y()) * dy +
-                               static_cast<double>(surfel.normal.z()) * dz) /
-                      length;
-  const double reach = fixed_reach >= 0.0 ? fixed_reach
-                       : length > 0.0 ? reach_at(surfel.radius, surfel.oriented(), sine, thickness)
-                                      : 0.0;
-  ray.origin = origin;
-  ray.direction =
-      Eigen::Vector3f(static_cast<float>(dx), static_cast<float>(dy), static_cast<float>(dz));
-  shorten(length, near_viewpoint, reach, ray);
 }
 
 }  // namespace
 
 double own_surface_reach(const Surfel& surfel, float thickness, const Eigen::Vector3d& unit) {
-  return reach_at(surfel.radius, surfel.oriented(),
-                  std::abs(surfel.normal.cast<double>().dot(unit)), thickness);
+  return surfel_ray_rule::own_reach(
+      surfel, thickness, static_cast<float>(std::abs(surfel.normal.cast<double>().dot(unit))));
 }
 
 Ray scan_surfel_ray(const Eigen::Vector3d& viewpoint, const Surfel& surfel, float thickness,
                     double near_viewpoint, double fixed_reach) {
-  Ray ray;
-  surfel_ray(viewpoint, viewpoint.cast<float>(), surfel, thickness, near_viewpoint, fixed_reach,
-             ray);
-  return ray;
+  return surfel_ray_rule::ray({viewpoint.cast<float>(), static_cast<float>(near_viewpoint),
+                               static_cast<float>(fixed_reach)},
+                              {surfel, thickness});
 }
 
 Ray scan_shadow_ray(const Eigen::Vector3d& viewpoint, const Eigen::Vector3f& point,
@@ -161,11 +120,9 @@ void ScanTracer::rays(const Eigen::Vector3d& viewpoint, const Target* targets, s
     for (std::size_t k = 0; k < count; ++k) out[k] = ray(viewpoint, targets[k]);
     return;
   }
-  const Eigen::Vector3f origin = viewpoint.cast<float>();
-  for (std::size_t k = 0; k < count; ++k) {
-    surfel_ray(viewpoint, origin, targets[k].surfel, targets[k].thickness, near_viewpoint_,
-               options_.self_tolerance, out[k]);
-  }
+  surfel_ray_rule::rays({viewpoint.cast<float>(), static_cast<float>(near_viewpoint_),
+                         static_cast<float>(options_.self_tolerance)},
+                        targets, count, out);
 }
 
 Ray ScanTracer::segment(const Eigen::Vector3d& from, const Eigen::Vector3d& to) const {

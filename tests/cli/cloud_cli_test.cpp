@@ -135,7 +135,7 @@ TEST(CloudCli, KinectFrameFromItsSensor) {
   const Json::Value scan = run_json("-fscan " + frame);
   EXPECT_EQ(scan["points"].asUInt64(), 195021u);
   // Discs: 98.0 % (a Kinect's depth noise is about its point spacing: see
-  // analysis/scan.cpp, kMinReachPerRadius); spheres of a quarter spacing keep
+  // analysis/surfel_ray_rule.hpp, kMinReachPerRadius); spheres of a quarter spacing keep
   // every point, and leak through every surface (cloud_truth_test.cpp).
   EXPECT_GE(scan["visible_fraction"].asDouble(), 0.975);
   EXPECT_TRUE(scan["parameters"]["point_radius_auto"].asBool());
