@@ -144,8 +144,7 @@ std::string entry_key_names(const KeyInfo& info) {
 }
 
 // An entry names its path, so that a bad value is found in a long list.
-std::string check_path_entry(const KeyInfo& info, const Json::Value& item,
-                             Json::ArrayIndex index) {
+std::string check_path_entry(const KeyInfo& info, const Json::Value& item, Json::ArrayIndex index) {
   const std::string at = info.name + "[" + std::to_string(index) + "]";
   if (item.isString()) return item.asString().empty() ? at + " is an empty path" : "";
   if (!item.isObject()) return at + " must be a path or an object with a \"path\"";
@@ -315,8 +314,8 @@ std::string describe_values(const KeyInfo& info) {
       text = "a list of {\"name\", and \"pattern\", \"num_vp\" or \"viewpoints\"} objects";
       break;
     case ValueType::kPathEntries:
-      text = "a list of paths, each a path or {\"path\": PATH} with any of " +
-             entry_key_names(info);
+      text =
+          "a list of paths, each a path or {\"path\": PATH} with any of " + entry_key_names(info);
       break;
   }
   if (info.allows_auto) text += " or \"auto\"";

@@ -123,7 +123,8 @@ void check_fingerprints(CsvTable& table, const std::map<std::string, std::string
             job::scene_overrides_of(*before, scene), job::scene_overrides_of(now, scene));
         warnings.push_back(scene + ": its own settings changed (" +
                            (changes.empty() ? "in a way " + path + " does not record" : changes) +
-                           "), so its " + std::to_string(rows) + " rows in study.csv are made again");
+                           "), so its " + std::to_string(rows) +
+                           " rows in study.csv are made again");
       }
       table.rows.erase(std::remove_if(table.rows.begin(), table.rows.end(), stale),
                        table.rows.end());
@@ -380,15 +381,15 @@ StudyReport run_study(const StudyRequest& request, const Progress& progress) {
       scene = job::load_cloud(request.scenes[s].path, request.tracing.skip_bad_lines);
       job::name_classes(scene->cloud, request.scenes[s].path, request.tracing.class_names_path);
       loaded = s;
-      const StationFilterReport filtered =
-          apply_station_filter(scene->cloud, station_filter(request.tracing), request.scenes[s].path);
+      const StationFilterReport filtered = apply_station_filter(
+          scene->cloud, station_filter(request.tracing), request.scenes[s].path);
       const std::size_t dropped = filtered.other_scans + filtered.too_near + filtered.too_far;
       if (dropped > 0) {
-        report.warnings.push_back(request.scenes[s].path + ": scans, min_range and max_range dropped " +
-                                  std::to_string(dropped) + " points (" +
-                                  std::to_string(filtered.other_scans) + " of other scans, " +
-                                  std::to_string(filtered.too_near) + " too near, " +
-                                  std::to_string(filtered.too_far) + " too far)");
+        report.warnings.push_back(
+            request.scenes[s].path + ": scans, min_range and max_range dropped " +
+            std::to_string(dropped) + " points (" + std::to_string(filtered.other_scans) +
+            " of other scans, " + std::to_string(filtered.too_near) + " too near, " +
+            std::to_string(filtered.too_far) + " too far)");
       }
       job::check_ground_truth(request.scenes[s].path, scene->cloud, context.mapping);
       if (scene->dropped_nan + scene->skipped_lines > 0) {

@@ -65,19 +65,19 @@ Key<StudyRequest> scenes_key(const Keys<StudyRequest>& others) {
       .cli("--scene")
       .repeatable()
       .metavar("PATH")
-      .doc("labelled scenes (clouds with class names, S3DIS rooms); each --scene adds one and "
-           "together they replace the config's. A scene may set some keys for itself: "
-           "{\"path\": PATH, \"up\": \"+y\", \"point_radius\": 0.03, ...} (on the command "
-           "line: that JSON text, quoted); docs/study.md");
+      .doc(
+          "labelled scenes (clouds with class names, S3DIS rooms); each --scene adds one and "
+          "together they replace the config's. A scene may set some keys for itself: "
+          "{\"path\": PATH, \"up\": \"+y\", \"point_radius\": 0.03, ...} (on the command "
+          "line: that JSON text, quoted); docs/study.md");
 }
 
 }  // namespace
 
 const std::vector<std::string>& study_scene_override_keys() {
-  static const std::vector<std::string> names = {"primitive",      "point_radius",
-                                                 "disc_coverage",  "normal_neighbours",
-                                                 "self_tolerance", "polygon_path",
-                                                 "frame",          "up"};
+  static const std::vector<std::string> names = {
+      "primitive",      "point_radius", "disc_coverage", "normal_neighbours",
+      "self_tolerance", "polygon_path", "frame",         "up"};
   return names;
 }
 

@@ -146,8 +146,8 @@ std::string plot_title(const StudyReport& report) {
              " classes, point radius " +
              (p["point_radius"].isNumeric() ? format_number("%g", p["point_radius"].asDouble())
                                             : p["point_radius"].asString()) +
-             (some_scene_sets(p, "point_radius") ? " (some scenes their own)" : "") +
-             ", " + std::to_string(p["num_rays_per_vp"].asUInt64()) + " rays per viewpoint";
+             (some_scene_sets(p, "point_radius") ? " (some scenes their own)" : "") + ", " +
+             std::to_string(p["num_rays_per_vp"].asUInt64()) + " rays per viewpoint";
   }
   return title + ")";
 }
@@ -277,8 +277,9 @@ void write_markdown(std::ostream& out, const StudyReport& report, const std::str
       std::string settings;
       for (const auto& key : overrides[scene].getMemberNames()) {
         const Json::Value& value = overrides[scene][key];
-        settings += (settings.empty() ? "" : ", ") + key + " " +
-                    (value.isString() ? value.asString() : format_number("%.10g", value.asDouble()));
+        settings +=
+            (settings.empty() ? "" : ", ") + key + " " +
+            (value.isString() ? value.asString() : format_number("%.10g", value.asDouble()));
       }
       out << "| " << markdown_cell(scene) << " | " << markdown_cell(settings) << " |\n";
     }

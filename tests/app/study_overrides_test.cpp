@@ -101,8 +101,8 @@ TEST(StudyOverrides, AnUpOverrideMakesAYUpCopySeeWhatTheZUpRoomSees) {
 
   // The study's up (+z) for both: the y-up copy's grid stands at mid-depth,
   // and sees another share of the room.
-  const StudyRequest plain = room_study(dir.file("room_z.ply"), dir.file("room_y.ply"),
-                                        dir.file("plain"));
+  const StudyRequest plain =
+      room_study(dir.file("room_z.ply"), dir.file("room_y.ply"), dir.file("plain"));
   const CsvTable without = run_study(plain).table;
   ASSERT_EQ(without.rows.size(), 2u);
   const double z_seen = number(without, 0, "visible_fraction");
@@ -150,8 +150,8 @@ TEST(StudyOverrides, AnUpOverrideMakesAYUpCopySeeWhatTheZUpRoomSees) {
 TEST(StudyOverrides, ChangingAnOverrideMakesThatScenesRowsAgainOnly) {
   const ScratchDirectory dir;
   write_rooms(dir.file("room_z.ply"), dir.file("room_y.ply"));
-  StudyRequest request = room_study(dir.file("room_z.ply"), dir.file("room_y.ply"),
-                                    dir.file("study"));
+  StudyRequest request =
+      room_study(dir.file("room_z.ply"), dir.file("room_y.ply"), dir.file("study"));
   request.scenes[1].overrides["up"] = "+y";
   const CsvTable first = run_study(request).table;
 
@@ -163,8 +163,9 @@ TEST(StudyOverrides, ChangingAnOverrideMakesThatScenesRowsAgainOnly) {
   const StudyReport again = run_study(request);
   EXPECT_EQ(again.runs_computed, 1u);
   EXPECT_EQ(again.runs_skipped, 1u);
-  EXPECT_TRUE(any_contains(again.warnings, "room_y: its own settings changed (point_radius (was "
-                                           "absent, now 0.05)), so its 1 rows"))
+  EXPECT_TRUE(any_contains(again.warnings,
+                           "room_y: its own settings changed (point_radius (was "
+                           "absent, now 0.05)), so its 1 rows"))
       << ::testing::PrintToString(again.warnings);
   EXPECT_EQ(figures(again.table, 0), figures(first, 0));
   EXPECT_NE(cell(again.table, 1, "fingerprint"), cell(first, 1, "fingerprint"));
@@ -283,8 +284,8 @@ TEST(StudyOverrides, EntriesComeFromAConfigAndTheCommandLine) {
   // On the command line a scene with settings of its own is its JSON text.
   const JobInfo& study = *find_job("study");
   const KeySource cli = source_from_arguments(
-      {"--scene", "a.ply", "--scene", R"({"path": "b.ply", "up": "+y"})", "--out", "o"},
-      study.keys, "study", study.positional);
+      {"--scene", "a.ply", "--scene", R"({"path": "b.ply", "up": "+y"})", "--out", "o"}, study.keys,
+      "study", study.positional);
   StudyRequest from_cli;
   apply_sources(study_keys(), {cli}, from_cli);
   ASSERT_EQ(from_cli.scenes.size(), 2u);

@@ -339,8 +339,8 @@ TEST_F(RoundTrip, StudyEqualsTheCli) {
 
   // The openings as the scene's own: its path is resolved in the data folder
   // too, and the row (fingerprint included) is the same, as the file is.
-  const Reply own =
-      client_->request(26, "study", params(R"({"scenes": [{"path": "s3dis_synthetic/Area_1/office_1",
+  const Reply own = client_->request(
+      26, "study", params(R"({"scenes": [{"path": "s3dis_synthetic/Area_1/office_1",
                  "polygon_path": "s3dis_synthetic/openings.txt"}],
                  "configurations": [{"name": "pattern_1", "pattern": 1}], "point_radius": 0.06,
                  "num_rays_per_vp": 400, "out": "study3"})"));
