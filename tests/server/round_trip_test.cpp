@@ -355,6 +355,16 @@ TEST_F(RoundTrip, StudyEqualsTheCli) {
     if (key.find("_seconds") != std::string::npos) own_row.removeMember(key);
   }
   expect_same_report(own_row, row, "rows[0] with the scene's own openings");
+  // On the command line the scene's entry is its JSON text.
+  const Json::Value cli_own = run_cli_json(
+      "study --scene '{\"path\": \"" + files().file("s3dis_synthetic/Area_1/office_1") +
+      "\", \"polygon_path\": \"" + files().file("s3dis_synthetic/openings.txt") +
+      "\"}' --pattern 1 --point-radius 0.06 --num-rays-per-vp 400 --out '" + cli_out() +
+      "/study3'");
+  ASSERT_TRUE(cli_own.isObject());
+  ASSERT_EQ(cli_own["rows"].size(), 1u);
+  EXPECT_EQ(cli_own["rows"][0]["fingerprint"], own_row["fingerprint"]);
+  EXPECT_EQ(cli_own["parameters"]["scene_overrides"], own_result["parameters"]["scene_overrides"]);
 
   // A segmenter command would run a shell command for whoever reaches the server.
   const Reply refused =
