@@ -174,10 +174,6 @@ const Keys<StudyRequest>& study_keys() {
   return keys;
 }
 
-}  // namespace occlusion
-
-namespace occlusion {
-
 StudyRequest scene_request(StudyRequest study, const StudyScene& scene) {
   for (const auto& name : scene.overrides.getMemberNames()) {
     for (const auto& k : study_keys()) {
