@@ -57,6 +57,8 @@ const char* type_name(ValueType type) {
       return "point_list";
     case ValueType::kViewpointSets:
       return "viewpoint_sets";
+    case ValueType::kPathEntries:
+      return "path_entries";
   }
   return "?";
 }
@@ -135,6 +137,37 @@ std::string check_viewpoint_set(const std::string& name, const Json::Value& set,
   return "";
 }
 
+std::string entry_key_names(const KeyInfo& info) {
+  std::string text;
+  for (const auto& entry : info.entry_keys) text += (text.empty() ? "" : ", ") + entry.name;
+  return text;
+}
+
+// An entry names its path, so that a bad value is found in a long list.
+std::string check_path_entry(const KeyInfo& info, const Json::Value& item, Json::ArrayIndex index) {
+  const std::string at = info.name + "[" + std::to_string(index) + "]";
+  if (item.isString()) return item.asString().empty() ? at + " is an empty path" : "";
+  if (!item.isObject()) return at + " must be a path or an object with a \"path\"";
+  if (!item["path"].isString() || item["path"].asString().empty()) {
+    return at + " needs a \"path\" (a non-empty string)";
+  }
+  const std::string entry = at + " (" + item["path"].asString() + ")";
+  for (const auto& member : item.getMemberNames()) {
+    if (member == "path") continue;
+    const KeyInfo* known = nullptr;
+    for (const auto& candidate : info.entry_keys) {
+      if (candidate.name == member) known = &candidate;
+    }
+    if (known == nullptr) {
+      return entry + " has an unknown key '" + member + "' (an entry may set " +
+             entry_key_names(info) + ")";
+    }
+    const std::string why = problem(*known, item[member]);
+    if (!why.empty()) return entry + ": '" + member + "' " + why;
+  }
+  return "";
+}
+
 std::string problem(const KeyInfo& info, const Json::Value& v) {
   const std::string wrong = "must be " + describe_values(info);
   if (info.allows_auto && v.isString() && v.asString() == "auto") return "";
@@ -190,6 +223,13 @@ std::string problem(const KeyInfo& info, const Json::Value& v) {
       if (!v.isArray()) return wrong;
       for (Json::ArrayIndex i = 0; i < v.size(); ++i) {
         const std::string why = check_viewpoint_set(info.name, v[i], i);
+        if (!why.empty()) return "is wrong: " + why;
+      }
+      break;
+    case ValueType::kPathEntries:
+      if (!v.isArray()) return wrong;
+      for (Json::ArrayIndex i = 0; i < v.size(); ++i) {
+        const std::string why = check_path_entry(info, v[i], i);
         if (!why.empty()) return "is wrong: " + why;
       }
       break;
@@ -273,9 +313,17 @@ std::string describe_values(const KeyInfo& info) {
     case ValueType::kViewpointSets:
       text = "a list of {\"name\", and \"pattern\", \"num_vp\" or \"viewpoints\"} objects";
       break;
+    case ValueType::kPathEntries:
+      text =
+          "a list of paths, each a path or {\"path\": PATH} with any of " + entry_key_names(info);
+      break;
   }
   if (info.allows_auto) text += " or \"auto\"";
   return text;
+}
+
+std::string entry_path(const Json::Value& item) {
+  return item.isObject() ? item["path"].asString() : item.asString();
 }
 
 void check_value(const KeyInfo& info, const Json::Value& value, const std::string& spelling) {
@@ -302,6 +350,11 @@ Json::Value to_json(const KeyInfo& info) {
   }
   if (info.max_items > 0) json["max_items"] = Json::UInt64(info.max_items);
   if (!info.exclusive_group.empty()) json["exclusive_group"] = info.exclusive_group;
+  if (!info.entry_keys.empty()) {
+    Json::Value entry_keys(Json::arrayValue);
+    for (const auto& entry : info.entry_keys) entry_keys.append(entry.name);
+    json["entry_keys"] = entry_keys;
+  }
   json["cli"] = cli_spelling(info);
   return json;
 }

@@ -21,7 +21,8 @@ const KeyInfo* find_info(const std::vector<KeyInfo>& infos, const std::string& n
 bool is_list(ValueType type) {
   return type == ValueType::kStringList || type == ValueType::kPathList ||
          type == ValueType::kIntegerList || type == ValueType::kNumberList ||
-         type == ValueType::kPointList || type == ValueType::kViewpointSets;
+         type == ValueType::kPointList || type == ValueType::kViewpointSets ||
+         type == ValueType::kPathEntries;
 }
 
 std::vector<std::string> split_list(const std::string& text, char separator = ',') {
@@ -110,6 +111,10 @@ Json::Value from_text(const KeyInfo& info, const std::string& option, const std:
       return parse_point(option, text);
     case ValueType::kViewpointSets:
       return parse_json_text(text, option);
+    case ValueType::kPathEntries:
+      // An entry with values of its own is its JSON object; anything else a path.
+      if (info.repeatable) return text.rfind('{', 0) == 0 ? parse_json_text(text, option) : text;
+      return parse_json_text(text, option);
   }
   throw UsageError(option + ": a value of an unknown type");
 }
@@ -127,6 +132,21 @@ std::string group_spellings(const KeySource& source, const std::vector<KeyInfo>&
     text += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
   }
   return text;
+}
+
+// An entry's path, and its values of path keys, as the face resolves paths.
+void resolve_entry(const KeyInfo& info, Json::Value& item, const PathResolver& resolve) {
+  if (item.isString()) {
+    item = resolve(item.asString(), info.output);
+    return;
+  }
+  item["path"] = resolve(item["path"].asString(), info.output);
+  for (const auto& entry : info.entry_keys) {
+    if (entry.type == ValueType::kPath && item.isMember(entry.name) &&
+        !item[entry.name].asString().empty()) {
+      item[entry.name] = resolve(item[entry.name].asString(), entry.output);
+    }
+  }
 }
 
 }  // namespace
@@ -176,6 +196,9 @@ KeySource source_from_json(const Json::Value& object, const std::vector<KeyInfo>
     }
     if (resolve && info->type == ValueType::kPathList) {
       for (auto& item : value) item = resolve(item.asString(), info->output);
+    }
+    if (resolve && info->type == ValueType::kPathEntries) {
+      for (auto& item : value) resolve_entry(*info, item, resolve);
     }
     source.values.push_back({name, value, spelling});
   }

@@ -17,34 +17,36 @@
 #include "region_growing_support.hpp"
 #include "study_support.hpp"
 
-namespace occlusion {
+namespace occlusion::job {
 
-namespace {
-
-namespace fs = std::filesystem;
-
-// A scene's name in the CSV: its file or folder name; where two scenes share
-// it (S3DIS has an office_1 in every Area), with its parent folder's.
-std::vector<std::string> scene_names(const std::vector<std::string>& scenes) {
+std::vector<std::string> scene_names(const std::vector<StudyScene>& scenes) {
   const auto name = [](const std::string& scene, bool with_parent) {
-    fs::path path(scene);
+    std::filesystem::path path(scene);
     if (path.filename().empty()) path = path.parent_path();
     const std::string stem = cloud_file_stem(path.string());
     return with_parent ? path.parent_path().filename().string() + "/" + stem : stem;
   };
   std::map<std::string, std::size_t> count;
-  for (const auto& scene : scenes) ++count[name(scene, false)];
+  for (const auto& scene : scenes) ++count[name(scene.path, false)];
   std::vector<std::string> names;
   std::set<std::string> taken;
   for (const auto& scene : scenes) {
-    names.push_back(name(scene, count[name(scene, false)] > 1));
+    names.push_back(name(scene.path, count[name(scene.path, false)] > 1));
     if (!taken.insert(names.back()).second) {
-      throw UsageError("two scenes are both called '" + names.back() + "' (" + scene +
+      throw UsageError("two scenes are both called '" + names.back() + "' (" + scene.path +
                        "); give each scene once, from folders with different names");
     }
   }
   return names;
 }
+
+}  // namespace occlusion::job
+
+namespace occlusion {
+
+namespace {
+
+namespace fs = std::filesystem;
 
 // "4:05" or "1:02:03".
 std::string duration(double seconds) {
@@ -82,19 +84,26 @@ Progress run_progress(const Progress& outer, const std::string& name, std::size_
 }
 
 // The rows of `table` for this study's runs that were made with other
-// parameters: UsageError naming the keys that differ.
-void check_fingerprints(const CsvTable& table, const std::map<std::string, std::string>& expected,
-                        const Json::Value& now, const std::string& out) {
-  std::size_t stale = 0;
+// parameters. When only their scenes' own settings differ (the study-wide
+// parameters and the configurations are as study.parameters.json has them),
+// those rows are dropped, to be made again, with a warning per scene;
+// otherwise UsageError naming the keys that differ.
+void check_fingerprints(CsvTable& table, const std::map<std::string, std::string>& expected,
+                        const Json::Value& now, const std::string& out,
+                        std::vector<std::string>& warnings) {
   std::set<std::string> configurations;
+  std::map<std::string, std::size_t> scenes;  // scene -> its stale rows
   const std::size_t fingerprint = table.column("fingerprint");
-  for (const auto& row : table.rows) {
+  const auto stale = [&](const std::vector<std::string>& row) {
     const auto it = expected.find(job::run_key(table, row));
-    if (it == expected.end() || row[fingerprint] == it->second) continue;
-    ++stale;
+    return it != expected.end() && row[fingerprint] != it->second;
+  };
+  for (const auto& row : table.rows) {
+    if (!stale(row)) continue;
+    ++scenes[row[table.column("scene")]];
     configurations.insert(row[table.column("configuration")]);
   }
-  if (stale == 0) return;
+  if (scenes.empty()) return;
   const std::string path = job::parameters_path(out);
   std::string keys;
   if (const auto before = job::read_parameters(path)) {
@@ -106,11 +115,27 @@ void check_fingerprints(const CsvTable& table, const std::map<std::string, std::
       if (!job::differing_keys(was, is).empty() || was.isNull() != is.isNull())
         keys += std::string(keys.empty() ? "" : ", ") + "configuration '" + name + "'";
     }
-    if (keys.empty()) keys = "none that " + path + " records (was it edited?)";
+    if (keys.empty()) {
+      // All else is as it was: the scenes' own settings changed, and only
+      // their rows are made again.
+      for (const auto& [scene, rows] : scenes) {
+        const std::string changes = job::describe_differences(
+            job::scene_overrides_of(*before, scene), job::scene_overrides_of(now, scene));
+        warnings.push_back(scene + ": its own settings changed (" +
+                           (changes.empty() ? "in a way " + path + " does not record" : changes) +
+                           "), so its " + std::to_string(rows) +
+                           " rows in study.csv are made again");
+      }
+      table.rows.erase(std::remove_if(table.rows.begin(), table.rows.end(), stale),
+                       table.rows.end());
+      return;
+    }
   } else {
     keys = "unknown (" + path + " is missing)";
   }
-  throw UsageError(out + "/study.csv has " + std::to_string(stale) +
+  std::size_t rows = 0;
+  for (const auto& entry : scenes) rows += entry.second;
+  throw UsageError(out + "/study.csv has " + std::to_string(rows) +
                    " rows made with other parameters; keys that differ: " + keys +
                    ". Resume with the same parameters, give another --out, or start again "
                    "with --fresh (which drops the rows in study.csv)");
@@ -137,6 +162,8 @@ Json::Value merged_parameters(const std::vector<std::string>& inputs,
       Json::Value a = job::row_parameters_of(*first), b = job::row_parameters_of(*parameters);
       a["configurations"] = (*first)["configurations"];
       b["configurations"] = (*parameters)["configurations"];
+      a["scene_overrides"] = first->get("scene_overrides", Json::Value(Json::objectValue));
+      b["scene_overrides"] = parameters->get("scene_overrides", Json::Value(Json::objectValue));
       if (!job::differing_keys(a, b).empty()) {
         throw UsageError("study merge: " + path + " and " + first_path + " differ: " +
                          job::describe_differences(a, b) + "; only shards of one study merge");
@@ -144,6 +171,25 @@ Json::Value merged_parameters(const std::vector<std::string>& inputs,
     }
   }
   return first.value_or(Json::Value(Json::objectValue));
+}
+
+// The request to copy for each scene (scene_request): all but its scene list.
+StudyRequest without_scenes(const StudyRequest& request) {
+  StudyRequest shared = request;
+  shared.scenes.clear();
+  return shared;
+}
+
+// The openings of each scene that has its own (polygon_path), read before
+// the first run, so that a bad file stops the study before it starts.
+std::map<std::size_t, std::vector<PlanarPolygon>> scene_openings(const StudyRequest& request) {
+  std::map<std::size_t, std::vector<PlanarPolygon>> openings;
+  for (std::size_t s = 0; s < request.scenes.size(); ++s) {
+    const Json::Value& overrides = request.scenes[s].overrides;
+    if (overrides.isMember("polygon_path"))
+      openings[s] = read_openings(overrides["polygon_path"].asString());
+  }
+  return openings;
 }
 
 void finish(StudyReport& report, const std::string& out, job::Clock::time_point start) {
@@ -208,7 +254,7 @@ void validate(const StudyRequest& request) {
       throw UsageError("configuration '" + configuration.name + "': " + e.what());
     }
   }
-  for (const auto& scene : scene_names(request.scenes)) {
+  for (const auto& scene : job::scene_names(request.scenes)) {
     for (const auto& configuration : request.configurations) {
       if (!stems.insert(job::run_file_stem(scene, configuration.name)).second) {
         throw UsageError("configuration '" + configuration.name + "' of scene " + scene +
@@ -217,15 +263,29 @@ void validate(const StudyRequest& request) {
     }
   }
   if (request.out.empty()) throw KeyError("out", "is needed: the folder of the study's files");
-  // The tracing and scan checks name the scene: any scene will do here.
-  CloudOcclusionRequest tracing = request.tracing;
-  tracing.path = request.scenes.front();
-  validate(tracing);
-  validate(job::study_scan_request(request, request.scenes.front()));
+  // Before the scenes' overrides are set: it checks them as their keys.
+  check_keys(study_keys(), request);
+  // The tracing and scan checks name the scene: the study-wide values with
+  // any scene, then each scene's own.
+  const auto check_scene = [](const StudyRequest& scene) {
+    CloudOcclusionRequest tracing = scene.tracing;
+    tracing.path = scene.scenes.front().path;
+    validate(tracing);
+    validate(job::study_scan_request(scene, tracing.path));
+  };
+  const StudyRequest shared = without_scenes(request);
+  check_scene(scene_request(shared, request.scenes.front().path));
+  for (const auto& scene : request.scenes) {
+    if (scene.overrides.empty()) continue;
+    try {
+      check_scene(scene_request(shared, scene));
+    } catch (const UsageError& e) {
+      throw UsageError("scene " + scene.path + ": " + e.what() + " (its own setting)");
+    }
+  }
   if (request.occlusion_num_vp > 0) {
     ViewpointChoice::from_grid(request.occlusion_num_vp).validate();
   }
-  check_keys(study_keys(), request);
   job::validate_estimation(request.estimation);
   job::validate_segmenter(request);
   parse_shard(request.shard);
@@ -248,16 +308,26 @@ StudyReport run_study(const StudyRequest& request, const Progress& progress) {
   const std::vector<std::string> columns = job::study_columns(context.mapping);
   report.table = request.fresh ? CsvTable{columns, {}} : job::read_study_table(csv_path, columns);
 
-  const std::vector<std::string> names = scene_names(request.scenes);
+  const std::vector<std::string> names = job::scene_names(request.scenes);
   const std::size_t configurations = request.configurations.size();
+  const StudyRequest shared = without_scenes(request);
+  // A scene's rows depend on its overrides: its own row parameters.
+  std::vector<Json::Value> scene_parameters;
+  for (const auto& scene : request.scenes) {
+    scene_parameters.push_back(scene.overrides.empty()
+                                   ? context.row_parameters
+                                   : job::row_parameters(scene_request(shared, scene)));
+  }
+  const auto openings = scene_openings(request);
   std::map<std::string, std::string> fingerprints;  // run key -> the fingerprint it must have
-  for (const auto& name : names) {
+  for (std::size_t s = 0; s < names.size(); ++s) {
     for (const auto& configuration : request.configurations) {
-      fingerprints[name + '\n' + configuration.name] =
-          job::row_fingerprint(context.row_parameters, configuration);
+      fingerprints[names[s] + '\n' + configuration.name] =
+          job::row_fingerprint(scene_parameters[s], configuration);
     }
   }
-  check_fingerprints(report.table, fingerprints, report.parameters, request.out);
+  const std::size_t rows_before = report.table.rows.size();
+  check_fingerprints(report.table, fingerprints, report.parameters, request.out, report.warnings);
   // Failed rows are made again, unless asked to keep them.
   if (!request.skip_failed) {
     auto& rows = report.table.rows;
@@ -272,7 +342,7 @@ StudyReport run_study(const StudyRequest& request, const Progress& progress) {
   for (const auto& row : report.table.rows) done.insert(job::run_key(report.table, row));
   // Before the first run, so that an interrupted study has it too.
   job::write_parameters(job::parameters_path(request.out), report.parameters);
-  if (request.fresh) write_csv(csv_path, report.table);
+  if (request.fresh || report.table.rows.size() < rows_before) write_csv(csv_path, report.table);
 
   // The runs to make now, in run order: (scene, configuration).
   report.runs_total = names.size() * configurations;
@@ -288,6 +358,9 @@ StudyReport run_study(const StudyRequest& request, const Progress& progress) {
   }
   const auto runs_start = job::Clock::now();
   std::optional<job::LoadedCloud> scene;  // the scene of the previous run, loaded once
+  // Its request (its overrides set) and what its runs share.
+  std::optional<StudyRequest> scene_study;
+  std::optional<job::StudyContext> scene_context;
   std::size_t loaded = names.size();
   for (std::size_t i = 0; i < todo.size(); ++i) {
     const auto [s, c] = todo[i];
@@ -297,30 +370,37 @@ StudyReport run_study(const StudyRequest& request, const Progress& progress) {
         run_progress(progress, names[s] + " " + configuration.name, i + 1, todo.size(), elapsed);
     if (loaded != s) {
       scene.reset();
+      scene_context.reset();
+      scene_study.emplace(scene_request(shared, request.scenes[s]));
+      const auto own_openings = openings.find(s);
+      scene_context.emplace(job::StudyContext{
+          *scene_study, context.mapping,
+          own_openings == openings.end() ? context.openings : own_openings->second,
+          context.runs_dir, scene_parameters[s], context.worker});
       run_steps("loading the scene", 0.0);
-      scene = job::load_cloud(request.scenes[s], request.tracing.skip_bad_lines);
-      job::name_classes(scene->cloud, request.scenes[s], request.tracing.class_names_path);
+      scene = job::load_cloud(request.scenes[s].path, request.tracing.skip_bad_lines);
+      job::name_classes(scene->cloud, request.scenes[s].path, request.tracing.class_names_path);
       loaded = s;
-      const StationFilterReport filtered =
-          apply_station_filter(scene->cloud, station_filter(request.tracing), request.scenes[s]);
+      const StationFilterReport filtered = apply_station_filter(
+          scene->cloud, station_filter(request.tracing), request.scenes[s].path);
       const std::size_t dropped = filtered.other_scans + filtered.too_near + filtered.too_far;
       if (dropped > 0) {
-        report.warnings.push_back(request.scenes[s] + ": scans, min_range and max_range dropped " +
-                                  std::to_string(dropped) + " points (" +
-                                  std::to_string(filtered.other_scans) + " of other scans, " +
-                                  std::to_string(filtered.too_near) + " too near, " +
-                                  std::to_string(filtered.too_far) + " too far)");
+        report.warnings.push_back(
+            request.scenes[s].path + ": scans, min_range and max_range dropped " +
+            std::to_string(dropped) + " points (" + std::to_string(filtered.other_scans) +
+            " of other scans, " + std::to_string(filtered.too_near) + " too near, " +
+            std::to_string(filtered.too_far) + " too far)");
       }
-      job::check_ground_truth(request.scenes[s], scene->cloud, context.mapping);
+      job::check_ground_truth(request.scenes[s].path, scene->cloud, context.mapping);
       if (scene->dropped_nan + scene->skipped_lines > 0) {
-        report.warnings.push_back(request.scenes[s] + ": reading dropped " +
+        report.warnings.push_back(request.scenes[s].path + ": reading dropped " +
                                   std::to_string(scene->dropped_nan + scene->skipped_lines) +
                                   " points (NaN or bad lines)");
       }
     }
-    const job::StudyRunInput run{s * configurations + c, names[s], request.scenes[s], &scene->cloud,
-                                 &configuration};
-    const job::StudyRow row = job::run_study_once(context, run, run_steps, report.warnings);
+    const job::StudyRunInput run{s * configurations + c, names[s], request.scenes[s].path,
+                                 &scene->cloud, &configuration};
+    const job::StudyRow row = job::run_study_once(*scene_context, run, run_steps, report.warnings);
     report.table.rows.push_back(job::study_cells(row, context.mapping));
     job::sort_by_run(report.table);
     // Whole rows only: the file is replaced, never appended to, so an

@@ -25,19 +25,66 @@ std::string pattern_configuration_name(int pattern) {
   return "pattern_" + std::to_string(pattern);
 }
 
+// The scene list: each scene a path, or {"path", and its own values of
+// study_scene_override_keys()}, checked by those keys' declarations.
+Key<StudyRequest> scenes_key(const Keys<StudyRequest>& others) {
+  using R = StudyRequest;
+  std::vector<KeyInfo> overridable;
+  for (const auto& name : study_scene_override_keys()) {
+    for (const auto& k : others) {
+      if (k.info.name == name) overridable.push_back(k.info);
+    }
+  }
+  return custom_key<R>(
+             "scenes", ValueType::kPathEntries,
+             [](R& r, const Json::Value& v) {
+               r.scenes.clear();
+               for (const auto& item : v) {
+                 StudyScene scene(entry_path(item));
+                 if (item.isObject()) {
+                   scene.overrides = item;
+                   scene.overrides.removeMember("path");
+                 }
+                 r.scenes.push_back(std::move(scene));
+               }
+             },
+             [](const R& r) {
+               Json::Value list(Json::arrayValue);
+               for (const auto& scene : r.scenes) {
+                 if (scene.overrides.empty()) {
+                   list.append(scene.path);
+                 } else {
+                   Json::Value entry = scene.overrides;
+                   entry["path"] = scene.path;
+                   list.append(entry);
+                 }
+               }
+               return list;
+             })
+      .entries(std::move(overridable))
+      .cli("--scene")
+      .repeatable()
+      .metavar("PATH")
+      .doc(
+          "labelled scenes (clouds with class names, S3DIS rooms); each --scene adds one and "
+          "together they replace the config's. A scene may set some keys for itself: "
+          "{\"path\": PATH, \"up\": \"+y\", \"point_radius\": 0.03, ...} (on the command "
+          "line: that JSON text, quoted); docs/study.md");
+}
+
 }  // namespace
+
+const std::vector<std::string>& study_scene_override_keys() {
+  static const std::vector<std::string> names = {
+      "primitive",      "point_radius", "disc_coverage", "normal_neighbours",
+      "self_tolerance", "polygon_path", "frame",         "up"};
+  return names;
+}
 
 const Keys<StudyRequest>& study_keys() {
   using R = StudyRequest;
-  static const Keys<R> keys = join<R>({
-      {key("scenes", &R::scenes)
-           .path()
-           .cli("--scene")
-           .repeatable()
-           .metavar("PATH")
-           .doc("labelled scenes (clouds with class names, S3DIS rooms); each --scene adds one "
-                "and together they replace the config's"),
-       custom_key<R>(
+  static const Keys<R> others = join<R>({
+      {custom_key<R>(
            "configurations", ValueType::kViewpointSets,
            [](R& r, const Json::Value& v) {
              r.configurations.clear();
@@ -123,7 +170,18 @@ const Keys<StudyRequest>& study_keys() {
       scoring_keys<R>(),
       mount(estimation_keys(), &R::estimation),
   });
+  static const Keys<R> keys = join<R>({{scenes_key(others)}, others});
   return keys;
+}
+
+StudyRequest scene_request(StudyRequest study, const StudyScene& scene) {
+  for (const auto& name : scene.overrides.getMemberNames()) {
+    for (const auto& k : study_keys()) {
+      if (k.info.name == name) k.set(study, scene.overrides[name]);
+    }
+  }
+  study.scenes = {scene};
+  return study;
 }
 
 }  // namespace occlusion

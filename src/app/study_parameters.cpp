@@ -92,11 +92,27 @@ Json::Value row_parameters(const StudyRequest& q) {
   return p;
 }
 
+Json::Value scene_overrides(const StudyRequest& q) {
+  Json::Value all(Json::objectValue);
+  const std::vector<std::string> names = scene_names(q.scenes);
+  for (std::size_t s = 0; s < q.scenes.size(); ++s) {
+    Json::Value overrides = q.scenes[s].overrides;
+    if (overrides.empty()) continue;
+    if (overrides.isMember("polygon_path")) {
+      overrides["polygon_file"] = content_digest(overrides["polygon_path"].asString());
+      overrides.removeMember("polygon_path");
+    }
+    all[names[s]] = overrides;
+  }
+  return all;
+}
+
 Json::Value study_parameters(const StudyRequest& q) {
   Json::Value p = row_parameters(q);
   p["polygon_path"] = q.tracing.polygon_path;
   p["mapping_path"] = q.mapping_path;
-  p["scenes"] = to_json(q.scenes);
+  p["scenes"] = parameters_json(study_keys(), q)["scenes"];
+  p["scene_overrides"] = scene_overrides(q);
   Json::Value configurations(Json::arrayValue);
   for (const auto& configuration : q.configurations) {
     Json::Value entry = configuration.choice.to_json();
@@ -109,10 +125,16 @@ Json::Value study_parameters(const StudyRequest& q) {
 
 Json::Value row_parameters_of(const Json::Value& study_parameters) {
   Json::Value p = study_parameters;
-  for (const char* key : {"scenes", "configurations", "polygon_path", "mapping_path"}) {
+  for (const char* key :
+       {"scenes", "scene_overrides", "configurations", "polygon_path", "mapping_path"}) {
     p.removeMember(key);
   }
   return p;
+}
+
+Json::Value scene_overrides_of(const Json::Value& study_parameters, const std::string& scene) {
+  const Json::Value& all = study_parameters["scene_overrides"];
+  return all.isObject() && all.isMember(scene) ? all[scene] : Json::Value(Json::objectValue);
 }
 
 Json::Value configuration_of(const Json::Value& study_parameters, const std::string& name) {

@@ -126,6 +126,16 @@ std::string panel_title(const Measure& measure, const Json::Value& parameters) {
   return "occlusion level (-poc " + from + ")";
 }
 
+// Whether a scene of the study sets `key` for itself.
+bool some_scene_sets(const Json::Value& parameters, const char* key) {
+  const Json::Value& overrides = parameters["scene_overrides"];
+  if (!overrides.isObject()) return false;
+  for (const auto& scene : overrides) {
+    if (scene.isMember(key)) return true;
+  }
+  return false;
+}
+
 // The plot's title: what was measured, with which settings.
 std::string plot_title(const StudyReport& report) {
   const Json::Value& p = report.parameters;
@@ -136,7 +146,8 @@ std::string plot_title(const StudyReport& report) {
              " classes, point radius " +
              (p["point_radius"].isNumeric() ? format_number("%g", p["point_radius"].asDouble())
                                             : p["point_radius"].asString()) +
-             ", " + std::to_string(p["num_rays_per_vp"].asUInt64()) + " rays per viewpoint";
+             (some_scene_sets(p, "point_radius") ? " (some scenes their own)" : "") + ", " +
+             std::to_string(p["num_rays_per_vp"].asUInt64()) + " rays per viewpoint";
   }
   return title + ")";
 }
@@ -257,6 +268,22 @@ void write_markdown(std::ostream& out, const StudyReport& report, const std::str
   if (report.parameters.isMember("mean_over")) {
     out << " mIoU averages over the `" << report.parameters["mean_over"].asString()
         << "` classes (mean_over, docs/metrics.md).";
+  }
+  const Json::Value& overrides = report.parameters["scene_overrides"];
+  if (overrides.isObject() && !overrides.empty()) {
+    out << "\n\nScenes with settings of their own (overriding the study's for that scene; "
+           "docs/study.md):\n\n| scene | its own settings |\n|---|---|\n";
+    for (const auto& scene : overrides.getMemberNames()) {
+      std::string settings;
+      for (const auto& key : overrides[scene].getMemberNames()) {
+        const Json::Value& value = overrides[scene][key];
+        settings +=
+            (settings.empty() ? "" : ", ") + key + " " +
+            (value.isString() ? value.asString() : format_number("%.10g", value.asDouble()));
+      }
+      out << "| " << markdown_cell(scene) << " | " << markdown_cell(settings) << " |\n";
+    }
+    out << "\nOther scenes use the study's settings.";
   }
   out << "\n\n## Correlation with mIoU\n\n"
       << "| measure | runs | scenes | Pearson r [95 %] | p | Spearman ρ [95 %] | p | "

@@ -96,12 +96,26 @@ void validate_segmenter(const StudyRequest& request);
 // configurations, the shard, the threads or the output folder), by key; the
 // openings and mapping files by a digest of their contents (polygon_file,
 // mapping_file), so that the rows do not depend on where the files are.
+// For a scene's rows: row_parameters(scene_request(request, scene)), so a
+// scene without overrides has the study's.
 Json::Value row_parameters(const StudyRequest& request);
-// row_parameters with the scenes, configurations, polygon_path and
-// mapping_path: study.json's list and study.parameters.json's content.
+// Each scene's name in the CSV: its file or folder name; where two scenes
+// share it (S3DIS has an office_1 in every Area), with its parent folder's.
+// UsageError when two scenes would still share a name.
+std::vector<std::string> scene_names(const std::vector<StudyScene>& scenes);
+// {scene name: its overrides} for the scenes that have any, an openings file
+// by a digest of its contents (polygon_file) as row_parameters has it.
+Json::Value scene_overrides(const StudyRequest& request);
+// row_parameters with the scenes (with their overrides), scene_overrides,
+// the configurations, polygon_path and mapping_path: study.json's list and
+// study.parameters.json's content.
 Json::Value study_parameters(const StudyRequest& request);
-// study_parameters without the scenes, configurations and paths: the row parameters.
+// study_parameters without the scenes, their overrides, the configurations
+// and paths: the study-wide row parameters.
 Json::Value row_parameters_of(const Json::Value& study_parameters);
+// study_parameters' overrides of the scene called `scene`; {} when none (or a
+// study.parameters.json written before scenes had overrides).
+Json::Value scene_overrides_of(const Json::Value& study_parameters, const std::string& scene);
 // The entry of study_parameters' configurations called `name`; null when none is.
 Json::Value configuration_of(const Json::Value& study_parameters, const std::string& name);
 // 16 hex digits hashing the row parameters and the configuration's viewpoints.

@@ -32,6 +32,7 @@
 #include "occlusion/app/reconstruct_job.hpp"
 #include "occlusion/app/region_growing_job.hpp"
 #include "occlusion/app/scan_job.hpp"
+#include "occlusion/app/study_job.hpp"
 #include "station_values.hpp"
 
 namespace py = pybind11;
@@ -283,6 +284,13 @@ JobResult reconstruct(const py::handle& source, const py::object& progress,
   return result_of(watch.run([&](const Progress& p) { return run_reconstruct(request, p); }));
 }
 
+// The study's figures are its files and its report (the rows included).
+JobResult study(const py::object& progress, const py::kwargs& keys) {
+  const auto request = request_from(study_keys(), "study", keys, "");
+  PythonProgress watch(progress);
+  return result_of(watch.run([&](const Progress& p) { return run_study(request, p); }));
+}
+
 py::object result_attribute(const JobResult& result, const std::string& name) {
   if (result.arrays.contains(name)) return result.arrays[py::str(name)];
   if (result.report.contains(name)) return result.report[py::str(name)];
@@ -391,6 +399,13 @@ result.occlusion_level, result.face_visible_fraction.)doc")
                      "arrays: confusion uint64 (C, C + 1), rows ground truth, columns "
                      "prediction then 'other'; scene_confusions, one per scene.") +
          keys_doc("evaluate"))
+            .c_str());
+  m.def("study", &study, py::kw_only(), progress,
+        (std::string("The occlusion study (occlusion study): scenes=[paths, or {\"path\": ..., "
+                     "and keys of the scene's own, e.g. \"up\": \"+y\"}], configurations=[...], "
+                     "out=DIR; writes OUT/study.csv, study.md, study.svg, study.json "
+                     "(docs/study.md). The report has every row.") +
+         keys_doc("study"))
             .c_str());
   m.def("reconstruct", &reconstruct, source, py::kw_only(), progress,
         (std::string("An S3DIS room or Area folder into one labelled cloud (-recon), written "

@@ -24,7 +24,8 @@ namespace {
 bool is_list(ValueType type) {
   return type == ValueType::kStringList || type == ValueType::kPathList ||
          type == ValueType::kIntegerList || type == ValueType::kNumberList ||
-         type == ValueType::kPointList || type == ValueType::kViewpointSets;
+         type == ValueType::kPointList || type == ValueType::kViewpointSets ||
+         type == ValueType::kPathEntries;
 }
 
 // A valid value of the key, other than its default where the type allows.
@@ -92,6 +93,16 @@ Json::Value sample_value(const KeyInfo& info) {
       list.append(set);
       return list;
     }
+    case ValueType::kPathEntries: {  // a bare path, and an entry setting its first key
+      Json::Value list(Json::arrayValue);
+      list.append("/tmp/occlusion-vocabulary/a");
+      Json::Value entry(Json::objectValue);
+      entry["path"] = "/tmp/occlusion-vocabulary/b";
+      const KeyInfo& own = info.entry_keys.at(0);
+      entry[own.name] = sample_value(own);
+      list.append(entry);
+      return list;
+    }
   }
   return Json::Value();
 }
@@ -125,6 +136,11 @@ std::string number_text(const Json::Value& v) {
 
 std::string item_text(const Json::Value& v) {
   if (v.isString()) return v.asString();
+  if (v.isObject()) {  // an entry of a path list: its JSON text, as a shell would pass it
+    Json::StreamWriterBuilder writer;
+    writer["indentation"] = "";
+    return Json::writeString(writer, v);
+  }
   if (v.isBool()) return v.asBool() ? "true" : "false";
   if (v.isArray()) {  // a point
     std::string text;

@@ -581,7 +581,7 @@ TEST(StudyJob, ConfigurationsComeFromTheConfig) {
   EXPECT_DOUBLE_EQ(request.tracing.point_radius, 0.06);
   EXPECT_TRUE(request.tracing.exterior);
   // Relative to the config file's folder, as every path of a config.
-  EXPECT_EQ(request.scenes[0], kSource + "/files/s3dis_synthetic/Area_1/office_1");
+  EXPECT_EQ(request.scenes[0].path, kSource + "/files/s3dis_synthetic/Area_1/office_1");
 
   write_text(dir.file("c.json"), R"({"occlusion": {"study": {"configurations": [
       {"name": "grid", "num_vp": 4},

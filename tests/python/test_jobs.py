@@ -134,6 +134,29 @@ def test_reconstruct_writes_the_cloud(tmp_path):
     assert len(written) == result.points
 
 
+def test_study_takes_a_scene_with_its_own_up(tmp_path):
+    """A y-up copy of the office, told it is y-up, sees what the office sees."""
+    cloud = occlusion.read_cloud(OFFICE)
+    rooms = {"room_z": cloud.positions,
+             "room_y": np.stack([cloud.positions[:, 0], cloud.positions[:, 2],
+                                 -cloud.positions[:, 1]], axis=1)}
+    for name, positions in rooms.items():
+        occlusion.write_cloud(str(tmp_path / (name + ".ply")), positions, labels=cloud.labels,
+                              class_names=cloud.class_names)
+    result = occlusion.study(
+        scenes=[tmp_path / "room_z.ply", {"path": str(tmp_path / "room_y.ply"), "up": "+y"}],
+        configurations=[{"name": "grid_4", "num_vp": 4}], point_radius=0.06,
+        num_rays_per_vp=200, exterior=False, out=tmp_path / "study")
+    assert result.runs_computed == 2
+    z_up, y_up = result.rows
+    assert (z_up["scene"], y_up["scene"]) == ("room_z", "room_y")
+    assert y_up["visible_fraction"] == pytest.approx(z_up["visible_fraction"], abs=1e-3)
+    assert result.parameters["scene_overrides"] == {"room_y": {"up": "+y"}}
+    with pytest.raises(occlusion.UsageError, match=r"room_y\.ply\) has an unknown key 'upp'"):
+        occlusion.study(scenes=[{"path": str(tmp_path / "room_y.ply"), "upp": "+y"}],
+                        configurations=[{"name": "c", "pattern": 1}], out=tmp_path / "bad")
+
+
 class TestKeys:
     def test_unknown_key_is_named(self):
         with pytest.raises(ValueError, match="samples_per_area"):

@@ -337,6 +337,35 @@ TEST_F(RoundTrip, StudyEqualsTheCli) {
   expect_same_report(row, cli_row, "rows[0]");
   expect_same_report(result["correlations"], cli["correlations"], "correlations");
 
+  // The openings as the scene's own: its path is resolved in the data folder
+  // too, and the row (fingerprint included) is the same, as the file is.
+  const Reply own = client_->request(
+      26, "study", params(R"({"scenes": [{"path": "s3dis_synthetic/Area_1/office_1",
+                 "polygon_path": "s3dis_synthetic/openings.txt"}],
+                 "configurations": [{"name": "pattern_1", "pattern": 1}], "point_radius": 0.06,
+                 "num_rays_per_vp": 400, "out": "study3"})"));
+  ASSERT_TRUE(own.ok()) << own.final;
+  const Json::Value& own_result = own.final["result"];
+  EXPECT_EQ(own_result["parameters"]["scenes"][0]["polygon_path"].asString(),
+            "s3dis_synthetic/openings.txt");
+  EXPECT_TRUE(own_result["parameters"]["scene_overrides"]["office_1"].isMember("polygon_file"));
+  ASSERT_EQ(own_result["rows"].size(), 1u);
+  Json::Value own_row = own_result["rows"][0];
+  for (const auto& key : own_row.getMemberNames()) {
+    if (key.find("_seconds") != std::string::npos) own_row.removeMember(key);
+  }
+  expect_same_report(own_row, row, "rows[0] with the scene's own openings");
+  // On the command line the scene's entry is its JSON text.
+  const Json::Value cli_own = run_cli_json(
+      "study --scene '{\"path\": \"" + files().file("s3dis_synthetic/Area_1/office_1") +
+      "\", \"polygon_path\": \"" + files().file("s3dis_synthetic/openings.txt") +
+      "\"}' --pattern 1 --point-radius 0.06 --num-rays-per-vp 400 --out '" + cli_out() +
+      "/study3'");
+  ASSERT_TRUE(cli_own.isObject());
+  ASSERT_EQ(cli_own["rows"].size(), 1u);
+  EXPECT_EQ(cli_own["rows"][0]["fingerprint"], own_row["fingerprint"]);
+  EXPECT_EQ(cli_own["parameters"]["scene_overrides"], own_result["parameters"]["scene_overrides"]);
+
   // A segmenter command would run a shell command for whoever reaches the server.
   const Reply refused =
       client_->request(25, "study", params(R"({"scenes": ["s3dis_synthetic/Area_1/office_1"],

@@ -41,6 +41,10 @@ enum class ValueType {
   kNumberList,
   kPointList,      // [[x, y, z], ...]
   kViewpointSets,  // [{"name", and "pattern" | "num_vp" | "viewpoints"}, ...]
+  // [PATH | {"path": PATH, KEY: value, ...}, ...]: paths, each with values of
+  // its own for some of the job's keys (KeyInfo::entry_keys), e.g. a study's
+  // scenes with their own point radius.
+  kPathEntries,
 };
 
 // What a key is, for checks, help and the faces. Face-neutral: no JSON here
@@ -63,6 +67,9 @@ struct KeyInfo {
   std::string exclusive_group;  // keys of one group: at most one per source
   std::vector<std::pair<std::string, Json::Value>> implies;  // giving this key sets those
   Json::Value default_value;  // the request's initialiser (null: none)
+  // kPathEntries: the keys an entry may hold besides "path", as the job
+  // declares them (so an entry's value is checked as the key's own is).
+  std::vector<KeyInfo> entry_keys;
 };
 
 // A type-erased setter and getter of one request field.
@@ -226,6 +233,13 @@ class KeyBuilder {
   KeyBuilder& exclusive(std::string group) {
     return edit([&](KeyInfo& i) { i.exclusive_group = std::move(group); });
   }
+  // The list's items may carry their own values of these keys: kPathEntries.
+  KeyBuilder& entries(std::vector<KeyInfo> keys) {
+    return edit([&](KeyInfo& i) {
+      i.type = ValueType::kPathEntries;
+      i.entry_keys = std::move(keys);
+    });
+  }
   KeyBuilder& implies(std::string other, Json::Value value) {
     return edit([&](KeyInfo& i) { i.implies.emplace_back(std::move(other), std::move(value)); });
   }
@@ -337,6 +351,8 @@ std::string describe_values(const KeyInfo& info);
 // Checks type, range and choices; returns the value to store (CLI text already
 // converted). Throws UsageError "<spelling> must be ..." .
 void check_value(const KeyInfo& info, const Json::Value& value, const std::string& spelling);
+// An item of a kPathEntries list: a bare path, or the entry's "path".
+std::string entry_path(const Json::Value& item);
 // A key's declaration as JSON (the server's `hello`, the docs).
 Json::Value to_json(const KeyInfo& info);
 

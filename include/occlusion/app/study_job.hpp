@@ -50,8 +50,27 @@ RegionGrowingOptions default_study_estimation();
 // The study's reference set: a 3 x 3 grid (docs/study.md says why).
 inline constexpr unsigned kReferenceViewpoints = 9;
 
+// A scene of the study, and the study-wide keys it sets otherwise: rooms
+// scanned at another density, with their own openings, or exported y-up.
+struct StudyScene {
+  StudyScene() = default;
+  StudyScene(std::string scene_path)  // NOLINT: a scene without overrides is its path
+      : path(std::move(scene_path)) {}
+  StudyScene(const char* scene_path) : path(scene_path) {}  // NOLINT: as above
+  std::string path;  // a labelled cloud with class names, an S3DIS room, ...
+  // Key -> value, for keys of study_scene_override_keys() only (checked as
+  // those keys are); empty: the study's values.
+  Json::Value overrides{Json::objectValue};
+};
+
+// The study's keys a scene entry may set for itself: the point model of its
+// scans and measures (primitive, point_radius, disc_coverage,
+// normal_neighbours, self_tolerance), its openings (polygon_path) and where
+// its configurations stand (frame, up).
+const std::vector<std::string>& study_scene_override_keys();
+
 struct StudyRequest {
-  std::vector<std::string> scenes;  // labelled clouds with class names, S3DIS rooms
+  std::vector<StudyScene> scenes;
   std::vector<NamedViewpointChoice> configurations;
   // How clouds are traced, as -poc takes it (its path, viewpoints and out do
   // not apply). Its point_radius, octree keys, seed, threads and
@@ -132,8 +151,12 @@ struct StudyReport {
   double total_seconds = 0.0;
 };
 
-// Throws UsageError naming the option at fault.
+// Throws UsageError naming the option at fault (and the scene, for a
+// scene's overrides).
 void validate(const StudyRequest& request);
+// The study as it applies to `scene`: `study` with the scene's overrides set
+// and its scenes that one alone.
+StudyRequest scene_request(StudyRequest study, const StudyScene& scene);
 // Every key of the job (config section occlusion.study), declared once.
 const Keys<StudyRequest>& study_keys();
 // Writes OUT/study.csv (after every run), study.svg, study.md, study.json and
