@@ -123,7 +123,7 @@ template <class Shape>
 template <bool kAnyHit>
 void Octree<Shape>::trace_batch(const Ray* rays, std::size_t count, const PrimitiveId* ignore_ids,
                                 std::optional<Hit>* hits, std::uint8_t* occluded_out,
-                                unsigned threads, BatchOrder ray_order) const {
+                                unsigned threads, [[maybe_unused]] BatchOrder ray_order) const {
   const auto single = [&](std::size_t i) {
     const std::optional<Hit> hit =
         traverse<kAnyHit>(rays[i], ignore_ids ? ignore_ids[i] : kNoPrimitive);
