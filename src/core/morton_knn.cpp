@@ -38,7 +38,9 @@ float squared_distance(const Eigen::Vector3f& a, const Eigen::Vector3f& b) {
 
 // Gaps are rounded like the points' own differences, so a box is never
 // farther than a point inside it.
-float gap(float lo, float hi, float x) { return std::max({lo - x, x - hi, 0.0f}); }
+float gap(float lo, float hi, float x) {
+  return std::max({lo - x, x - hi, 0.0f});
+}
 
 }  // namespace
 
@@ -68,8 +70,7 @@ struct MortonKnn::Scratch {
     } else {
       return;
     }
-    while (at > 0 &&
-           (best_d2[at - 1] > d || (best_d2[at - 1] == d && best_ids[at - 1] > id))) {
+    while (at > 0 && (best_d2[at - 1] > d || (best_d2[at - 1] == d && best_ids[at - 1] > id))) {
       best_d2[at] = best_d2[at - 1];
       best_ids[at] = best_ids[at - 1];
       --at;

@@ -110,7 +110,8 @@ TEST(MortonKnn, FallingDensityDuplicatesAndStrayPoints) {
     for (std::size_t c = 0; c < copies; ++c) cloud.push_back(p);
   }
   for (int i = 0; i < 40; ++i) {
-    cloud.push_back(uniform_in(rng, Eigen::Vector3f(-500, -500, 3), Eigen::Vector3f(500, 500, 900)));
+    cloud.push_back(
+        uniform_in(rng, Eigen::Vector3f(-500, -500, 3), Eigen::Vector3f(500, 500, 900)));
   }
   expect_exact(cloud, 17);
   expect_exact(cloud, 65);
