@@ -4,6 +4,7 @@
 #include <atomic>
 #include <cfloat>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -48,6 +49,8 @@ struct MortonKnn::Scratch {
   // The gathered points, in increasing index.
   std::vector<float> x, y, z, d2;
   std::vector<std::uint32_t> ids;
+  std::vector<std::uint64_t> keys;
+  std::vector<std::uint32_t> last_ids;  // the answer of the query before
   // The best so far: (squared distance, index) increasing.
   std::vector<float> best_d2;
   std::vector<std::uint32_t> best_ids;
@@ -189,6 +192,44 @@ void MortonKnn::search_alone(const Eigen::Vector3f& query, std::size_t k, float 
   }
 }
 
+// The k smallest (squared distance, index) among the gathered points whose
+// distance is within `guess` (all of them when fewer than k are). Squared
+// distances are never negative, so their bits order as they do, and a pair
+// is one 64-bit key: sorting keys sorts by distance, then index.
+void MortonKnn::select_nearest(std::size_t count, float guess, std::size_t k,
+                               Scratch& scratch) const {
+  std::vector<std::uint64_t>& keys = scratch.keys;
+  keys.resize(count);
+  const auto key = [&](std::size_t c) {
+    std::uint32_t bits;
+    std::memcpy(&bits, &scratch.d2[c], sizeof bits);
+    return std::uint64_t{bits} << 32 | scratch.ids[c];
+  };
+  std::size_t kept = 0;
+  for (std::size_t c = 0; c < count; ++c) {
+    keys[kept] = key(c);
+    kept += scratch.d2[c] <= guess ? 1 : 0;
+  }
+  if (kept < k) {
+    for (std::size_t c = 0; c < count; ++c) keys[c] = key(c);
+    kept = count;
+  }
+  scratch.reset_best(k);
+  if (kept < k) {
+    scratch.found = kept;
+  } else {
+    const auto nth = keys.begin() + static_cast<std::ptrdiff_t>(k - 1);
+    std::nth_element(keys.begin(), nth, keys.begin() + static_cast<std::ptrdiff_t>(kept));
+    std::sort(keys.begin(), nth);
+    scratch.found = k;
+  }
+  for (std::size_t j = 0; j < scratch.found; ++j) {
+    const auto bits = static_cast<std::uint32_t>(keys[j] >> 32);
+    std::memcpy(&scratch.best_d2[j], &bits, sizeof bits);
+    scratch.best_ids[j] = static_cast<std::uint32_t>(keys[j]);
+  }
+}
+
 void MortonKnn::search(const std::uint32_t* subset, std::size_t first, std::size_t last,
                        std::size_t k, const Visit& visit) const {
   const std::size_t n = points_.size();
@@ -198,6 +239,7 @@ void MortonKnn::search(const std::uint32_t* subset, std::size_t first, std::size
   const std::size_t leaves = std::size_t{1} << depth_;
   const auto query_of = [&](std::size_t m) -> std::size_t { return subset ? subset[m] : m; };
   float radius = -1.0f;  // none yet
+  scratch.last_ids.clear();
   for (std::size_t m = first; m < last;) {
     const std::size_t s = query_of(m);
     std::size_t j = static_cast<std::size_t>((static_cast<std::uint64_t>(s) << depth_) / n);
@@ -209,8 +251,9 @@ void MortonKnn::search(const std::uint32_t* subset, std::size_t first, std::size
 
     const Box& box = boxes_[leaves - 1 + j];
     const float extent = (box.hi - box.lo).maxCoeff();
-    const bool batch = !(radius >= 0.0f && extent > kWideLeaf * radius);
-    const float r = radius >= 0.0f ? radius : extent;
+    // The first leaf searches alone: its k-th distances size the next gather.
+    const bool batch = radius >= 0.0f && extent <= kWideLeaf * radius;
+    const float r = radius;
     if (batch) {
       gather(box, r, scratch);
       scratch.d2.resize(scratch.ids.size());
@@ -219,8 +262,18 @@ void MortonKnn::search(const std::uint32_t* subset, std::size_t first, std::size
     for (; m < leaf_last; ++m) {
       const std::size_t q = query_of(m);
       const Eigen::Vector3f& p = points_[q];
+      // The query before's k neighbours are k points: none of this query's
+      // k nearest is farther than the farthest of them. Candidates beyond
+      // are skipped with one comparison.
+      float guess = std::numeric_limits<float>::infinity();
+      if (scratch.last_ids.size() == k) {
+        guess = 0.0f;
+        for (const std::uint32_t id : scratch.last_ids) {
+          guess = std::max(guess, squared_distance(p, points_[id]));
+        }
+      }
       bool certain = false;
-      float bound = std::numeric_limits<float>::infinity();
+      float bound = guess;
       if (batch) {
         const std::size_t count = scratch.ids.size();
         for (std::size_t c = 0; c < count; ++c) {
@@ -232,8 +285,7 @@ void MortonKnn::search(const std::uint32_t* subset, std::size_t first, std::size
           sum += dz * dz;
           scratch.d2[c] = sum;
         }
-        scratch.reset_best(k);
-        for (std::size_t c = 0; c < count; ++c) scratch.offer(scratch.d2[c], scratch.ids[c], k);
+        select_nearest(count, guess, k, scratch);
         if (scratch.found == k) {
           bound = scratch.best_d2[k - 1];
           // A point left out lies farther than r from the box, so farther
@@ -243,7 +295,11 @@ void MortonKnn::search(const std::uint32_t* subset, std::size_t first, std::size
                                       static_cast<double>(r) + inside - margin_;
         }
       }
-      if (!certain) search_alone(p, k, bound, scratch);
+      if (!certain) {
+        search_alone(p, k, bound, scratch);
+        if (scratch.found < k) search_alone(p, k, std::numeric_limits<float>::infinity(), scratch);
+      }
+      scratch.last_ids.assign(scratch.best_ids.begin(), scratch.best_ids.end());
       scratch.kth.push_back(std::sqrt(scratch.best_d2[k - 1]));
       visit(m, q, scratch.best_ids.data(), k);
     }
