@@ -416,11 +416,13 @@ SurfelEstimate estimate_surfels(const PointCloud& cloud, const SurfelOptions& op
 
   // Back in the cloud's order.
   estimate.surfels.resize(count);
-  estimate.thickness.resize(count);
   for (std::size_t s = 0; s < count; ++s) {
     const std::size_t i = order[s];
     estimate.surfels[i] = make_surfel(cloud.positions[i], normals[s], radii[s], i);
-    estimate.thickness[i] = thickness[s];
+  }
+  if (options.keep_thickness) {
+    estimate.thickness.resize(count);
+    for (std::size_t s = 0; s < count; ++s) estimate.thickness[order[s]] = thickness[s];
   }
   stats.seconds = seconds_since(start);
   progress("surfels", 1.0);
