@@ -42,7 +42,8 @@ class MortonKnn {
 
   // For n in [first, last): the query is subset[n] (null: n itself), the
   // subset increasing; calls visit(n, query, ids, got) with its min(k, size)
-  // nearest. Thread-safe: each thread may search its own range.
+  // nearest. Thread-safe: each thread may search its own range (visit must
+  // not search again: the thread's scratch holds the answer it reads).
   void search(const std::uint32_t* subset, std::size_t first, std::size_t last, std::size_t k,
               const Visit& visit) const;
 
