@@ -71,8 +71,8 @@ void check_options(const PointCloud& cloud, const SurfelOptions& options) {
     if (!(p.cwiseAbs().maxCoeff() <= pcl_frame::kMaxLocalCoordinate)) {
       throw std::invalid_argument(
           "surfels: a point is not finite or lies more than 1e15 units from the cloud's "
-          "origin, beyond what a float kd-tree can search; remove the stray far points (or fix "
-          "the unit) first");
+          "origin, beyond what float distances between neighbours resolve; remove the stray far "
+          "points (or fix the unit) first");
     }
   }
 }
