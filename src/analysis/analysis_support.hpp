@@ -103,15 +103,18 @@ inline void check_float_precision(const Eigen::Vector3f& scene_lo, const Eigen::
 }
 
 // The point model's checks, for both cloud analyses: surfels (when given)
-// hold one disc and one thickness per point, and the radius traced with (the
-// spheres', or the surfels' 10th percentile) is positive and fine enough for
-// float at the cloud's and viewpoints' distances (check_float_precision).
+// hold one disc per point, and one thickness per point where the analysis
+// reads it, and the radius traced with (the spheres', or the surfels' 10th
+// percentile) is positive and fine enough for float at the cloud's and
+// viewpoints' distances (check_float_precision).
 inline void check_point_model(const PointCloud& cloud,
                               const std::vector<Eigen::Vector3d>& viewpoints, double point_radius,
-                              const SurfelEstimate* surfels, const std::string& analysis) {
+                              const SurfelEstimate* surfels, const std::string& analysis,
+                              bool reads_thickness = true) {
   double radius = point_radius;
   if (surfels) {
-    if (surfels->surfels.size() != cloud.size() || surfels->thickness.size() != cloud.size()) {
+    if (surfels->surfels.size() != cloud.size() ||
+        (reads_thickness && surfels->thickness.size() != cloud.size())) {
       throw std::invalid_argument(analysis + ": " + std::to_string(surfels->surfels.size()) +
                                   " surfels for " + std::to_string(cloud.size()) + " points");
     }

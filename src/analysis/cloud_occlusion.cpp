@@ -34,7 +34,7 @@ void check_inputs(const PointCloud& cloud, const std::vector<Eigen::Vector3d>& v
   if (cloud.size() == 0) throw std::invalid_argument("cloud occlusion: the cloud has no points");
   analysis_support::check_viewpoints(viewpoints, "cloud occlusion");
   analysis_support::check_point_model(cloud, viewpoints, options.point_radius, options.surfels,
-                                      "cloud occlusion");
+                                      "cloud occlusion", /*reads_thickness=*/false);
   if (options.num_rays_per_vp == 0) {
     throw std::invalid_argument("cloud occlusion: num_rays_per_vp must be > 0");
   }

@@ -1,11 +1,8 @@
-// One kd-tree (FLANN's single index, as PCL builds it) over the cloud's own
-// floats, one k-nearest search per point for its plane and density, and a
-// second search only for the points that may be stray.
+// One exact k-nearest search per point (core/morton_knn.hpp, over the points
+// in Morton order) for its plane and density, and a second search only for
+// the points that may be stray.
 
 #include "occlusion/analysis/surfel_estimation.hpp"
-
-#include <flann/algorithms/dist.h>
-#include <flann/algorithms/kdtree_single_index.h>
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
@@ -16,6 +13,7 @@
 #include <string>
 
 #include "analysis_support.hpp"
+#include "occlusion/core/morton_knn.hpp"
 #include "occlusion/core/morton_order.hpp"
 #include "occlusion/core/parallel.hpp"
 #include "pcl_frame.hpp"
@@ -26,8 +24,6 @@ namespace {
 
 using analysis_support::Clock;
 using analysis_support::seconds_since;
-using FlannTree = flann::KDTreeSingleIndex<flann::L2_Simple<float>>;
-constexpr int kLeafSize = 15;
 constexpr std::size_t kGrain = 1024;
 // A second eigenvalue below this share of the largest: the neighbours lie on a line.
 constexpr double kMinSpread = 1e-3;
@@ -75,8 +71,8 @@ void check_options(const PointCloud& cloud, const SurfelOptions& options) {
     if (!(p.cwiseAbs().maxCoeff() <= pcl_frame::kMaxLocalCoordinate)) {
       throw std::invalid_argument(
           "surfels: a point is not finite or lies more than 1e15 units from the cloud's "
-          "origin, beyond what a float kd-tree can search; remove the stray far points (or fix "
-          "the unit) first");
+          "origin, beyond what float distances between neighbours resolve; remove the stray far "
+          "points (or fix the unit) first");
     }
   }
 }
@@ -293,18 +289,11 @@ SurfelEstimate estimate_surfels(const PointCloud& cloud, const SurfelOptions& op
   SurfelEstimate estimate;
   SurfelStats& stats = estimate.stats;
   {
-    // The sorted copy and the tree (about 35 bytes a point) live only while
-    // searched: freed before the surfels are made, which keeps a big cloud's
-    // peak down.
+    // The sorted copy and the search's boxes (about 15 bytes a point) live
+    // only while searched.
     std::vector<Eigen::Vector3f> sorted(count);
     for (std::size_t s = 0; s < count; ++s) sorted[s] = cloud.positions[order[s]];
-    const flann::Matrix<float> points(sorted[0].data(), count, 3, sizeof(Eigen::Vector3f));
-    // Reordered: the tree keeps its own copy of the points in leaf order (12
-    // bytes a point), and the searches read leaves from contiguous memory (a
-    // third less search time on a million points than reading them by index).
-    FlannTree tree(points, flann::KDTreeSingleIndexParams(kLeafSize, /*reorder=*/true));
-    tree.buildIndex();
-    const flann::SearchParams search(/*checks=*/-1, /*eps=*/0.0f, /*sorted=*/true);
+    const MortonKnn knn(sorted, options.threads);
 
     // visit(n, s, ids, got) for every point s = subset[n] of `subset` (null:
     // all, s = n) with its `wanted` nearest, nearest first (itself among them).
@@ -312,29 +301,22 @@ SurfelEstimate estimate_surfels(const PointCloud& cloud, const SurfelOptions& op
                                    std::size_t wanted, const auto& visit) {
       const std::size_t total = subset ? subset->size() : count;
       const std::size_t block = block_size(total);
+      const MortonKnn::Visit each = [&](std::size_t n, std::size_t s, const std::uint32_t* ids,
+                                        std::size_t got) { visit(n, s, ids, got); };
       progress(stage, 0.0);
       for (std::size_t begin = 0; begin < total; begin += block) {
         const std::size_t end = std::min(total, begin + block);
         parallel_for(end - begin, kGrain, options.threads,
                      [&](std::size_t first, std::size_t last) {
-                       flann::KNNSimpleResultSet<float> found(wanted);
-                       std::vector<std::size_t> ids(wanted);
-                       std::vector<float> distances(wanted);
-                       for (std::size_t n = begin + first; n < begin + last; ++n) {
-                         const std::size_t s = subset ? (*subset)[n] : n;
-                         found.clear();
-                         tree.findNeighbors(found, sorted[s].data(), search);
-                         const std::size_t got = std::min(found.size(), wanted);
-                         found.copy(ids.data(), distances.data(), got, true);
-                         visit(n, s, ids.data(), got);
-                       }
+                       knn.search(subset ? subset->data() : nullptr, begin + first, begin + last,
+                                  wanted, each);
                      });
         progress.check_cancel();
         progress(stage, static_cast<double>(end) / static_cast<double>(total));
       }
     };
 
-    const auto model_point = [&](std::size_t, std::size_t s, const std::size_t* ids,
+    const auto model_point = [&](std::size_t, std::size_t s, const std::uint32_t* ids,
                                  std::size_t got) {
       thread_local Distinct distinct;
       const Eigen::Vector3f& own = sorted[s];
@@ -389,7 +371,7 @@ SurfelEstimate estimate_surfels(const PointCloud& cloud, const SurfelOptions& op
       }
       std::vector<float> stray_radius(candidates.size(), 0.0f);
       search_blocks("stray points", &candidates, k,
-                    [&](std::size_t n, std::size_t s, const std::size_t* ids, std::size_t got) {
+                    [&](std::size_t n, std::size_t s, const std::uint32_t* ids, std::size_t got) {
                       thread_local std::vector<float> around;
                       around.clear();
                       for (std::size_t j = 0; j < got; ++j) {
@@ -434,11 +416,13 @@ SurfelEstimate estimate_surfels(const PointCloud& cloud, const SurfelOptions& op
 
   // Back in the cloud's order.
   estimate.surfels.resize(count);
-  estimate.thickness.resize(count);
   for (std::size_t s = 0; s < count; ++s) {
     const std::size_t i = order[s];
     estimate.surfels[i] = make_surfel(cloud.positions[i], normals[s], radii[s], i);
-    estimate.thickness[i] = thickness[s];
+  }
+  if (options.keep_thickness) {
+    estimate.thickness.resize(count);
+    for (std::size_t s = 0; s < count; ++s) estimate.thickness[order[s]] = thickness[s];
   }
   stats.seconds = seconds_since(start);
   progress("surfels", 1.0);

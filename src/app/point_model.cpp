@@ -92,6 +92,7 @@ PointModel choose_point_model(const PointCloud& cloud, const PointSettings& sett
   options.coverage = settings.disc_coverage;
   options.fixed_radius = report.radius.automatic ? 0.0 : settings.point_radius;
   options.threads = settings.threads;
+  options.keep_thickness = job != "-poc";
   try {
     model.surfels = estimate_surfels(cloud, options, progress);
   } catch (const std::invalid_argument& e) {

@@ -157,6 +157,7 @@ SurfelOctree build_disc_scene(const py::handle& points, const py::handle& normal
     SurfelOptions estimate;
     estimate.coverage = disc_coverage;
     estimate.neighbours = normal_neighbours;
+    estimate.keep_thickness = false;  // a scene traces discs only
     py::gil_scoped_release release;
     return SurfelOctree(estimate_surfels(cloud, estimate).surfels, options);
   }

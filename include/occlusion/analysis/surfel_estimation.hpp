@@ -66,6 +66,9 @@ struct SurfelOptions {
   double max_surface_variation = 0.1;
   // The radius of every point when > 0 (then only normals are estimated).
   double fixed_radius = 0.0;
+  // Whether SurfelEstimate::thickness is filled (-fscan reads it; -poc does
+  // not, and 4 bytes a point would live through its octree's build).
+  bool keep_thickness = true;
   unsigned threads = 0;
 };
 
@@ -88,7 +91,7 @@ struct SurfelStats {
 
 struct SurfelEstimate {
   LargeVector<Surfel> surfels;   // one per point, in the cloud's order
-  std::vector<float> thickness;  // per point; 0 for spheres
+  std::vector<float> thickness;  // per point (0 for spheres); empty unless keep_thickness
   SurfelStats stats;
 };
 

@@ -1,0 +1,72 @@
+#pragma once
+// Exact k nearest neighbours of points already in Morton order
+// (morton_order.hpp), without a copy of them: a complete binary tree over the
+// array's index ranges (each node a contiguous run of the Morton curve, so a
+// box of nearby points), of which only the boxes are stored (about 3 bytes a
+// point).
+//
+// Queries come in index order, so consecutive ones share a leaf: the points
+// within a radius r of the leaf's box are gathered once, and each query of
+// the leaf takes its k nearest among them. Its answer is certain when its
+// k-th distance is below r plus its own distance to the box's faces (a point
+// left out is farther than that); r follows the k-th distances of the leaf
+// before. A query that is not certain (too few points within reach: a stray
+// point, the edge of a sparse region) and every query of a leaf whose box is
+// far wider than r (a run of the curve that jumps) search the tree on their
+// own, depth first, pruned by the boxes. Density that varies a hundredfold
+// across a scan is followed leaf by leaf; nothing is sized from a global cell.
+//
+// The answer is the k smallest (squared distance, index) pairs, nearest first,
+// with distances summed as FLANN's L2_Simple<float> sums them: ties are broken
+// by index, so the answer depends on nothing but the points.
+//
+// Standard library and Eigen only.
+
+#include <Eigen/Core>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+namespace occlusion {
+
+class MortonKnn {
+ public:
+  // A query's neighbours: ids[0..got), nearest first (the query among them).
+  using Visit = std::function<void(std::size_t n, std::size_t query, const std::uint32_t* ids,
+                                   std::size_t got)>;
+
+  // `points` in Morton order, borrowed: they must outlive the search and stay
+  // unchanged. At most 2^32 - 1 points, all finite.
+  explicit MortonKnn(const std::vector<Eigen::Vector3f>& points, unsigned threads = 0);
+
+  // For n in [first, last): the query is subset[n] (null: n itself), the
+  // subset increasing; calls visit(n, query, ids, got) with its min(k, size)
+  // nearest. Thread-safe: each thread may search its own range (visit must
+  // not search again: the thread's scratch holds the answer it reads).
+  void search(const std::uint32_t* subset, std::size_t first, std::size_t last, std::size_t k,
+              const Visit& visit) const;
+
+  std::size_t size() const { return points_.size(); }
+
+ private:
+  struct Box {
+    Eigen::Vector3f lo, hi;
+  };
+  struct Scratch;
+
+  std::size_t begin_of(int depth, std::size_t j) const {
+    return static_cast<std::size_t>((static_cast<std::uint64_t>(points_.size()) * j) >> depth);
+  }
+  void gather(const Box& around, float radius, Scratch& scratch) const;
+  void select_nearest(std::size_t count, float guess, std::size_t k, Scratch& scratch) const;
+  void search_alone(const Eigen::Vector3f& query, std::size_t k, float bound,
+                    Scratch& scratch) const;
+
+  const std::vector<Eigen::Vector3f>& points_;
+  int depth_ = 0;           // of the leaves: 2^depth_ of them
+  std::vector<Box> boxes_;  // node i at depth d, rank j: i = 2^d - 1 + j
+  float margin_ = 0.0f;     // float rounding of distances at the cloud's coordinates
+};
+
+}  // namespace occlusion

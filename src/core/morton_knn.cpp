@@ -1,0 +1,320 @@
+#include "occlusion/core/morton_knn.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <cfloat>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "occlusion/core/parallel.hpp"
+
+namespace occlusion {
+
+namespace {
+
+// Leaves hold kLeafPoints to 2 kLeafPoints - 1 points.
+constexpr std::size_t kLeafPoints = 8;
+// A leaf wider than this many gather radii is a jump of the curve (or holds
+// stray points): its queries search alone rather than gather half the cloud.
+constexpr float kWideLeaf = 8.0f;
+// The next leaf's radius: this much above the largest k-th distance of the
+// leaf before, among those within kTypical times its median (a stray
+// point's does not inflate it).
+constexpr float kRadiusSlack = 1.1f;
+constexpr float kTypical = 4.0f;
+
+float squared_distance(const Eigen::Vector3f& a, const Eigen::Vector3f& b) {
+  // As FLANN's L2_Simple<float> sums it (analysis/distinct_neighbours.hpp).
+  const float dx = a.x() - b.x();
+  const float dy = a.y() - b.y();
+  const float dz = a.z() - b.z();
+  float sum = dx * dx;
+  sum += dy * dy;
+  sum += dz * dz;
+  return sum;
+}
+
+// Gaps are rounded like the points' own differences, so a box is never
+// farther than a point inside it.
+float gap(float lo, float hi, float x) {
+  return std::max({lo - x, x - hi, 0.0f});
+}
+
+}  // namespace
+
+struct MortonKnn::Scratch {
+  // The gathered points, in increasing index.
+  std::vector<float> x, y, z, d2;
+  std::vector<std::uint32_t> ids;
+  std::vector<std::uint64_t> keys;
+  std::vector<std::uint32_t> last_ids;  // the answer of the query before
+  // The best so far: (squared distance, index) increasing.
+  std::vector<float> best_d2;
+  std::vector<std::uint32_t> best_ids;
+  std::size_t found = 0;
+  std::vector<std::pair<std::size_t, int>> stack;  // (node, depth)
+  std::vector<float> kth;
+
+  void reset_best(std::size_t k) {
+    best_d2.resize(k);
+    best_ids.resize(k);
+    found = 0;
+  }
+  // Keeps (d, id) if it is among the k smallest pairs seen.
+  void offer(float d, std::uint32_t id, std::size_t k) {
+    std::size_t at;
+    if (found < k) {
+      at = found++;
+    } else if (d < best_d2[k - 1] || (d == best_d2[k - 1] && id < best_ids[k - 1])) {
+      at = k - 1;
+    } else {
+      return;
+    }
+    while (at > 0 && (best_d2[at - 1] > d || (best_d2[at - 1] == d && best_ids[at - 1] > id))) {
+      best_d2[at] = best_d2[at - 1];
+      best_ids[at] = best_ids[at - 1];
+      --at;
+    }
+    best_d2[at] = d;
+    best_ids[at] = id;
+  }
+};
+
+MortonKnn::MortonKnn(const std::vector<Eigen::Vector3f>& points, unsigned threads)
+    : points_(points) {
+  const std::size_t n = points.size();
+  if (n == 0) return;
+  if (n > std::numeric_limits<std::uint32_t>::max()) {
+    throw std::invalid_argument("MortonKnn: at most 2^32 - 1 points, got " + std::to_string(n));
+  }
+  while ((n >> (depth_ + 1)) >= kLeafPoints) ++depth_;
+  const std::size_t leaves = std::size_t{1} << depth_;
+  boxes_.resize(2 * leaves - 1);
+  std::atomic<bool> finite{true};
+  parallel_for(leaves, 1024, threads, [&](std::size_t first, std::size_t last) {
+    for (std::size_t j = first; j < last; ++j) {
+      Box box{points[begin_of(depth_, j)], points[begin_of(depth_, j)]};
+      bool all_finite = true;
+      for (std::size_t i = begin_of(depth_, j); i < begin_of(depth_, j + 1); ++i) {
+        all_finite = all_finite && points[i].allFinite();
+        box.lo = box.lo.cwiseMin(points[i]);
+        box.hi = box.hi.cwiseMax(points[i]);
+      }
+      if (!all_finite) finite = false;
+      boxes_[leaves - 1 + j] = box;
+    }
+  });
+  for (std::size_t i = leaves - 1; i-- > 0;) {
+    const Box& left = boxes_[2 * i + 1];
+    const Box& right = boxes_[2 * i + 2];
+    boxes_[i] = Box{left.lo.cwiseMin(right.lo), left.hi.cwiseMax(right.hi)};
+  }
+  if (!finite) throw std::invalid_argument("MortonKnn: a point is not finite");
+  const Box& all = boxes_[0];
+  const float largest = std::max(all.lo.cwiseAbs().maxCoeff(), all.hi.cwiseAbs().maxCoeff());
+  margin_ = 32.0f * FLT_EPSILON * largest;
+}
+
+void MortonKnn::gather(const Box& around, float radius, Scratch& scratch) const {
+  scratch.x.clear();
+  scratch.y.clear();
+  scratch.z.clear();
+  scratch.ids.clear();
+  const float reach = radius * radius;
+  scratch.stack.assign(1, {0, 0});
+  while (!scratch.stack.empty()) {
+    const auto [node, depth] = scratch.stack.back();
+    scratch.stack.pop_back();
+    const Box& box = boxes_[node];
+    float d = 0.0f;
+    for (int a = 0; a < 3; ++a) {
+      const float g = std::max({box.lo[a] - around.hi[a], around.lo[a] - box.hi[a], 0.0f});
+      d += g * g;
+    }
+    if (d > reach) continue;
+    if (depth < depth_) {
+      // Left last onto the stack, so first off it: the points come in index order.
+      scratch.stack.push_back({2 * node + 2, depth + 1});
+      scratch.stack.push_back({2 * node + 1, depth + 1});
+      continue;
+    }
+    const std::size_t j = node - ((std::size_t{1} << depth_) - 1);
+    for (std::size_t i = begin_of(depth_, j); i < begin_of(depth_, j + 1); ++i) {
+      const Eigen::Vector3f& p = points_[i];
+      const float gx = gap(around.lo.x(), around.hi.x(), p.x());
+      const float gy = gap(around.lo.y(), around.hi.y(), p.y());
+      const float gz = gap(around.lo.z(), around.hi.z(), p.z());
+      if (gx * gx + gy * gy + gz * gz > reach) continue;
+      scratch.x.push_back(p.x());
+      scratch.y.push_back(p.y());
+      scratch.z.push_back(p.z());
+      scratch.ids.push_back(static_cast<std::uint32_t>(i));
+    }
+  }
+}
+
+void MortonKnn::search_alone(const Eigen::Vector3f& query, std::size_t k, float bound,
+                             Scratch& scratch) const {
+  scratch.reset_best(k);
+  const auto box_distance = [&](std::size_t node) {
+    const Box& box = boxes_[node];
+    const float gx = gap(box.lo.x(), box.hi.x(), query.x());
+    const float gy = gap(box.lo.y(), box.hi.y(), query.y());
+    const float gz = gap(box.lo.z(), box.hi.z(), query.z());
+    float sum = gx * gx;
+    sum += gy * gy;
+    sum += gz * gz;
+    return sum;
+  };
+  // Until k are found, `bound` (a k-th distance already known to be reached) prunes.
+  const auto reach = [&] { return scratch.found < k ? bound : scratch.best_d2[k - 1]; };
+  scratch.stack.assign(1, {0, 0});
+  while (!scratch.stack.empty()) {
+    const auto [node, depth] = scratch.stack.back();
+    scratch.stack.pop_back();
+    // Equal distances are searched too: a tie with a smaller index wins.
+    if (box_distance(node) > reach()) continue;
+    if (depth < depth_) {
+      const std::size_t left = 2 * node + 1, right = 2 * node + 2;
+      const bool left_first = box_distance(left) <= box_distance(right);
+      scratch.stack.push_back({left_first ? right : left, depth + 1});
+      scratch.stack.push_back({left_first ? left : right, depth + 1});
+      continue;
+    }
+    const std::size_t j = node - ((std::size_t{1} << depth_) - 1);
+    for (std::size_t i = begin_of(depth_, j); i < begin_of(depth_, j + 1); ++i) {
+      const float d = squared_distance(query, points_[i]);
+      if (d <= reach()) scratch.offer(d, static_cast<std::uint32_t>(i), k);
+    }
+  }
+}
+
+// The k smallest (squared distance, index) among the gathered points whose
+// distance is within `guess` (all of them when fewer than k are). Squared
+// distances are never negative, so their bits order as they do, and a pair
+// is one 64-bit key: sorting keys sorts by distance, then index.
+void MortonKnn::select_nearest(std::size_t count, float guess, std::size_t k,
+                               Scratch& scratch) const {
+  std::vector<std::uint64_t>& keys = scratch.keys;
+  keys.resize(count);
+  const auto key = [&](std::size_t c) {
+    std::uint32_t bits;
+    std::memcpy(&bits, &scratch.d2[c], sizeof bits);
+    return std::uint64_t{bits} << 32 | scratch.ids[c];
+  };
+  std::size_t kept = 0;
+  for (std::size_t c = 0; c < count; ++c) {
+    keys[kept] = key(c);
+    kept += scratch.d2[c] <= guess ? 1 : 0;
+  }
+  if (kept < k) {
+    for (std::size_t c = 0; c < count; ++c) keys[c] = key(c);
+    kept = count;
+  }
+  scratch.reset_best(k);
+  if (kept < k) {
+    scratch.found = kept;
+  } else {
+    const auto nth = keys.begin() + static_cast<std::ptrdiff_t>(k - 1);
+    std::nth_element(keys.begin(), nth, keys.begin() + static_cast<std::ptrdiff_t>(kept));
+    std::sort(keys.begin(), nth);
+    scratch.found = k;
+  }
+  for (std::size_t j = 0; j < scratch.found; ++j) {
+    const auto bits = static_cast<std::uint32_t>(keys[j] >> 32);
+    std::memcpy(&scratch.best_d2[j], &bits, sizeof bits);
+    scratch.best_ids[j] = static_cast<std::uint32_t>(keys[j]);
+  }
+}
+
+void MortonKnn::search(const std::uint32_t* subset, std::size_t first, std::size_t last,
+                       std::size_t k, const Visit& visit) const {
+  const std::size_t n = points_.size();
+  k = std::min(k, n);
+  if (k == 0 || first >= last) return;
+  thread_local Scratch scratch;
+  const std::size_t leaves = std::size_t{1} << depth_;
+  const auto query_of = [&](std::size_t m) -> std::size_t { return subset ? subset[m] : m; };
+  float radius = -1.0f;  // none yet
+  scratch.last_ids.clear();
+  for (std::size_t m = first; m < last;) {
+    const std::size_t s = query_of(m);
+    std::size_t j = static_cast<std::size_t>((static_cast<std::uint64_t>(s) << depth_) / n);
+    while (j + 1 < leaves && begin_of(depth_, j + 1) <= s) ++j;
+    while (begin_of(depth_, j) > s) --j;
+    const std::size_t end = begin_of(depth_, j + 1);
+    std::size_t leaf_last = m;
+    while (leaf_last < last && query_of(leaf_last) < end) ++leaf_last;
+
+    const Box& box = boxes_[leaves - 1 + j];
+    const float extent = (box.hi - box.lo).maxCoeff();
+    // The first leaf searches alone: its k-th distances size the next gather.
+    const bool batch = radius >= 0.0f && extent <= kWideLeaf * radius;
+    const float r = radius;
+    if (batch) {
+      gather(box, r, scratch);
+      scratch.d2.resize(scratch.ids.size());
+    }
+    scratch.kth.clear();
+    for (; m < leaf_last; ++m) {
+      const std::size_t q = query_of(m);
+      const Eigen::Vector3f& p = points_[q];
+      // The query before's k neighbours are k points: none of this query's
+      // k nearest is farther than the farthest of them. Candidates beyond
+      // are skipped with one comparison.
+      float guess = std::numeric_limits<float>::infinity();
+      if (scratch.last_ids.size() == k) {
+        guess = 0.0f;
+        for (const std::uint32_t id : scratch.last_ids) {
+          guess = std::max(guess, squared_distance(p, points_[id]));
+        }
+      }
+      bool certain = false;
+      float bound = guess;
+      if (batch) {
+        const std::size_t count = scratch.ids.size();
+        for (std::size_t c = 0; c < count; ++c) {
+          const float dx = p.x() - scratch.x[c];
+          const float dy = p.y() - scratch.y[c];
+          const float dz = p.z() - scratch.z[c];
+          float sum = dx * dx;
+          sum += dy * dy;
+          sum += dz * dz;
+          scratch.d2[c] = sum;
+        }
+        select_nearest(count, guess, k, scratch);
+        if (scratch.found == k) {
+          bound = scratch.best_d2[k - 1];
+          // A point left out lies farther than r from the box, so farther
+          // than r plus the query's depth inside the box from the query.
+          const float inside = std::min((p - box.lo).minCoeff(), (box.hi - p).minCoeff());
+          certain = count == n || std::sqrt(static_cast<double>(bound)) <
+                                      static_cast<double>(r) + inside - margin_;
+        }
+      }
+      if (!certain) {
+        search_alone(p, k, bound, scratch);
+        if (scratch.found < k) search_alone(p, k, std::numeric_limits<float>::infinity(), scratch);
+      }
+      scratch.last_ids.assign(scratch.best_ids.begin(), scratch.best_ids.end());
+      scratch.kth.push_back(std::sqrt(scratch.best_d2[k - 1]));
+      visit(m, q, scratch.best_ids.data(), k);
+    }
+    if (!scratch.kth.empty()) {
+      std::vector<float>& kth = scratch.kth;
+      const auto middle = kth.begin() + static_cast<std::ptrdiff_t>(kth.size() / 2);
+      std::nth_element(kth.begin(), middle, kth.end());
+      const float typical = kTypical * *middle;
+      float largest = 0.0f;
+      for (const float d : kth) {
+        if (d <= typical) largest = std::max(largest, d);
+      }
+      radius = kRadiusSlack * largest;
+    }
+  }
+}
+
+}  // namespace occlusion
