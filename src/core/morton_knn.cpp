@@ -26,17 +26,6 @@ constexpr float kWideLeaf = 8.0f;
 constexpr float kRadiusSlack = 1.1f;
 constexpr float kTypical = 4.0f;
 
-float squared_distance(const Eigen::Vector3f& a, const Eigen::Vector3f& b) {
-  // As FLANN's L2_Simple<float> sums it (analysis/distinct_neighbours.hpp).
-  const float dx = a.x() - b.x();
-  const float dy = a.y() - b.y();
-  const float dz = a.z() - b.z();
-  float sum = dx * dx;
-  sum += dy * dy;
-  sum += dz * dz;
-  return sum;
-}
-
 // Gaps are rounded like the points' own differences, so a box is never
 // farther than a point inside it.
 float gap(float lo, float hi, float x) {
@@ -186,7 +175,7 @@ void MortonKnn::search_alone(const Eigen::Vector3f& query, std::size_t k, float 
     }
     const std::size_t j = node - ((std::size_t{1} << depth_) - 1);
     for (std::size_t i = begin_of(depth_, j); i < begin_of(depth_, j + 1); ++i) {
-      const float d = squared_distance(query, points_[i]);
+      const float d = knn_squared_distance(query, points_[i]);
       if (d <= reach()) scratch.offer(d, static_cast<std::uint32_t>(i), k);
     }
   }
@@ -269,7 +258,7 @@ void MortonKnn::search(const std::uint32_t* subset, std::size_t first, std::size
       if (scratch.last_ids.size() == k) {
         guess = 0.0f;
         for (const std::uint32_t id : scratch.last_ids) {
-          guess = std::max(guess, squared_distance(p, points_[id]));
+          guess = std::max(guess, knn_squared_distance(p, points_[id]));
         }
       }
       bool certain = false;

@@ -8,6 +8,8 @@
 #include <random>
 #include <stdexcept>
 
+#include "occlusion/core/morton_knn.hpp"
+
 namespace occlusion {
 namespace {
 
@@ -18,7 +20,7 @@ DistinctNeighbour brute_force(const std::vector<Eigen::Vector3f>& positions, std
                               double same) {
   std::vector<float> squared;
   for (const Eigen::Vector3f& p : positions) {
-    squared.push_back(flann_squared_distance(positions[q], p));
+    squared.push_back(knn_squared_distance(positions[q], p));
   }
   std::sort(squared.begin(), squared.end());
   DistinctNeighbour answer{0, std::numeric_limits<float>::infinity()};

@@ -17,21 +17,11 @@ namespace {
 
 using Answer = std::vector<std::uint32_t>;
 
-float squared(const Eigen::Vector3f& a, const Eigen::Vector3f& b) {
-  const float dx = a.x() - b.x();
-  const float dy = a.y() - b.y();
-  const float dz = a.z() - b.z();
-  float sum = dx * dx;
-  sum += dy * dy;
-  sum += dz * dz;
-  return sum;
-}
-
 // Every point against every other: the k smallest (squared distance, index).
 Answer brute_force(const std::vector<Eigen::Vector3f>& points, std::size_t query, std::size_t k) {
   std::vector<std::pair<float, std::uint32_t>> all(points.size());
   for (std::size_t i = 0; i < points.size(); ++i) {
-    all[i] = {squared(points[query], points[i]), static_cast<std::uint32_t>(i)};
+    all[i] = {knn_squared_distance(points[query], points[i]), static_cast<std::uint32_t>(i)};
   }
   k = std::min(k, all.size());
   std::partial_sort(all.begin(), all.begin() + static_cast<std::ptrdiff_t>(k), all.end());

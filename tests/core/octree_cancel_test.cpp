@@ -20,10 +20,12 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// A million points scattered in a 10 m cube.
-LargeVector<Sphere> million_spheres() {
+// Four million points scattered in a 10 m cube: a build long enough (about
+// 0.6 s in Release) that the scheduler's hiccups on a loaded machine, tens of
+// milliseconds, are small beside the margins below.
+LargeVector<Sphere> four_million_spheres() {
   Rng random(7);
-  std::vector<Eigen::Vector3f> points(1'000'000);
+  std::vector<Eigen::Vector3f> points(4'000'000);
   for (auto& p : points) {
     p = Eigen::Vector3f(static_cast<float>(10.0 * random.uniform()),
                         static_cast<float>(10.0 * random.uniform()),
@@ -44,10 +46,10 @@ TEST(OctreeCancel, CancelledBeforeTheBuildBuildsNothing) {
   EXPECT_EQ(TriangleOctree(triangles, {}, progress).size(), 1u);
 }
 
-TEST(OctreeCancel, CancelStopsAMillionPointBuildPromptly) {
-  // The caller's copy of the shapes is made before each clock starts: 16 MB
+TEST(OctreeCancel, CancelStopsAFourMillionPointBuildPromptly) {
+  // The caller's copy of the shapes is made before each clock starts: 64 MB
   // of fresh pages cost about as much as a third of the build on a VM.
-  const LargeVector<Sphere> spheres = million_spheres();
+  const LargeVector<Sphere> spheres = four_million_spheres();
   LargeVector<Sphere> copy = spheres;
   auto start = Clock::now();
   const SphereOctree full(std::move(copy), sphere_octree_options());
@@ -63,7 +65,9 @@ TEST(OctreeCancel, CancelStopsAMillionPointBuildPromptly) {
   const double before_seconds = seconds_since(start);
   EXPECT_LT(before_seconds, 0.25 * full_seconds) << "full build " << full_seconds << " s";
 
-  // Cancelled a quarter of the way in: stops there, not at the end.
+  // Cancelled a quarter of the way in: stops well before the end (a ratio of
+  // the same build on the same machine, with half the build as margin for the
+  // canceller's wake-up and the unwinding).
   cancel = false;
   const double delay = 0.25 * full_seconds;
   copy = spheres;
@@ -75,7 +79,7 @@ TEST(OctreeCancel, CancelStopsAMillionPointBuildPromptly) {
   EXPECT_THROW(SphereOctree(std::move(copy), sphere_octree_options(), progress), Cancelled);
   const double during_seconds = seconds_since(start);
   canceller.join();
-  EXPECT_LT(during_seconds, delay + 0.25 * full_seconds) << "full build " << full_seconds << " s";
+  EXPECT_LT(during_seconds, delay + 0.5 * full_seconds) << "full build " << full_seconds << " s";
 }
 
 }  // namespace

@@ -41,15 +41,4 @@ std::vector<DistinctNeighbour> distinct_neighbours(const std::vector<Eigen::Vect
                                                    const std::vector<double>& same,
                                                    std::uint32_t cap, unsigned threads = 0);
 
-// The squared distance as FLANN's L2_Simple<float> sums it.
-inline float flann_squared_distance(const Eigen::Vector3f& a, const Eigen::Vector3f& b) {
-  const float dx = a.x() - b.x();
-  const float dy = a.y() - b.y();
-  const float dz = a.z() - b.z();
-  float sum = dx * dx;
-  sum += dy * dy;
-  sum += dz * dz;
-  return sum;
-}
-
 }  // namespace occlusion

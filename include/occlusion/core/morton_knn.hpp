@@ -30,6 +30,18 @@
 
 namespace occlusion {
 
+// The squared distance as FLANN's L2_Simple<float> sums it, term by term in
+// float: every neighbour search here sums it so, so their ties agree.
+inline float knn_squared_distance(const Eigen::Vector3f& a, const Eigen::Vector3f& b) {
+  const float dx = a.x() - b.x();
+  const float dy = a.y() - b.y();
+  const float dz = a.z() - b.z();
+  float sum = dx * dx;
+  sum += dy * dy;
+  sum += dz * dz;
+  return sum;
+}
+
 class MortonKnn {
  public:
   // A query's neighbours: ids[0..got), nearest first (the query among them).
