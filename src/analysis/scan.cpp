@@ -62,11 +62,6 @@ Ray segment_ray(const Eigen::Vector3d& from, const Eigen::Vector3d& direction,
 
 }  // namespace
 
-double own_surface_reach(const Surfel& surfel, float thickness, const Eigen::Vector3d& unit) {
-  return surfel_ray_rule::own_reach(
-      surfel, thickness, static_cast<float>(std::abs(surfel.normal.cast<double>().dot(unit))));
-}
-
 Ray scan_surfel_ray(const Eigen::Vector3d& viewpoint, const Surfel& surfel, float thickness,
                     double near_viewpoint, double fixed_reach) {
   return surfel_ray_rule::ray({viewpoint.cast<float>(), static_cast<float>(near_viewpoint),

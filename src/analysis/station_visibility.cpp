@@ -23,8 +23,8 @@ constexpr char kAnalysis[] = "station visibility";
 // Progress reports per matrix at most (candidates finish every few tens of
 // milliseconds).
 constexpr std::size_t kProgressSteps = 100;
-// Targets per block traced on one thread: one window of the octree's
-// direction sort (ray_order.hpp), a patch of surface.
+// Targets per block traced on one thread: a patch of surface (the targets
+// are in Morton order), one window of the octree's batch (ray_order.hpp).
 constexpr std::size_t kTargetsPerThreadBlock = 4096;
 // Targets per block traced on all threads (few candidates): bounds the scratch
 // memory and sets how often cancel is checked.

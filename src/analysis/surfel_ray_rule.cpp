@@ -101,10 +101,6 @@ void four_rays(const Viewpoint& viewpoint, const Target* targets, Ray* out) {
 
 }  // namespace
 
-float own_reach(const Surfel& surfel, float thickness, float sine) {
-  return reach_of(surfel.radius, surfel.oriented(), sine, thickness);
-}
-
 Ray ray(const Viewpoint& viewpoint, const Target& target) {
   const Surfel& surfel = target.surfel;
   const float dx = surfel.center.x() - viewpoint.position.x();

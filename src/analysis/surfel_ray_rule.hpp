@@ -38,10 +38,6 @@ struct Viewpoint {
 // normal, thickness).
 using Target = ScanTracer::Target;
 
-// The reach of a disc's own surface along a ray meeting its plane at `sine`
-// (|cos| of the angle between ray and normal).
-float own_reach(const Surfel& surfel, float thickness, float sine);
-
 Ray ray(const Viewpoint& viewpoint, const Target& target);
 // out[k] = ray(viewpoint, targets[k]) for k < count.
 void rays(const Viewpoint& viewpoint, const Target* targets, std::size_t count, Ray* out);

@@ -89,8 +89,4 @@ Ray scan_shadow_ray(const Eigen::Vector3d& viewpoint, const Eigen::Vector3f& poi
 Ray scan_surfel_ray(const Eigen::Vector3d& viewpoint, const Surfel& surfel, float thickness,
                     double near_viewpoint, double fixed_reach = -1.0);
 
-// The reach of a surfel's own surface along a ray of unit direction `unit`
-// that ends at it (the rule above).
-double own_surface_reach(const Surfel& surfel, float thickness, const Eigen::Vector3d& unit);
-
 }  // namespace occlusion
