@@ -57,6 +57,10 @@ void Octree<Shape>::build(Shapes& shapes, const OctreeOptions& options, const Pr
   if (!cpu_supports(traversal_)) {
     throw std::invalid_argument("octree: this build or CPU cannot run the traversal asked for");
   }
+  coherent_traversal_ =
+      options.traversal == OctreeTraversal::kAuto && traversal_ == OctreeTraversal::kPacketAvx2
+          ? OctreeTraversal::kPacketAvx2Wide
+          : traversal_;
   progress.check_cancel();
   const auto start = std::chrono::steady_clock::now();
   stats_ = OctreeStats{};
@@ -123,7 +127,7 @@ template <class Shape>
 template <bool kAnyHit>
 void Octree<Shape>::trace_batch(const Ray* rays, std::size_t count, const PrimitiveId* ignore_ids,
                                 std::optional<Hit>* hits, std::uint8_t* occluded_out,
-                                unsigned threads, [[maybe_unused]] BatchOrder ray_order) const {
+                                unsigned threads, BatchOrder ray_order) const {
   const auto single = [&](std::size_t i) {
     const std::optional<Hit> hit =
         traverse<kAnyHit>(rays[i], ignore_ids ? ignore_ids[i] : kNoPrimitive);
@@ -133,7 +137,9 @@ void Octree<Shape>::trace_batch(const Ray* rays, std::size_t count, const Primit
       hits[i] = hit;
     }
   };
-  if (traversal_ == OctreeTraversal::kSingle) {
+  const OctreeTraversal traversal =
+      ray_order == BatchOrder::kAsGiven ? coherent_traversal_ : traversal_;
+  if (traversal == OctreeTraversal::kSingle) {
     parallel_for(count, octree_detail::kBatchGrain, threads, [&](std::size_t b, std::size_t e) {
       for (std::size_t i = b; i < e; ++i) single(i);
     });
@@ -153,12 +159,16 @@ void Octree<Shape>::trace_batch(const Ray* rays, std::size_t count, const Primit
       } else {
         order_by_direction(rays, window, window_end, order.data(), scratch);
       }
-      switch (traversal_) {
+      switch (traversal) {
         case OctreeTraversal::kPacketAvx512:
           octree_detail::packet_avx512::trace_packets<Shape, kAnyHit>(tree, query, order.data(), n);
           break;
         case OctreeTraversal::kPacketAvx2:
           octree_detail::packet_avx2::trace_packets<Shape, kAnyHit>(tree, query, order.data(), n);
+          break;
+        case OctreeTraversal::kPacketAvx2Wide:
+          octree_detail::packet_avx2_wide::trace_packets<Shape, kAnyHit>(tree, query, order.data(),
+                                                                         n);
           break;
         default:
           octree_detail::packet_sse2::trace_packets<Shape, kAnyHit>(tree, query, order.data(), n);

@@ -10,6 +10,7 @@ bool cpu_supports(OctreeTraversal traversal) {
     case OctreeTraversal::kPacketAvx512:
       return __builtin_cpu_supports("avx512f");
     case OctreeTraversal::kPacketAvx2:
+    case OctreeTraversal::kPacketAvx2Wide:
       return __builtin_cpu_supports("avx2");
     default:
       return true;

@@ -1,7 +1,8 @@
 #pragma once
 // Packet traversal for the octree's batch queries: rays are put in a coherent
 // order (ray_order.hpp), then traced 8 at a time with SSE2 or AVX2, or 16 at a
-// time with AVX-512, whichever the CPU has. See octree_packet_body.inc for how a packet goes down.
+// time with AVX-512, whichever the CPU has; rays coherent as given go 32 at a
+// time with AVX2. See octree_packet_body.inc for how a packet goes down.
 
 #include <cstddef>
 #include <cstdint>
@@ -43,6 +44,13 @@ namespace packet_sse2 {
 namespace packet_avx2 {
 #include "octree_packet_body.inc"
 }  // namespace packet_avx2
+#pragma GCC pop_options
+
+#pragma GCC push_options
+#pragma GCC target("avx2")
+namespace packet_avx2_wide {
+#include "octree_packet_body.inc"
+}  // namespace packet_avx2_wide
 #pragma GCC pop_options
 
 #pragma GCC push_options

@@ -162,7 +162,8 @@ std::vector<OctreeTraversal> traversals() {
   std::vector<OctreeTraversal> all;
   for (const OctreeTraversal traversal :
        {OctreeTraversal::kSingle, OctreeTraversal::kAuto, OctreeTraversal::kPacketSse2,
-        OctreeTraversal::kPacketAvx2, OctreeTraversal::kPacketAvx512}) {
+        OctreeTraversal::kPacketAvx2, OctreeTraversal::kPacketAvx512,
+        OctreeTraversal::kPacketAvx2Wide}) {
     if (cpu_supports(traversal)) all.push_back(traversal);
   }
   return all;
@@ -281,8 +282,8 @@ TEST(OctreePackets, TiesGoToTheLowerIdInEveryTraversal) {
 
 TEST(OctreePackets, RefusesATraversalTheCpuCannotRun) {
   for (const OctreeTraversal traversal :
-       {OctreeTraversal::kPacketSse2, OctreeTraversal::kPacketAvx2,
-        OctreeTraversal::kPacketAvx512}) {
+       {OctreeTraversal::kPacketSse2, OctreeTraversal::kPacketAvx2, OctreeTraversal::kPacketAvx512,
+        OctreeTraversal::kPacketAvx2Wide}) {
     if (cpu_supports(traversal)) continue;
     OctreeOptions options;
     options.traversal = traversal;

@@ -43,11 +43,12 @@ struct TreeView;
 
 // How the batch queries trace. All give the same answers; they differ in speed.
 enum class OctreeTraversal {
-  kAuto,          // packets with AVX-512 or AVX2 if the CPU has them, else single rays
-  kSingle,        // one ray at a time (the reference for the packet paths)
-  kPacketSse2,    // eight rays at a time, SSE2 (x86-64 baseline; slower than kSingle)
-  kPacketAvx2,    // eight rays at a time, AVX2
-  kPacketAvx512,  // sixteen rays at a time, AVX-512F
+  kAuto,            // packets with AVX-512 or AVX2 if the CPU has them, else single rays
+  kSingle,          // one ray at a time (the reference for the packet paths)
+  kPacketSse2,      // eight rays at a time, SSE2 (x86-64 baseline; slower than kSingle)
+  kPacketAvx2,      // eight rays at a time, AVX2
+  kPacketAvx512,    // sixteen rays at a time, AVX-512F
+  kPacketAvx2Wide,  // 32 rays at a time, AVX2: for coherent rays (BatchOrder::kAsGiven)
 };
 // Whether this build and CPU can run `traversal` (the octree refuses one it can't).
 bool cpu_supports(OctreeTraversal traversal);
@@ -69,7 +70,8 @@ struct OctreeOptions {
 // How a batch query forms its packets. kAsGiven is for rays that are
 // coherent already: one viewpoint's rays to targets in Morton order point
 // nearly the same way in runs, and a plan's candidates skip the sort's cost
-// (9 % of a matrix, bench_plan).
+// (9 % of a matrix, bench_plan). Such rays stay together down the tree, so
+// where kAuto chose AVX2 they go 32 at a time (kPacketAvx2Wide).
 enum class BatchOrder { kSortByDirection, kAsGiven };
 
 struct OctreeStats {
@@ -172,6 +174,8 @@ class Octree {
   float magnitude_ = 0.0f;  // largest coordinate magnitude of the padded bounds (TreeView)
   OctreeStats stats_;
   OctreeTraversal traversal_ = OctreeTraversal::kAuto;  // resolved: never kAuto
+  // What BatchOrder::kAsGiven batches use: traversal_, or wider packets where kAuto chose AVX2.
+  OctreeTraversal coherent_traversal_ = OctreeTraversal::kAuto;
 };
 
 }  // namespace occlusion
