@@ -219,6 +219,15 @@ std::string answer(const StudyReport& report) {
       slope.p_value ? "within-scene permutation p = " + format_number("%.3g", *slope.p_value) + "; "
                     : "";
   if (!slope.value) {
+    // Undefined because mIoU never changes, or because the measure changes in no scene.
+    std::vector<double> x, miou;
+    pairs(report.table, m->measure, x, miou);
+    if (miou.size() >= 2 && constant(miou)) {
+      return "**Answer:** this study cannot say: mIoU is the same (" +
+             format_number("%.4g", miou.front()) +
+             ") in every run, so there is nothing to relate to " + m->measure + " (" + counts +
+             ").";
+    }
     return "**Answer:** this study cannot say: no scene was scanned from configurations whose " +
            m->measure + " differs, so there is no within-scene effect to estimate (" + counts +
            ").";

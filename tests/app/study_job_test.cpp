@@ -739,6 +739,41 @@ TEST(StudyJob, StudyMdOpensWithTheAnswerAndItsUncertainty) {
   }
 }
 
+TEST(StudyJob, AnAnswerThatCannotBeGivenSaysWhichSideDidNotVary) {
+  const ScratchDirectory dir;
+  const StudyReport real = run_study(office_study(dir.file("real")));
+  // A segmenter that scores the same whatever the scan (an untrained model:
+  // mIoU 0 everywhere), while the occlusion level varies in every scene.
+  CsvTable flat_miou = planted_study(real.table, -0.5);
+  for (auto& row : flat_miou.rows) row[flat_miou.column("miou")] = "0";
+  // Configurations that all see a scene alike, while mIoU varies.
+  CsvTable flat_measure = planted_study(real.table, -0.5);
+  for (auto& row : flat_measure.rows) {
+    const std::string scene = row[flat_measure.column("scene")];
+    row[flat_measure.column("occlusion_level")] = "0." + scene.substr(scene.size() - 1);
+  }
+  const struct {
+    const char* name;
+    const CsvTable* table;
+    const char* answer;
+  } cases[] = {
+      {"flat_miou", &flat_miou,
+       "**Answer:** this study cannot say: mIoU is the same (0) in every run, so there is "
+       "nothing to relate to occlusion_level (24 runs in 8 scenes)."},
+      {"flat_measure", &flat_measure,
+       "**Answer:** this study cannot say: no scene was scanned from configurations whose "
+       "occlusion_level differs"},
+  };
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.name);
+    write_csv(dir.file(std::string(c.name) + ".csv"), *c.table);
+    run_study_merge({dir.file(std::string(c.name) + ".csv")}, dir.file(c.name));
+    const std::string markdown = read_bytes(dir.file(std::string(c.name) + "/study.md"));
+    EXPECT_EQ(markdown.find(std::string("# Occlusion study\n\n") + c.answer), 0u)
+        << markdown.substr(0, 400);
+  }
+}
+
 }  // namespace
 }  // namespace occlusion
 
