@@ -113,7 +113,7 @@ MeshStationView::MeshStationView(const TriangleMesh& mesh, const MeshOcclusionOp
 }
 
 MeshStationSight MeshStationView::see(const Eigen::Vector3d& position,
-                                     const StationLimits& limits) const {
+                                      const StationLimits& limits) const {
   const Eigen::Vector3d local = position - origin_;
   check_position(local, (lo_ - origin_).cast<float>(), (hi_ - origin_).cast<float>(),
                  {(hi_ - lo_).norm(), "the mesh's diagonal", "the mesh's centre", "mesh"},

@@ -139,27 +139,18 @@ const Keys<PlanRequest>& plan_keys() {
            .unit("scene units")
            .doc("a station already there, repeatable: kept and counted first"),
        key("existing_stations", &R::existing_stations)
-           .doc("a cloud's own stations (E57 scans, a PCD sensor) count as placed"),
-      },
+           .doc("a cloud's own stations (E57 scans, a PCD sensor) count as placed")},
       plan_limit_keys(),
-      {
-       key("classes", &R::classes)
+      {key("classes", &R::classes)
            .metavar("A,B,...")
            .doc("count coverage only of these classes (a cloud's labels, a mesh's groups); "
                 "empty: everything"),
-       primitive_key(&R::primitive),
-       point_radius_key(&R::point_radius),
-       disc_coverage_key(&R::disc_coverage),
-       normal_neighbours_key(&R::normal_neighbours),
-       self_tolerance_key(&R::self_tolerance),
-       class_names_key(&R::class_names_path),
-       skip_bad_lines_key(&R::skip_bad_lines),
-       samples_per_unit_area_key(&R::samples_per_unit_area),
-       seed_key(&R::seed),
-       frame_key(&R::frame),
-       threads_key(&R::threads),
-       max_memory_key(&R::max_memory_mb),
-       max_work_key(&R::max_work),
+       primitive_key(&R::primitive), point_radius_key(&R::point_radius),
+       disc_coverage_key(&R::disc_coverage), normal_neighbours_key(&R::normal_neighbours),
+       self_tolerance_key(&R::self_tolerance), class_names_key(&R::class_names_path),
+       skip_bad_lines_key(&R::skip_bad_lines), samples_per_unit_area_key(&R::samples_per_unit_area),
+       seed_key(&R::seed), frame_key(&R::frame), threads_key(&R::threads),
+       max_memory_key(&R::max_memory_mb), max_work_key(&R::max_work),
        out_key(&R::out,
                "write SCENE.plan.json, SCENE.plan_curve.csv (coverage after each station), "
                "SCENE.plan_candidates.csv (each candidate's coverage alone and gain left) and "

@@ -78,8 +78,8 @@ std::shared_ptr<LoadedScene> cloud_scene(const PointCloud& cloud) {
   // like every position in JSON, are in the file's: a point of the file is a
   // position plus `shift` (PointCloud::shift).
   summary["shift"] = to_json(cloud.shift);
-  summary["bounds"] = bounds_json(cloud.to_original(lo.cast<double>()),
-                                  cloud.to_original(hi.cast<double>()));
+  summary["bounds"] =
+      bounds_json(cloud.to_original(lo.cast<double>()), cloud.to_original(hi.cast<double>()));
   // Where the scanner stood (the file's stations, or a single-view frame's
   // sensor): the viewer puts its viewpoints there, as -poc and -fscan take
   // them by default.

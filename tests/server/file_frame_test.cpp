@@ -97,9 +97,9 @@ TEST_F(FileFrame, LoadSendsLocalPositionsAndFileFramePositionsInJson) {
 }
 
 TEST_F(FileFrame, TheLiveStationAndScanAgreeAtTheSameFileFramePosition) {
-  const Reply live = client_->request(
-      2, "station_view",
-      params(R"({"path": "utm_room.ply", "position": [500001.5, 5400001, 1.2]})"));
+  const Reply live =
+      client_->request(2, "station_view",
+                       params(R"({"path": "utm_room.ply", "position": [500001.5, 5400001, 1.2]})"));
   ASSERT_TRUE(live.ok()) << live.final;
   const Reply scan = client_->request(
       3, "scan",
