@@ -207,30 +207,44 @@ TEST_F(LiveStation, WithAnIncidenceOrElevationLimitSeesWhatThePlanCounts) {
   std::size_t ceiling_seen = 0;
   for (std::size_t i = 0; i < upward.size(); ++i) {
     const float z = cloud_->positions[i].z();
-    if (z < 1.49f) EXPECT_EQ(upward[i], 0u) << "point " << i;
-    if (z > 1.51f) EXPECT_EQ(upward[i], unlimited[i]) << "point " << i;
+    if (z < 1.49f) {
+      EXPECT_EQ(upward[i], 0u) << "point " << i;
+    } else if (z > 1.51f) {
+      EXPECT_EQ(upward[i], unlimited[i]) << "point " << i;
+    }
     if (z > 2.99f) ceiling_seen += upward[i];
   }
   EXPECT_GT(ceiling_seen, 1000u);
   EXPECT_EQ(upward, plan_covers(*client_, 25, "[2.3, 1.6, 1.5]", R"("min_elevation": 0)"));
 
-  // Grazing angles: a wall point seen more than 60 degrees off its normal is
-  // not; one head-on (the floor right under the station) still is.
+  // Grazing angles: a point met more than 45 degrees off its surface's normal
+  // is not seen. By hand on the floor, 1.5 below the station (away from the
+  // walls, where the discs' normals are the floor's): a point at horizontal
+  // distance r is met atan(r / 1.5) off its normal, so within r = 1.26 (40
+  // degrees) it is seen as before and beyond r = 1.79 (50 degrees) not.
   const Reply grazing = view(26, R"({"path": "two_rooms.ply", "position": [2.3, 1.6, 1.5],
-                                    "max_incidence": 60})");
+                                    "max_incidence": 45})");
   ASSERT_TRUE(grazing.ok()) << grazing.final;
   const auto steep = seen(grazing);
-  std::size_t dropped = 0;
+  std::size_t near_kept = 0, far_dropped = 0;
   for (std::size_t i = 0; i < steep.size(); ++i) {
     EXPECT_LE(steep[i], unlimited[i]) << "point " << i;
-    dropped += unlimited[i] - steep[i];
     const Eigen::Vector3f& p = cloud_->positions[i];
-    if (p.z() < 0.01f && std::abs(p.x() - 2.3f) < 0.3f && std::abs(p.y() - 1.6f) < 0.3f) {
-      EXPECT_EQ(steep[i], unlimited[i]) << "point " << i;
+    const bool floor =
+        p.z() < 0.01f && p.x() > 0.3f && p.x() < 3.6f && p.y() > 0.3f && p.y() < 3.7f;
+    if (!floor || !unlimited[i]) continue;
+    const float r = std::hypot(p.x() - 2.3f, p.y() - 1.6f);
+    if (r < 1.26f) {
+      EXPECT_EQ(steep[i], 1u) << "point " << i;
+      ++near_kept;
+    } else if (r > 1.79f) {
+      EXPECT_EQ(steep[i], 0u) << "point " << i;
+      ++far_dropped;
     }
   }
-  EXPECT_GT(dropped, 1000u);  // the far floor, ceiling and walls
-  EXPECT_EQ(steep, plan_covers(*client_, 27, "[2.3, 1.6, 1.5]", R"("max_incidence": 60)"));
+  EXPECT_GT(near_kept, 300u);
+  EXPECT_GT(far_dropped, 100u);
+  EXPECT_EQ(steep, plan_covers(*client_, 27, "[2.3, 1.6, 1.5]", R"("max_incidence": 45)"));
 }
 
 TEST_F(LiveStation, RefusesLimitsAsThePlanDoes) {
