@@ -247,6 +247,25 @@ TEST_F(LiveStation, WithAnIncidenceOrElevationLimitSeesWhatThePlanCounts) {
   EXPECT_EQ(steep, plan_covers(*client_, 27, "[2.3, 1.6, 1.5]", R"("max_incidence": 45)"));
 }
 
+TEST_F(LiveStation, AMeshsVisibleAreaWithAMaxRangeIsThePlansCoverage) {
+  // Both weigh a sample by its face's area over the face's samples, so the
+  // live station's visible fraction is the plan's coverage by that station.
+  const std::string mesh = R"("path": "sample_room.obj", "samples_per_unit_area": 20, "seed": 3)";
+  const Reply open = view(40, "{" + mesh + R"(, "position": [1, 1, 1.2]})");
+  const Reply near = view(41, "{" + mesh + R"(, "position": [1, 1, 1.2], "max_range": 1.5})");
+  ASSERT_TRUE(open.ok()) << open.final;
+  ASSERT_TRUE(near.ok()) << near.final;
+  const double limited = near.final["result"]["visible_fraction"].asDouble();
+  EXPECT_LT(limited, open.final["result"]["visible_fraction"].asDouble() - 0.05);
+  const Reply plan = client_->request(
+      42, "plan", params("{" + mesh + R"(, "stations": 1, "improve": false, "placed": [[1, 1, 1.2]],
+                              "max_range": 1.5, "out": ""})"));
+  ASSERT_TRUE(plan.ok()) << plan.final;
+  const Json::Value& first = plan.final["result"]["stations"][0];
+  EXPECT_TRUE(first["existing"].asBool()) << first;
+  EXPECT_NEAR(first["coverage"].asDouble(), limited, 1e-9) << plan.final["result"]["stations"];
+}
+
 TEST_F(LiveStation, RefusesLimitsAsThePlanDoes) {
   const Reply negative = view(30, R"({"path": "two_rooms.ply", "position": [2, 2, 1.5],
                                      "max_range": -1})");
