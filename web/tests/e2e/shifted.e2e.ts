@@ -245,6 +245,42 @@ describe("a cloud with a global shift (e2e)", () => {
     expect(state.markers.map((m: number[]) => m[0]! < 4).sort()).toEqual([false, true]);
     const request = [...sent].reverse().find((r) => r.command === "plan")!;
     expect(request.params.max_range).toBeUndefined();
+  });
+
+  test("with a plan on screen, the live station takes that plan's limits", async () => {
+    await page.locator("[data-testid=tab-plan]").click();
+    const station = await page.evaluate(
+      () => (window as any).__occlusion.app.ctx.markers.selection as string,
+    );
+    // A field typed after planning does not change what the plan on screen counted.
+    await page.locator("[data-testid=plan-max_range]").fill("2.5");
+    await drag(station ?? "station1", [7, 2, 1.25]);
+    expect((await settledLive()).params.max_range).toBeUndefined();
+    // Planned with it, it goes with every live position.
+    await page.evaluate(() => {
+      (window as any).__planBefore = (window as any).__occlusion.app.plan.result;
+    });
+    await page.locator("[data-testid=btn-plan]").click();
+    await expect
+      .poll(() => [...sent].reverse().find((r) => r.command === "plan")?.params.max_range)
+      .toBe(2.5);
+    await expect
+      .poll(
+        () =>
+          page.evaluate(
+            () => (window as any).__occlusion.app.plan.result !== (window as any).__planBefore,
+          ),
+        { timeout: 90_000 },
+      )
+      .toBe(true);
+    await liveIdle();
+    const selected = await page.evaluate(() => {
+      const markers = (window as any).__occlusion.app.ctx.markers;
+      if (markers.selection === null) markers.select(markers.enabled()[0].name);
+      return markers.selection as string;
+    });
+    await drag(selected, [7, 2, 1.3]);
+    expect((await settledLive()).params.max_range).toBe(2.5);
     expect(problems).toEqual([]);
   });
 });
