@@ -54,16 +54,33 @@ CloudStationView::CloudStationView(const PointCloud& cloud, std::optional<Surfel
   build_seconds_ = seconds_since(start);
 }
 
-CloudStationSight CloudStationView::see(const Eigen::Vector3d& position) const {
+CloudStationSight CloudStationView::see(const Eigen::Vector3d& position,
+                                        const StationLimits& limits) const {
   check_position(position, lo_, hi_, {radius_, "point_radius", kCloudOrigin, "cloud"},
                  "station view");
+  const StationLimitTest limit(limits);
   const auto start = Clock::now();
-  const std::size_t count = indices_.size();
-  LargeVector<Ray> rays(count);
-  LargeVector<std::uint8_t> blocked(count);
   CloudStationSight sight;
-  sight.seen.resize(count);
-  tracer_->trace(position, indices_.data(), count, sight.seen.data(), rays.data(), blocked.data());
+  sight.seen.assign(indices_.size(), 0);
+  if (limit.unlimited()) {
+    const std::size_t count = indices_.size();
+    LargeVector<Ray> rays(count);
+    LargeVector<std::uint8_t> blocked(count);
+    tracer_->trace(position, indices_.data(), count, sight.seen.data(), rays.data(),
+                   blocked.data());
+  } else {
+    // Only the points the limits admit are traced, as plan coverage does.
+    std::vector<std::uint32_t> admitted;
+    for (const std::uint32_t i : indices_) {
+      if (limit.admits_point(position, tracer_->target(i))) admitted.push_back(i);
+    }
+    const std::size_t count = admitted.size();
+    LargeVector<Ray> rays(count);
+    LargeVector<std::uint8_t> blocked(count);
+    LargeVector<std::uint8_t> seen(count);
+    tracer_->trace(position, admitted.data(), count, seen.data(), rays.data(), blocked.data());
+    for (std::size_t k = 0; k < count; ++k) sight.seen[admitted[k]] = seen[k];
+  }
   for (const auto seen : sight.seen) sight.seen_points += seen;
   sight.trace_seconds = seconds_since(start);
   return sight;
@@ -84,6 +101,7 @@ MeshStationView::MeshStationView(const TriangleMesh& mesh, const MeshOcclusionOp
   samples_ = sample_mesh(mesh, options.samples_per_unit_area, options.seed, progress);
   areas_.resize(mesh.face_count());
   for (std::size_t f = 0; f < areas_.size(); ++f) areas_[f] = mesh.face_area(f);
+  normals_ = face_unit_normals(mesh);
   // As compute_mesh_occlusion: traced around the mesh's centre, and nothing
   // farther than twice the diagonal can block a shadow ray.
   origin_ = 0.5 * (lo_ + hi_);
@@ -94,11 +112,13 @@ MeshStationView::MeshStationView(const TriangleMesh& mesh, const MeshOcclusionOp
   build_seconds_ = seconds_since(start);
 }
 
-MeshStationSight MeshStationView::see(const Eigen::Vector3d& position) const {
+MeshStationSight MeshStationView::see(const Eigen::Vector3d& position,
+                                      const StationLimits& limits) const {
   const Eigen::Vector3d local = position - origin_;
   check_position(local, (lo_ - origin_).cast<float>(), (hi_ - origin_).cast<float>(),
                  {(hi_ - lo_).norm(), "the mesh's diagonal", "the mesh's centre", "mesh"},
                  "station view");
+  const StationLimitTest limit(limits);
   const auto start = Clock::now();
   const std::size_t count = samples_.size();
   LargeVector<Ray> rays(count);
@@ -113,6 +133,12 @@ MeshStationSight MeshStationView::see(const Eigen::Vector3d& position) const {
     }
   });
   tree_->occluded_batch(rays.data(), count, ignore.data(), blocked.data(), options_.threads);
+  if (!limit.unlimited()) {
+    // A sample outside the limits is not seen, as plan coverage counts it.
+    for (std::size_t s = 0; s < count; ++s) {
+      if (!limit.admits(samples_.points[s] - position, normals_[samples_.face[s]])) blocked[s] = 1;
+    }
+  }
   MeshStationSight sight;
   sight.face_seen_fraction.resize(areas_.size());
   for (std::size_t f = 0; f < areas_.size(); ++f) {

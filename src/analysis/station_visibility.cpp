@@ -266,7 +266,9 @@ std::vector<std::uint8_t> candidate_pairs(
   return sees;
 }
 
-std::vector<Eigen::Vector3f> face_normals(const TriangleMesh& mesh) {
+}  // namespace
+
+std::vector<Eigen::Vector3f> face_unit_normals(const TriangleMesh& mesh) {
   std::vector<Eigen::Vector3f> normals(mesh.face_count(), Eigen::Vector3f::Zero());
   for (std::size_t f = 0; f < mesh.face_count(); ++f) {
     const auto& v = mesh.faces[f];
@@ -276,8 +278,6 @@ std::vector<Eigen::Vector3f> face_normals(const TriangleMesh& mesh) {
   }
   return normals;
 }
-
-}  // namespace
 
 StationLimitTest::StationLimitTest(const StationLimits& limits) {
   const auto refuse = [](const std::string& what) {
@@ -362,8 +362,7 @@ CoverageMatrix CloudStationVisibility::coverage(const std::vector<Eigen::Vector3
         return true;
       },
       [&](const Eigen::Vector3d& station, std::size_t k) {
-        const Surfel& surfel = targets_[k].surfel;
-        return limits_.admits(surfel.center.cast<double>() - station, surfel.normal);
+        return limits_.admits_point(station, targets_[k]);
       },
       [&](const Eigen::Vector3d& station, std::size_t k, Ray& ray, PrimitiveId& ignore) {
         ray = tracer_.ray(station, targets_[k]);
@@ -414,7 +413,7 @@ MeshStationVisibility::MeshStationVisibility(const TriangleMesh& mesh, const Mes
   progress("building octree", 0.0);
   tree_ = TriangleOctree(pack_triangles(mesh, origin_), options.octree, progress);
   progress.check_cancel();
-  normals_ = face_normals(mesh);
+  normals_ = face_unit_normals(mesh);
   std::vector<Eigen::Vector3f> positions(samples.size());
   for (std::size_t s = 0; s < samples.size(); ++s) positions[s] = samples.points[s].cast<float>();
   order_ = coherent_targets(positions, weight_);

@@ -225,8 +225,8 @@ std::vector<PlanarPolygon> openings_in_frame(const std::vector<PlanarPolygon>& o
                  "coordinates, as its file holds them";
       if (cloud.shifted()) {
         message << " (the cloud is far from the origin and traced shifted by "
-                << cloud.shift.transpose() << "; coordinates picked in the viewer are in that "
-                << "shifted frame: add the shift)";
+                << cloud.shift.transpose() << "; to coordinates given relative to that shift, "
+                << "add the shift)";
       }
       throw InputError(polygon_path, 0, message.str());
     }

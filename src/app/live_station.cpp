@@ -91,13 +91,25 @@ std::shared_ptr<const LiveStation> LiveStation::for_mesh(const TriangleMesh& mes
   return station;
 }
 
-LiveStationSight LiveStation::see(const Eigen::Vector3d& position) const {
+LiveStationSight LiveStation::see(const Eigen::Vector3d& position,
+                                  const StationLimits& limits) const {
+  try {
+    (void)StationLimitTest(limits);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(e.what());
+  }
   LiveStationSight sight;
   Json::Value& json = sight.json;
   json["position"] = to_json(position);
+  Json::Value& applied = json["limits"];
+  applied["max_range"] = limits.max_range;
+  applied["max_incidence"] = limits.max_incidence_deg;
+  applied["min_elevation"] = limits.min_elevation_deg;
+  applied["max_elevation"] = limits.max_elevation_deg;
+  applied["up"] = to_json(limits.up);
   try {
     if (cloud_) {
-      const CloudStationSight seen = cloud_->see(position - shift_);
+      const CloudStationSight seen = cloud_->see(position - shift_, limits);
       sight.seen.assign(seen.seen.begin(), seen.seen.end());
       const double points = static_cast<double>(std::max<std::size_t>(cloud_->size(), 1));
       json["visible_points"] = Json::UInt64(seen.seen_points);
@@ -105,7 +117,7 @@ LiveStationSight LiveStation::see(const Eigen::Vector3d& position) const {
       json["visible_fraction"] = static_cast<double>(seen.seen_points) / points;
       json["trace_seconds"] = seen.trace_seconds;
     } else {
-      MeshStationSight seen = mesh_->see(position);
+      MeshStationSight seen = mesh_->see(position, limits);
       sight.face_seen_fraction = std::move(seen.face_seen_fraction);
       json["visible_area"] = seen.visible_area;
       json["total_area"] = seen.total_area;

@@ -51,16 +51,6 @@ void keep_classes(const PlanRequest& request, std::vector<double>& weight,
   }
 }
 
-StationLimits limits_of(const PlanRequest& request) {
-  StationLimits limits;
-  limits.max_range = request.max_range;
-  limits.max_incidence_deg = request.max_incidence;
-  limits.min_elevation_deg = request.min_elevation;
-  limits.max_elevation_deg = request.max_elevation;
-  limits.up = job::parse_up(request.up).vector();
-  return limits;
-}
-
 // Positions read from the candidates file, in the scene's local frame.
 std::vector<Eigen::Vector3d> file_candidates(const PlanRequest& request,
                                              const Eigen::Vector3d& shift) {
@@ -201,7 +191,7 @@ PlanReport plan_cloud_impl(const PointCloud& cloud, const PlanRequest& request,
   options.surfels = model.surfels ? &*model.surfels : nullptr;
   options.self_tolerance = request.self_tolerance;
   options.threads = request.threads;
-  const StationLimits limits = limits_of(request);
+  const StationLimits limits = station_limits(request);
   SceneSide side;
   side.keep_free = [&](std::vector<Eigen::Vector3d> positions) {
     return keep_free_positions(cloud, std::move(positions), request.clearance, up, request.threads,
@@ -260,7 +250,7 @@ PlanReport plan_mesh_impl(const TriangleMesh& mesh, const PlanRequest& request,
   options.samples_per_unit_area = request.samples_per_unit_area;
   options.seed = request.seed;
   options.threads = request.threads;
-  const StationLimits limits = limits_of(request);
+  const StationLimits limits = station_limits(request);
   SceneSide side;
   side.keep_free = [&](std::vector<Eigen::Vector3d> positions) {
     return keep_free_positions(mesh, std::move(positions), request.clearance, up, request.threads,
@@ -384,12 +374,22 @@ void validate(const PlanRequest& request) {
     throw UsageError(
         "give either --stations K (the best K) or --target-coverage C (the fewest for C)");
   }
+  station_limits(request);
+  job::parse_frame(request.frame);
+}
+
+StationLimits station_limits(const PlanRequest& request) {
   if (request.min_elevation > request.max_elevation) {
     throw KeyError("min_elevation",
                    "is above max_elevation (" + std::to_string(request.max_elevation) + ")");
   }
-  job::parse_frame(request.frame);
-  job::parse_up(request.up);
+  StationLimits limits;
+  limits.max_range = request.max_range;
+  limits.max_incidence_deg = request.max_incidence;
+  limits.min_elevation_deg = request.min_elevation;
+  limits.max_elevation_deg = request.max_elevation;
+  limits.up = job::parse_up(request.up).vector();
+  return limits;
 }
 
 PlanReport plan_cloud(const PointCloud& cloud, const PlanRequest& request,

@@ -45,7 +45,42 @@ Keys<R> question_keys() {
   };
 }
 
+// A scanner's limits (analysis/station_visibility.hpp: StationLimits), with
+// the up axis the elevations are measured from: the live station
+// (`station_view`) takes these same keys.
+Keys<R> limit_keys() {
+  return {
+      key("max_range", &R::max_range)
+          .range(0, 1e9)
+          .unit("scene units")
+          .metavar("D")
+          .doc("scanner range: a target farther from a station is not seen by it; 0 = no limit"),
+      key("max_incidence", &R::max_incidence)
+          .range(0, 90)
+          .unit("degrees")
+          .metavar("A")
+          .doc("a surface met more than this far from its normal is not seen (grazing angles); "
+               "0 = no limit"),
+      key("min_elevation", &R::min_elevation)
+          .range(-90, 90)
+          .unit("degrees")
+          .metavar("A")
+          .doc("scanner's vertical field of view: lowest elevation above the horizontal"),
+      key("max_elevation", &R::max_elevation)
+          .range(-90, 90)
+          .unit("degrees")
+          .metavar("A")
+          .doc("scanner's vertical field of view: highest elevation above the horizontal"),
+      up_key(&R::up),
+  };
+}
+
 }  // namespace
+
+const Keys<PlanRequest>& plan_limit_keys() {
+  static const Keys<R> keys = limit_keys();
+  return keys;
+}
 
 const Keys<PlanRequest>& plan_keys() {
   static const Keys<R> keys = join<R>({
@@ -104,46 +139,18 @@ const Keys<PlanRequest>& plan_keys() {
            .unit("scene units")
            .doc("a station already there, repeatable: kept and counted first"),
        key("existing_stations", &R::existing_stations)
-           .doc("a cloud's own stations (E57 scans, a PCD sensor) count as placed"),
-       key("max_range", &R::max_range)
-           .range(0, 1e9)
-           .unit("scene units")
-           .metavar("D")
-           .doc("scanner range: a target farther from a station is not seen by it; 0 = no limit"),
-       key("max_incidence", &R::max_incidence)
-           .range(0, 90)
-           .unit("degrees")
-           .metavar("A")
-           .doc("a surface met more than this far from its normal is not seen (grazing angles); "
-                "0 = no limit"),
-       key("min_elevation", &R::min_elevation)
-           .range(-90, 90)
-           .unit("degrees")
-           .metavar("A")
-           .doc("scanner's vertical field of view: lowest elevation above the horizontal"),
-       key("max_elevation", &R::max_elevation)
-           .range(-90, 90)
-           .unit("degrees")
-           .metavar("A")
-           .doc("scanner's vertical field of view: highest elevation above the horizontal"),
-       key("classes", &R::classes)
+           .doc("a cloud's own stations (E57 scans, a PCD sensor) count as placed")},
+      plan_limit_keys(),
+      {key("classes", &R::classes)
            .metavar("A,B,...")
            .doc("count coverage only of these classes (a cloud's labels, a mesh's groups); "
                 "empty: everything"),
-       primitive_key(&R::primitive),
-       point_radius_key(&R::point_radius),
-       disc_coverage_key(&R::disc_coverage),
-       normal_neighbours_key(&R::normal_neighbours),
-       self_tolerance_key(&R::self_tolerance),
-       class_names_key(&R::class_names_path),
-       skip_bad_lines_key(&R::skip_bad_lines),
-       samples_per_unit_area_key(&R::samples_per_unit_area),
-       seed_key(&R::seed),
-       frame_key(&R::frame),
-       up_key(&R::up),
-       threads_key(&R::threads),
-       max_memory_key(&R::max_memory_mb),
-       max_work_key(&R::max_work),
+       primitive_key(&R::primitive), point_radius_key(&R::point_radius),
+       disc_coverage_key(&R::disc_coverage), normal_neighbours_key(&R::normal_neighbours),
+       self_tolerance_key(&R::self_tolerance), class_names_key(&R::class_names_path),
+       skip_bad_lines_key(&R::skip_bad_lines), samples_per_unit_area_key(&R::samples_per_unit_area),
+       seed_key(&R::seed), frame_key(&R::frame), threads_key(&R::threads),
+       max_memory_key(&R::max_memory_mb), max_work_key(&R::max_work),
        out_key(&R::out,
                "write SCENE.plan.json, SCENE.plan_curve.csv (coverage after each station), "
                "SCENE.plan_candidates.csv (each candidate's coverage alone and gain left) and "

@@ -58,18 +58,20 @@ Frame point_clusters_frame(const MeshEstimate& estimate) {
   return make_frame(FrameKind::kPointClusters, clusters.data(), clusters.size(), 1);
 }
 
-// The estimated mesh (as `load` sends a mesh), how much of each face is
-// visible, and which cluster each input point fell in.
+// The estimated mesh (as `load` sends a mesh, in the cloud's local frame as
+// its positions were: the report holds it in the file's), how much of each
+// face is visible, and which cluster each input point fell in.
 void region_growing_frames(CommandContext& context, const RegionGrowingReport& report) {
-  context.send(mesh_scene(report.estimate.mesh)->frames);
+  context.send(mesh_scene(report.estimate.mesh, report.shift)->frames);
   const auto& fraction = report.occlusion.face_visible_fraction;
   context.send(make_frame(FrameKind::kFaceVisibleFraction, fraction.data(), fraction.size(), 1));
   context.send(point_clusters_frame(report.estimate));
 }
 
-// The planes as a mesh, and which cluster (= face group) each input point fell in.
+// The planes as a mesh (in the cloud's local frame, as above), and which
+// cluster (= face group) each input point fell in.
 void extract_polygons_frames(CommandContext& context, const ExtractPolygonsReport& report) {
-  context.send(mesh_scene(report.estimate.mesh)->frames);
+  context.send(mesh_scene(report.estimate.mesh, report.shift)->frames);
   context.send(point_clusters_frame(report.estimate));
 }
 
@@ -86,11 +88,14 @@ void refuse_segmenter_commands(const Json::Value& params) {
 }
 
 // The reconstructed cloud itself, read back from what the job wrote, so the
-// viewer shows exactly the file.
+// viewer shows exactly the file; relative to the report's global_shift, so
+// that shift turns its positions into the file's frame.
 void reconstruct_frames(CommandContext& context, const ReconstructReport& report) {
   if (report.outputs.empty()) return;
   context.progress()("sending", 0.9);
-  context.send(cloud_frames(read_cloud(report.outputs.front())));
+  CloudReadOptions options;
+  options.shift = report.shift;
+  context.send(cloud_frames(read_cloud(report.outputs.front(), options)));
 }
 
 using Frames = void (*)(CommandContext&, const JobRun&);

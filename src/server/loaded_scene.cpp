@@ -74,18 +74,20 @@ std::shared_ptr<LoadedScene> cloud_scene(const PointCloud& cloud) {
   summary["class_names"] = to_json(cloud.class_names);
   Eigen::Vector3f lo, hi;
   cloud.bounds(lo, hi);
-  // The positions frame and the bounds are in the cloud's local frame: a
-  // point of the file is a position plus `shift` (PointCloud::shift).
+  // The positions frame is the cloud's local frame; the bounds and stations,
+  // like every position in JSON, are in the file's: a point of the file is a
+  // position plus `shift` (PointCloud::shift).
   summary["shift"] = to_json(cloud.shift);
-  summary["bounds"] = bounds_json(lo.cast<double>(), hi.cast<double>());
+  summary["bounds"] =
+      bounds_json(cloud.to_original(lo.cast<double>()), cloud.to_original(hi.cast<double>()));
   // Where the scanner stood (the file's stations, or a single-view frame's
-  // sensor), in the positions' frame: the viewer puts its viewpoints there, as
-  // -poc and -fscan take them by default.
+  // sensor): the viewer puts its viewpoints there, as -poc and -fscan take
+  // them by default.
   Json::Value stations(Json::arrayValue);
   for (const Station& station : scan_stations(cloud)) {
     Json::Value entry(Json::objectValue);
     entry["name"] = station.name;
-    entry["position"] = to_json(station.frame.origin);
+    entry["position"] = to_json(cloud.to_original(station.frame.origin));
     stations.append(entry);
   }
   summary["stations"] = stations;
@@ -93,7 +95,7 @@ std::shared_ptr<LoadedScene> cloud_scene(const PointCloud& cloud) {
   return scene;
 }
 
-std::shared_ptr<LoadedScene> mesh_scene(const TriangleMesh& mesh) {
+std::shared_ptr<LoadedScene> mesh_scene(const TriangleMesh& mesh, const Eigen::Vector3d& shift) {
   auto scene = std::make_shared<LoadedScene>();
   Json::Value& summary = scene->summary;
   summary["kind"] = "mesh";
@@ -103,12 +105,13 @@ std::shared_ptr<LoadedScene> mesh_scene(const TriangleMesh& mesh) {
   Eigen::Vector3d lo, hi;
   mesh.bounds(lo, hi);
   summary["bounds"] = bounds_json(lo, hi);
+  summary["shift"] = to_json(shift);
 
-  // The viewer draws in float32; the mesh is read in double.
+  // The viewer draws in float32; the mesh is read in double, and shifted in double.
   std::vector<float> positions;
   positions.reserve(3 * mesh.vertices.size());
   for (const auto& v : mesh.vertices) {
-    for (int k = 0; k < 3; ++k) positions.push_back(static_cast<float>(v[k]));
+    for (int k = 0; k < 3; ++k) positions.push_back(static_cast<float>(v[k] - shift[k]));
   }
   static_assert(sizeof(std::array<std::uint32_t, 3>) == 12, "packed triangles");
   scene->frames.push_back(

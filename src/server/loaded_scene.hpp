@@ -48,10 +48,17 @@ struct LoadedScene {
   std::size_t bytes() const;
 };
 
+// Two frames, one rule (docs/protocol.md, "Frames"): binary positions are
+// float32 in the scene's local frame (a cloud's positions, relative to its
+// global shift), every position in JSON is in the file's frame, and the
+// summary's `shift` is the difference (a file's point = position + shift).
+
 // positions, then colours, labels and instances when the cloud has them.
 std::shared_ptr<LoadedScene> cloud_scene(const PointCloud& cloud);
-// positions (vertices), indices (triangles), face_groups.
-std::shared_ptr<LoadedScene> mesh_scene(const TriangleMesh& mesh);
+// positions (vertices minus `shift`: a mesh estimated from a shifted cloud is
+// sent in that cloud's local frame), indices (triangles), face_groups.
+std::shared_ptr<LoadedScene> mesh_scene(const TriangleMesh& mesh,
+                                        const Eigen::Vector3d& shift = Eigen::Vector3d::Zero());
 
 // Frames of one cloud's attributes, for a result that carries a cloud.
 std::vector<Frame> cloud_frames(const PointCloud& cloud);

@@ -131,8 +131,8 @@ TEST(GlobalShiftCli, CloudOcclusionEqualsTheSceneAtTheOrigin) {
   EXPECT_EQ(there["exterior"]["occlusion_level"].asDouble(),
             here["exterior"]["occlusion_level"].asDouble());
 
-  // Openings in the local frame (as picked in the viewer on the shifted
-  // cloud) can block nothing: refused, not ignored.
+  // Openings in the local frame (as a tool that drew the shifted positions
+  // would give them) can block nothing: refused, not ignored.
   const testing::CliRun local = run_cli("-poc " + scenes.far + viewpoint(1.0, 1.5, 1.25, kUtm) +
                                         " --polygon-path " + here_window + " -q" + options);
   EXPECT_EQ(local.exit_code, 3) << local.err;

@@ -23,7 +23,9 @@ export interface LoadResult {
   /** The server's robust frame (issue 12), when it sends one. */
   robust_box?: Bounds;
   frame?: Record<string, unknown>;
-  /** Where the scanner stood (a cloud's stations or its sensor), in the positions' frame. */
+  /** Global shift: a file point = a scene position + shift (src/file_frame.ts). */
+  shift?: Vec3;
+  /** Where the scanner stood (a cloud's stations or its sensor), in the file's frame. */
   stations?: { name: string; position: Vec3 }[];
 }
 

@@ -6,7 +6,10 @@
 // for meshes (mesh_occlusion.hpp: mesh_shadow_ray, the sample's own face
 // ignored), so a position answers what `scan` or `mesh_occlusion` with that
 // one viewpoint would, without their build. The viewer's live station (a
-// marker dragged across a scan) asks it many times a second.
+// marker dragged across a scan) asks it many times a second. A scanner's
+// limits apply as scan planning applies them (station_visibility.hpp:
+// StationLimitTest), so a position answers what a plan's coverage counts for
+// a station there.
 //
 // Both are immutable once built: one view may answer several threads at once.
 
@@ -20,6 +23,7 @@
 #include "occlusion/analysis/mesh_sampling.hpp"
 #include "occlusion/analysis/scan.hpp"
 #include "occlusion/analysis/scan_tracer.hpp"
+#include "occlusion/analysis/station_visibility.hpp"
 #include "occlusion/analysis/surfel_estimation.hpp"
 #include "occlusion/core/mesh.hpp"
 #include "occlusion/core/octree.hpp"
@@ -47,9 +51,10 @@ class CloudStationView {
   CloudStationView(const CloudStationView&) = delete;  // the tracer points into it
   CloudStationView& operator=(const CloudStationView&) = delete;
 
-  // `position` in the cloud's local frame. std::invalid_argument for a
-  // position that is not finite or too far for float (scan_cloud's checks).
-  CloudStationSight see(const Eigen::Vector3d& position) const;
+  // `position` in the cloud's local frame; a point outside `limits` is not
+  // seen (and not traced). std::invalid_argument for a position that is not
+  // finite or too far for float (scan_cloud's checks), or limits out of range.
+  CloudStationSight see(const Eigen::Vector3d& position, const StationLimits& limits = {}) const;
 
   std::size_t size() const { return indices_.size(); }
   const OctreeStats& octree() const { return tracer_->stats(); }
@@ -80,7 +85,8 @@ class MeshStationView {
   MeshStationView(const TriangleMesh& mesh, const MeshOcclusionOptions& options,
                   const Progress& progress = {});
 
-  MeshStationSight see(const Eigen::Vector3d& position) const;
+  // A sample outside `limits` (its face's normal for the incidence) is not seen.
+  MeshStationSight see(const Eigen::Vector3d& position, const StationLimits& limits = {}) const;
 
   std::size_t faces() const { return areas_.size(); }
   std::size_t samples() const { return samples_.size(); }
@@ -91,6 +97,7 @@ class MeshStationView {
   MeshOcclusionOptions options_;
   MeshSamples samples_;
   std::vector<double> areas_;
+  std::vector<Eigen::Vector3f> normals_;  // per face, for the incidence limit
   Eigen::Vector3d origin_, lo_, hi_;
   double epsilon_ = 0.0, reach_ = 0.0;
   std::unique_ptr<TriangleOctree> tree_;

@@ -48,6 +48,11 @@ class StationLimitTest {
   // Whether a station sees past its limits a target at offset `to_target`
   // from it, whose surface has unit normal `normal` (zero: unoriented).
   bool admits(const Eigen::Vector3d& to_target, const Eigen::Vector3f& normal) const;
+  // The same for a cloud's point as the -fscan rule traces it
+  // (ScanTracer::target: its disc, or for a sphere its centre, unoriented).
+  bool admits_point(const Eigen::Vector3d& station, const ScanTracer::Target& target) const {
+    return admits(target.surfel.center.cast<double>() - station, target.surfel.normal);
+  }
   // True when no limit is set (every target admitted).
   bool unlimited() const { return unlimited_; }
 
@@ -144,6 +149,10 @@ class MeshStationVisibility {
   std::vector<std::uint32_t> order_;
   std::vector<Sample> ordered_;
 };
+
+// Per face: its unit normal, zero for a degenerate face (what the incidence
+// limit reads for a mesh sample).
+std::vector<Eigen::Vector3f> face_unit_normals(const TriangleMesh& mesh);
 
 // Which candidates see each other (registration needs overlap): n x n,
 // row-major, symmetric, 1 on the diagonal. Two candidates see each other when

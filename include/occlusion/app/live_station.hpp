@@ -5,7 +5,10 @@
 // the live answer is what `scan` or `mesh_occlusion` would give for that one
 // viewpoint. The model (discs, spheres or the mesh's samples) and its octree
 // are built once per scene and settings (analysis/station_view.hpp); each
-// position then traces one ray per point or sample.
+// position then traces one ray per point or sample. A scanner's limits (the
+// keys `plan` declares for them: plan_limit_keys) apply as the plan's
+// coverage applies them, so the live answer is also what a plan with those
+// limits counts for a station there.
 
 #include <json/value.h>
 
@@ -47,9 +50,10 @@ class LiveStation {
                                                      const Progress& progress = {});
 
   // `position` in the file's frame (a cloud's global shift added back, as
-  // jobs take viewpoints). UsageError for a position that is not finite or
-  // too far to trace in float.
-  LiveStationSight see(const Eigen::Vector3d& position) const;
+  // jobs take viewpoints); `limits` as station_limits(PlanRequest) gives
+  // them. UsageError for a position that is not finite or too far to trace
+  // in float, or limits out of range.
+  LiveStationSight see(const Eigen::Vector3d& position, const StationLimits& limits = {}) const;
 
   // What the settings name: equal keys, the same model (the server keeps one per scene).
   static std::string settings_key(const ScanRequest& request);

@@ -15,6 +15,7 @@
 
 #include "occlusion/analysis/station_candidates.hpp"
 #include "occlusion/analysis/station_selection.hpp"
+#include "occlusion/analysis/station_visibility.hpp"
 #include "occlusion/app/key.hpp"
 #include "occlusion/app/point_model.hpp"
 #include "occlusion/core/mesh.hpp"
@@ -95,6 +96,13 @@ struct PlanReport {
 void validate(const PlanRequest& request);
 // Every key of the job (config section occlusion.plan), declared once.
 const Keys<PlanRequest>& plan_keys();
+// Of those, the scanner's limits and the up axis they are measured from
+// (max_range, max_incidence, min_elevation, max_elevation, up): the live
+// station (app/live_station.hpp) takes the same keys.
+const Keys<PlanRequest>& plan_limit_keys();
+// Those keys' values as the coverage applies them. KeyError for
+// min_elevation above max_elevation or an unknown up axis.
+StationLimits station_limits(const PlanRequest& request);
 // Reads the scene (a mesh by its name, else a cloud), plans, writes the
 // outputs under request.out: the JSON report, the curve and the candidates as
 // CSV, the targets as a PLY with `covered_by`.

@@ -188,7 +188,8 @@ export class App {
       viewer.requestRender();
     };
     const viewpointPanel = new ViewpointPanel(byId("viewpoints"), {
-      move: (name, position) => markers.setPosition(name, position),
+      // The list shows and takes the file's frame (what the CLI takes); markers live in the scene's.
+      move: (name, position) => markers.setPosition(name, view.frame.toScene(position)),
       enable: (name, on) => {
         markers.setEnabled(name, on);
         if ((VIEWPOINT_NAMES as string[]).includes(name)) gui.set(name as "centre", on);
@@ -214,7 +215,7 @@ export class App {
             name: m.name,
             label: m.label,
             colour: `#${m.colour.toString(16).padStart(6, "0")}`,
-            position,
+            position: view.frame.toFile(position),
             enabled: m.enabled,
             warning: view.info
               ? viewpointWarning(position, view.info.extent, cloud, this.pointRadiusInUse())

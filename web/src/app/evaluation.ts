@@ -110,7 +110,10 @@ export class Evaluation {
     if (markers.length) {
       // Named after where they are: the study skips runs already in its CSV
       // by (scene, configuration), so moved markers must be a new name.
-      const viewpoints = markers.map((m) => m.position.map((x) => Number(x.toFixed(3))));
+      // In the file's frame, as the study takes them.
+      const viewpoints = this.ctx.view.frame
+        .toFileAll(markers.map((m) => m.position))
+        .map((p) => p.map((x) => Number(x.toFixed(3))));
       configurations.push({ name: `markers-${hash(JSON.stringify(viewpoints))}`, viewpoints });
     }
     const stem = scene.path

@@ -3,7 +3,7 @@
 // folder; and measure each from click to first frame.
 
 import type { Outcome } from "../api";
-import type { AssembleContext, Decoded } from "../decode/types";
+import type { AssembleContext, Decoded, Vec3 } from "../decode/types";
 import type { LoadResult } from "../results";
 import { SceneCache, cacheKey } from "../scene_cache";
 import { integer, ms } from "../ui/format";
@@ -135,7 +135,9 @@ export class Loading {
   /** Reconstructs an S3DIS room or Area (-recon) and shows the written cloud. */
   async reconstruct(path: string): Promise<void> {
     const start = performance.now();
-    const outcome = await this.ctx.runner.run<LoadResult & { outputs?: string[] }>(
+    const outcome = await this.ctx.runner.run<
+      LoadResult & { outputs?: string[]; global_shift?: Vec3 }
+    >(
       `Reconstructing ${path}`,
       "reconstruct",
       { path },
@@ -150,6 +152,8 @@ export class Loading {
       path: written,
       points: outcome.decoded.kind === "cloud" ? outcome.decoded.count : 0,
       class_names: S3DIS_CLASSES,
+      // The frames are relative to the report's shift (the job's reader's).
+      ...(outcome.result.global_shift ? { shift: outcome.result.global_shift } : {}),
     };
     this.display(written, result, outcome.decoded, {
       start,

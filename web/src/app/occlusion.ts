@@ -29,7 +29,8 @@ export class Occlusion {
     }
     // The rays on screen belong to the last result, which this one replaces.
     this.ctx.rays.clear();
-    const viewpoints = enabled.map((v) => v.position.map((x) => Number(x.toFixed(6))));
+    // Jobs take viewpoints in the file's frame.
+    const viewpoints = view.frame.toFileAll(enabled.map((v) => v.position));
     // Labels of the viewpoints sent, in order (the job names them viewpoint_1 …).
     const names = enabled.map((v) => markers.label(v.name));
     const colours = enabled.map((v) => markers.colour(v.name));
@@ -143,7 +144,10 @@ export class Occlusion {
   /** A sample of the escape rays, clipped to the scene, in their markers' colours; many start hidden. */
   private showRays(escapes: EscapeData, report: JobReport, names: string[], colours: Vec3[]): void {
     const { rays, gui, viewer, view } = this.ctx;
-    const origins = (report.viewpoints ?? []).map((v) => v.position ?? ([0, 0, 0] as Vec3));
+    // Reports give viewpoints in the file's frame; the rays start where the markers are drawn.
+    const origins = (report.viewpoints ?? []).map((v) =>
+      v.position ? view.frame.toScene(v.position) : ([0, 0, 0] as Vec3),
+    );
     const box = view.info?.extent ?? viewer.sceneBounds;
     const viewpoints = names.map((label, v) => ({ label, colour: colours[v]! }));
     const set = rays.show(escapes, origins, viewpoints, box, RAY_DISPLAY.perViewpoint);

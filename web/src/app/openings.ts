@@ -83,7 +83,10 @@ export class Openings {
       { path },
       { cancellable: false },
     );
-    return outcome === null ? null : (outcome.result.polygons ?? []);
+    if (outcome === null) return null;
+    // Openings files are in the file's frame, as jobs read them; drawn in the scene's.
+    const frame = this.ctx.view.frame;
+    return (outcome.result.polygons ?? []).map((polygon) => frame.toSceneAll(polygon));
   }
 
   /** Draws every opening of the file in use (none for ""). */
@@ -130,11 +133,16 @@ export class Openings {
       if (list === null) return;
       kept = list;
     }
-    const round = (p: Vec3) => p.map((x) => Number(x.toFixed(6)));
+    // `kept` came through read() (the scene's frame) like the picked points.
+    const frame = this.ctx.view.frame;
     const outcome = await this.ctx.runner.run<{ path: string; polygons: number }>(
       "Saving the opening",
       "save_polygon",
-      { path, append: true, polygons: [...kept, points].map((polygon) => polygon.map(round)) },
+      {
+        path,
+        append: true,
+        polygons: [...kept, points].map((polygon) => frame.toFileAll(polygon)),
+      },
       { cancellable: false },
     );
     if (outcome === null) return;

@@ -15,7 +15,7 @@ import { Picker } from "../scene/picking";
 import type { Click } from "../scene/picking";
 import { PlanLayer } from "../scene/plan_layer";
 import { integer, percent } from "../ui/format";
-import { PlanPanel, planDeclarations, planJobParams } from "../ui/plan_view";
+import { PlanPanel, planDeclarations, planJobParams, planLimitParams } from "../ui/plan_view";
 import { cloudJobParams } from "../settings_defaults";
 import type { AppContext } from "./context";
 import { LatestOnly } from "./latest_only";
@@ -25,6 +25,8 @@ export class Plan {
   readonly panel: PlanPanel;
   private readonly picker: Picker;
   private result: PlanResult | null = null;
+  /** The scanner limits the plan on screen was made with (the live station uses them). */
+  private resultLimits: Record<string, unknown> | null = null;
   /** Stations the user placed by clicking candidates, in the file's frame. */
   private placed: Vec3[] = [];
   private livePath: string | null = null;
@@ -57,6 +59,7 @@ export class Plan {
   reset(): void {
     this.layer.clear();
     this.result = null;
+    this.resultLimits = null;
     this.placed = [];
     this.live.cancel();
     this.setLive(false);
@@ -102,6 +105,7 @@ export class Plan {
     const timings = (outcome.result as { timings?: { total_seconds?: unknown } }).timings;
     const seconds = typeof timings?.total_seconds === "number" ? timings.total_seconds : null;
     this.show(result, covered, seconds);
+    this.resultLimits = planLimitParams(params);
     notices.info(
       `Plan: ${result.stations.length} station${result.stations.length === 1 ? "" : "s"} cover ` +
         `${percent(result.coverage, 1)}`,
@@ -109,15 +113,17 @@ export class Plan {
     );
   }
 
-  /** Draws a plan: heat squares, numbered station markers, the card. */
+  /** Draws a plan (its positions in the file's frame): heat squares, numbered station markers, the card. */
   show(result: PlanResult, covered: number[] | null, seconds: number | null): void {
     const { markers, viewer, view } = this.ctx;
     this.result = result;
     const extent = view.info?.extent ?? viewer.sceneBounds;
     const c = result.candidates;
     const size = (c.spacing ?? diagonal(extent) / 60) * 0.85;
-    this.layer.show(c.positions, c.gainLeft, size, c.height ?? 0);
-    markers.placeStations(result.stations.map((s) => ({ name: s.name, position: s.position })));
+    this.layer.show(view.frame.toSceneAll(c.positions), c.gainLeft, size, c.height ?? 0);
+    markers.placeStations(
+      result.stations.map((s) => ({ name: s.name, position: view.frame.toScene(s.position) })),
+    );
     result.stations.forEach((s, i) => {
       const [r, g, b] = stationColour(s.rank);
       markers.recolour(`station${i + 1}`, (r << 16) | (g << 8) | b);
@@ -137,14 +143,14 @@ export class Plan {
     const hit = this.picker.pick(click, this.layer.pickables(), 0);
     const index = hit?.instanceId;
     if (index === undefined) return false;
-    const position = this.result.candidates.positions[index];
+    const position = this.result.candidates.positions[index]; // the file's frame
     if (!position) return false;
     this.placed.push(position);
     this.ctx.notices.info(
       `Station placed at candidate ${index + 1}; planning the rest around it.`,
       "success",
     );
-    if (this.liveOn) this.live.push(position);
+    if (this.liveOn) this.live.push(this.ctx.view.frame.toScene(position));
     void this.run();
     return true;
   }
@@ -185,17 +191,35 @@ export class Plan {
     this.live.push(this.ctx.markers.position(selected));
   }
 
-  /** One live request: what a station at `position` sees, drawn on the scene. */
+  /**
+   * The scanner limits the live station traces with: those of the plan on
+   * screen, else the Plan tab's fields (an Error names a field that is not a number).
+   */
+  liveLimits(): Record<string, unknown> {
+    if (this.result !== null && this.resultLimits !== null) return this.resultLimits;
+    return planLimitParams(planJobParams(this.panel.fields(), this.panel.declarations));
+  }
+
+  /** One live request: what a station at `position` (the scene's frame) sees, drawn on the scene. */
   private async trace(position: Vec3): Promise<void> {
     const { view, api, notices } = this.ctx;
     const info = view.info;
     if (info === null || !api.client.connected) return;
+    let limits: Record<string, unknown>;
+    try {
+      limits = this.liveLimits();
+    } catch (error) {
+      notices.error("Plan settings", (error as Error).message);
+      this.setLive(false);
+      return;
+    }
     const params: Record<string, unknown> = {
       path: info.path,
-      position: position.map((x) => Number(x.toFixed(6))),
+      position: info.frame.toFile(position),
       ...(view.cloud
         ? cloudJobParams(this.ctx.gui.settings, "scan")
         : { samples_per_unit_area: this.ctx.gui.settings.samplesPerUnitArea }),
+      ...limits,
     };
     if (this.livePath !== info.path) {
       this.livePath = info.path;

@@ -12,6 +12,7 @@ import type {
 } from "../decode/types";
 import { diagonal, robustBounds, serverExtent } from "../decode/robust_extent";
 import type { Bounds } from "../decode/types";
+import { FileFrame } from "../file_frame";
 import type { LoadResult } from "../results";
 import { CLOUD_MODE_LABELS, CloudLayer, suggestedPointSize } from "../scene/cloud_layer";
 import type { CloudColourMode } from "../scene/cloud_layer";
@@ -36,15 +37,24 @@ export interface SceneInfo {
   extent: Bounds;
   /** Where the extent comes from: the server's frame, or this viewer's quantiles. */
   extentSource: "server" | "quantiles" | "bounds";
+  /** Scene frame (drawn) ⇄ file frame (sent and reported): the load's global shift. */
+  frame: FileFrame;
 }
 
 /** The scene's robust extent: the server's frame if the report has one, else quantiles of the cloud. */
 export function sceneExtent(
   result: LoadResult,
   decoded: CloudData | MeshData,
+  frame: FileFrame = new FileFrame(),
 ): { extent: Bounds; source: SceneInfo["extentSource"] } {
   const server = serverExtent(result as unknown as Record<string, unknown>);
-  if (server) return { extent: server, source: "server" };
+  // The server's box is in the file's frame, like every position it reports.
+  if (server) {
+    return {
+      extent: { min: frame.toScene(server.min), max: frame.toScene(server.max) },
+      source: "server",
+    };
+  }
   if (decoded.kind === "cloud") {
     return {
       extent: robustBounds(decoded.positions, decoded.count, decoded.bounds),
@@ -74,14 +84,20 @@ export class SceneView {
     return this.cloud?.data.count ?? this.mesh?.data.faces ?? 0;
   }
 
+  /** Scene ⇄ file frame of the scene on screen (the identity with none). */
+  get frame(): FileFrame {
+    return this.info?.frame ?? new FileFrame();
+  }
+
   /** Replaces the scene by a loaded cloud or mesh and frames it. */
   show(path: string, result: LoadResult, decoded: Decoded): void {
     if (decoded.kind !== "cloud" && decoded.kind !== "mesh") {
       throw new Error(`load of ${path} gave ${decoded.kind} data, not a cloud or mesh`);
     }
+    const frame = FileFrame.of(result);
     this.clear();
-    const { extent, source } = sceneExtent(result, decoded);
-    this.info = { path, result, extent, extentSource: source };
+    const { extent, source } = sceneExtent(result, decoded, frame);
+    this.info = { path, result, extent, extentSource: source, frame };
     const clip = this.viewer.clipPlanes;
     if (decoded.kind === "cloud") {
       const cloud = new CloudLayer(decoded, 0.05, clip, extent);
@@ -99,7 +115,11 @@ export class SceneView {
     }
     this.viewer.frame(extent);
     this.markers.reset(extent);
-    if (result.stations?.length) this.markers.placeStations(result.stations);
+    if (result.stations?.length) {
+      this.markers.placeStations(
+        result.stations.map((s) => ({ name: s.name, position: frame.toScene(s.position) })),
+      );
+    }
     this.applyCut();
     // A new scene is shown whole, whatever the last one hid.
     this.gui.set("showCloud", true);

@@ -10,8 +10,21 @@ import { BUTTON_PRIMARY, BUTTON_SMALL, INPUT, clear, h } from "./dom";
 import { fixed, integer, percent } from "./format";
 import { card, facts, headline, table, warnings } from "./results_panel";
 
+/** The scanner's limits among them: the live station traces with these too. */
+export const PLAN_LIMIT_FIELDS = [
+  "max_range",
+  "max_incidence",
+  "min_elevation",
+  "max_elevation",
+] as const;
 /** The plan keys the tab offers (the rest take the server's defaults). */
-export const PLAN_FIELDS = ["stations", "target_coverage", "spacing", "height"] as const;
+export const PLAN_FIELDS = [
+  "stations",
+  "target_coverage",
+  "spacing",
+  "height",
+  ...PLAN_LIMIT_FIELDS,
+] as const;
 export type PlanField = (typeof PLAN_FIELDS)[number];
 
 export interface FieldDeclaration {
@@ -67,6 +80,17 @@ export function planJobParams(
   }
   if ("stations" in params) delete params.target_coverage;
   return params;
+}
+
+/**
+ * The scanner limits of a plan's params (what planJobParams gave): the
+ * live station sends them with each position, so it sees what that plan
+ * counts as seen (`station_view` takes the plan's own limit keys).
+ */
+export function planLimitParams(params: Record<string, unknown>): Record<string, unknown> {
+  const limits: Record<string, unknown> = {};
+  for (const key of PLAN_LIMIT_FIELDS) if (key in params) limits[key] = params[key];
+  return limits;
 }
 
 export interface PlanPanelActions {
