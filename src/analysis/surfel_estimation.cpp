@@ -413,6 +413,8 @@ SurfelEstimate estimate_surfels(const PointCloud& cloud, const SurfelOptions& op
   variation = {};
   duplicate = {};
   line = {};
+  // Not kept: gone before the surfels are made (a big cloud's peak is there).
+  if (!options.keep_thickness) thickness = {};
 
   // Back in the cloud's order.
   estimate.surfels.resize(count);

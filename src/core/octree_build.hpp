@@ -17,6 +17,7 @@
 #include <cmath>
 #include <cstdint>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "occlusion/core/large_buffer.hpp"
@@ -115,6 +116,58 @@ inline void radix_sort_codes(LargeVector<std::uint64_t>& codes, LargeVector<std:
   }
 }
 
+// Puts owned shapes in leaf order in place: shapes[position] = the shape at
+// ids[position] before. A gather into a second array (as for shapes the
+// caller keeps) would hold two copies of them at once, 28 bytes a point for
+// surfels at a big cloud's peak. A permutation followed cycle by cycle would
+// do without, but its random reads depend one on the next; instead the
+// shapes go in one pass to blocks of kBlock consecutive positions (an
+// American flag sort pass: a few thousand blocks, each filled front to back,
+// so the writes stream), then each block is put in order in a buffer of its
+// own, on all cores.
+template <class Shape>
+void permute_in_place(LargeVector<Shape>& shapes, const LargeVector<PrimitiveId>& ids,
+                      const Progress& progress) {
+  const std::size_t n = shapes.size();
+  // Blocks of 2^bits positions, at most about 4,096 of them, each at least
+  // 1,024 shapes (a block's buffer stays in the core's cache).
+  int bits = 10;
+  while ((n >> bits) > 4096) ++bits;
+  const std::size_t block_count = (n >> bits) + 1;
+  LargeVector<std::uint32_t> position(n);  // where shapes[i] goes; moves with it
+  parallel_for(n, std::size_t{1} << 16, 0, [&](std::size_t first, std::size_t last) {
+    for (std::size_t p = first; p < last; ++p) position[ids[p]] = static_cast<std::uint32_t>(p);
+  });
+  std::vector<std::size_t> next(block_count);  // the block's first slot not yet filled
+  for (std::size_t b = 0; b < block_count; ++b) next[b] = std::min(n, b << bits);
+  for (std::size_t b = 0; b < block_count; ++b) {
+    progress.check_cancel();
+    const std::size_t end = std::min(n, (b + 1) << bits);
+    while (next[b] < end) {
+      Shape carried = shapes[next[b]];
+      std::uint32_t to = position[next[b]];
+      // Carry the shape to its block's next slot and take what lay there,
+      // until one belongs in block b.
+      for (std::size_t home = to >> bits; home != b; home = to >> bits) {
+        const std::size_t slot = next[home]++;
+        std::swap(carried, shapes[slot]);
+        std::swap(to, position[slot]);
+      }
+      shapes[next[b]] = carried;
+      position[next[b]++] = to;
+    }
+  }
+  parallel_for(block_count, 1, 0, [&](std::size_t first, std::size_t last) {
+    std::vector<Shape> block(std::size_t{1} << bits);
+    for (std::size_t b = first; b < last; ++b) {
+      const std::size_t begin = b << bits, end = std::min(n, (b + 1) << bits);
+      for (std::size_t i = begin; i < end; ++i) block[position[i] - begin] = shapes[i];
+      std::copy(block.begin(), block.begin() + static_cast<std::ptrdiff_t>(end - begin),
+                shapes.begin() + static_cast<std::ptrdiff_t>(begin));
+    }
+  });
+}
+
 template <class Shape>
 class MortonBuilder {
  public:
@@ -124,9 +177,10 @@ class MortonBuilder {
 
   // Moves `shapes` in leaf order into `sorted` (ids[position] = index in
   // `shapes`), builds the nodes, and returns the root: an inner node, or a
-  // leaf when the whole scene is one. `shapes` is emptied once sorted (unless
-  // const: the caller's), so the two copies never live beside the nodes (16
-  // bytes a sphere at the peak).
+  // leaf when the whole scene is one. A LargeVector of shapes is put in
+  // order in place and becomes `sorted`; other owned shapes are gathered and
+  // emptied once sorted, so the two copies never live beside the nodes (16
+  // bytes a sphere at the peak); const ones (the caller's) are gathered.
   template <class Shapes>
   BuiltChild build(Shapes& shapes, LargeVector<Shape>& sorted, LargeVector<PrimitiveId>& ids) {
     const std::size_t n = shapes.size();
@@ -156,12 +210,18 @@ class MortonBuilder {
     });
     radix_sort_codes(codes_, ids, progress_);
 
-    sorted.resize(n);
-    parallel_for(n, std::size_t{1} << 16, 0, [&](std::size_t first, std::size_t last) {
-      progress_.check_cancel();
-      for (std::size_t i = first; i < last; ++i) sorted[i] = shapes[ids[i]];
-    });
-    if constexpr (!std::is_const_v<Shapes>) std::remove_cv_t<Shapes>().swap(shapes);
+    if constexpr (std::is_same_v<Shapes, LargeVector<Shape>>) {
+      permute_in_place(shapes, ids, progress_);
+      sorted.swap(shapes);
+      LargeVector<Shape>().swap(shapes);
+    } else {
+      sorted.resize(n);
+      parallel_for(n, std::size_t{1} << 16, 0, [&](std::size_t first, std::size_t last) {
+        progress_.check_cancel();
+        for (std::size_t i = first; i < last; ++i) sorted[i] = shapes[ids[i]];
+      });
+      if constexpr (!std::is_const_v<Shapes>) std::remove_cv_t<Shapes>().swap(shapes);
+    }
     sorted_ = &sorted;
     BuiltChild root;
     if (is_leaf_run(0, static_cast<std::uint32_t>(n))) {
