@@ -160,14 +160,25 @@ PlaneFit fit_plane(const Eigen::Vector3f& own, const Distinct& distinct, std::si
   Eigen::Vector3d mean = own.cast<double>();
   for (std::size_t j = 0; j < count; ++j) mean += distinct[j].cast<double>();
   mean /= static_cast<double>(count + 1);
-  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+  // The six distinct sums only, each added in the order the full outer
+  // products would add it: the same matrix, bit for bit.
+  double xx = 0.0, xy = 0.0, xz = 0.0, yy = 0.0, yz = 0.0, zz = 0.0;
   const auto add = [&](const Eigen::Vector3f& p) {
     const Eigen::Vector3d d = p.cast<double>() - mean;
-    covariance += d * d.transpose();
+    xx += d.x() * d.x();
+    xy += d.x() * d.y();
+    xz += d.x() * d.z();
+    yy += d.y() * d.y();
+    yz += d.y() * d.z();
+    zz += d.z() * d.z();
   };
   add(own);
   for (std::size_t j = 0; j < count; ++j) add(distinct[j]);
-  covariance /= static_cast<double>(count + 1);
+  const double points = static_cast<double>(count + 1);
+  Eigen::Matrix3d covariance;
+  covariance << xx / points, xy / points, xz / points,  //
+      xy / points, yy / points, yz / points,            //
+      xz / points, yz / points, zz / points;
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
   solver.computeDirect(covariance);
   const Eigen::Vector3d lambda = solver.eigenvalues().cwiseMax(0.0);  // increasing
