@@ -201,29 +201,63 @@ CloudOcclusionResult trace(const Octree<Shape>& tree, double build_seconds, cons
 
 }  // namespace
 
+namespace {
+
+// Both entry points: `handed_over`, when set, is options.surfels's own
+// surfels, which the tree takes and reorders in place.
+CloudOcclusionResult compute(const PointCloud& cloud,
+                             const std::vector<Eigen::Vector3d>& viewpoints,
+                             const std::vector<PlanarPolygon>& openings,
+                             const CloudOcclusionOptions& options, LargeVector<Surfel>* handed_over,
+                             const Progress& progress) {
+  check_inputs(cloud, viewpoints, options);
+  if (options.surfels) {
+    // From the surfels in the cloud's order, before the tree may take them.
+    std::optional<ClosureRays> closure;
+    if (options.blocking.empty()) closure = closure_rays(*options.surfels, options.seed);
+    const auto start = Clock::now();
+    progress("building octree", 0.0);
+    const SurfelOctree tree = handed_over
+                                  ? SurfelOctree(std::move(*handed_over), options.octree, progress)
+                                  : blocking_surfel_tree(options.surfels->surfels, options.blocking,
+                                                         options.octree, progress);
+    CloudOcclusionResult result =
+        trace(tree, seconds_since(start), cloud, viewpoints, openings, options, progress);
+    if (closure) result.open_surface_share = open_surface_share(tree, *closure, options.threads);
+    return result;
+  }
+  const auto start = Clock::now();
+  progress("building octree", 0.0);
+  const SphereOctree tree(
+      blocking_spheres(cloud, options.blocking, static_cast<float>(options.point_radius)),
+      options.octree, progress);
+  return trace(tree, seconds_since(start), cloud, viewpoints, openings, options, progress);
+}
+
+}  // namespace
+
 CloudOcclusionResult compute_cloud_occlusion(const PointCloud& cloud,
                                              const std::vector<Eigen::Vector3d>& viewpoints,
                                              const std::vector<PlanarPolygon>& openings,
                                              const CloudOcclusionOptions& options,
                                              const Progress& progress) {
-  check_inputs(cloud, viewpoints, options);
-  const auto start = Clock::now();
-  progress("building octree", 0.0);
-  if (options.surfels) {
-    const SurfelOctree tree =
-        blocking_surfel_tree(options.surfels->surfels, options.blocking, options.octree, progress);
-    CloudOcclusionResult result =
-        trace(tree, seconds_since(start), cloud, viewpoints, openings, options, progress);
-    if (options.blocking.empty()) {
-      result.open_surface_share =
-          open_surface_share(tree, *options.surfels, options.seed, options.threads);
-    }
-    return result;
+  return compute(cloud, viewpoints, openings, options, nullptr, progress);
+}
+
+CloudOcclusionResult compute_cloud_occlusion(const PointCloud& cloud,
+                                             const std::vector<Eigen::Vector3d>& viewpoints,
+                                             const std::vector<PlanarPolygon>& openings,
+                                             SurfelEstimate&& surfels,
+                                             const CloudOcclusionOptions& options,
+                                             const Progress& progress) {
+  if (options.surfels || !options.blocking.empty()) {
+    throw std::invalid_argument(
+        "cloud occlusion: surfels handed over stand for options.surfels (leave it unset), "
+        "with every point blocking");
   }
-  const SphereOctree tree(
-      blocking_spheres(cloud, options.blocking, static_cast<float>(options.point_radius)),
-      options.octree, progress);
-  return trace(tree, seconds_since(start), cloud, viewpoints, openings, options, progress);
+  CloudOcclusionOptions own = options;
+  own.surfels = &surfels;
+  return compute(cloud, viewpoints, openings, own, &surfels.surfels, progress);
 }
 
 double interior_exterior_ratio(const std::vector<bool>& exterior) {

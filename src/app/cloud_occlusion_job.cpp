@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <utility>
 
 #include "job_support.hpp"
 #include "occlusion/app/errors.hpp"
@@ -188,13 +189,12 @@ CloudOcclusionReport run_cloud_occlusion_on(const PointCloud& cloud,
       cloud_occlusion_work(cloud.size(), viewpoints.positions.size(), request.num_rays_per_vp,
                            request.exterior, request.enable_acceleration),
       request.max_work);
-  const job::PointModel model = job::choose_point_model(cloud, job::point_settings(request), "-poc",
-                                                        report.warnings, progress);
+  job::PointModel model = job::choose_point_model(cloud, job::point_settings(request), "-poc",
+                                                  report.warnings, progress);
   report.point_model = model.report;
 
   CloudOcclusionOptions options;
   options.point_radius = report.point_model.radius.radius;
-  options.surfels = model.surfels ? &*model.surfels : nullptr;
   options.num_rays_per_vp = static_cast<std::size_t>(request.num_rays_per_vp);
   options.sampling = parse_sampling(request.sampling);
   options.light_radius = request.light_radius;
@@ -211,8 +211,16 @@ CloudOcclusionReport run_cloud_occlusion_on(const PointCloud& cloud,
     options.station_field_of_view = report.station_field_of_view;
     if (report.station_field_of_view) report.field_of_view_station = cloud.stations.front();
   }
-  report.result =
-      compute_cloud_occlusion(cloud, viewpoints.positions, local_openings, options, progress);
+  // Without the exterior variant nothing reads the discs after this run:
+  // its octree takes them (one copy of them fewer at a big cloud's peak).
+  if (model.surfels && !request.exterior) {
+    report.result = compute_cloud_occlusion(cloud, viewpoints.positions, local_openings,
+                                            std::move(*model.surfels), options, progress);
+  } else {
+    options.surfels = model.surfels ? &*model.surfels : nullptr;
+    report.result =
+        compute_cloud_occlusion(cloud, viewpoints.positions, local_openings, options, progress);
+  }
   job::viewpoints_to_original(report.result.viewpoints, cloud);
   report.point_model.open_surface_share = report.result.open_surface_share;
 

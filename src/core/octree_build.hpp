@@ -17,6 +17,7 @@
 #include <cmath>
 #include <cstdint>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "occlusion/core/large_buffer.hpp"
@@ -24,6 +25,7 @@
 #include "occlusion/core/octree.hpp"
 #include "occlusion/core/parallel.hpp"
 #include "occlusion/core/progress.hpp"
+#include "radix_sort_codes.hpp"
 
 namespace occlusion::octree_detail {
 
@@ -60,59 +62,56 @@ inline void fill_node(OctreeNode& node, const BuiltChild* children, std::uint32_
   }
 }
 
-// Stable LSD radix sort of (codes[i], ids[i]) by code, on all cores: each
-// pass counts digits per part in parallel, then scatters each part to its own
-// offsets. Passes whose digit is the same for every code are skipped.
-inline void radix_sort_codes(LargeVector<std::uint64_t>& codes, LargeVector<std::uint32_t>& ids,
-                             const Progress& progress) {
-  constexpr int kDigitBits = 11;
-  constexpr std::size_t kBuckets = std::size_t{1} << kDigitBits;
-  const std::size_t n = codes.size();
-  const unsigned parts = std::max(
-      1u, std::min<unsigned>(resolve_thread_count(0), static_cast<unsigned>(n / 65536 + 1)));
-  LargeVector<std::uint64_t> codes_out(n);
-  LargeVector<std::uint32_t> ids_out(n);
-  std::vector<std::array<std::size_t, kBuckets>> counts(parts);
-  const auto part_begin = [&](unsigned p) { return n * p / parts; };
-  for (int shift = 0; shift < 3 * kMortonLevels; shift += kDigitBits) {
+// Puts owned shapes in leaf order in place: shapes[position] = the shape at
+// ids[position] before. A gather into a second array (as for shapes the
+// caller keeps) would hold two copies of them at once, 28 bytes a point for
+// surfels at a big cloud's peak. A permutation followed cycle by cycle would
+// do without, but its random reads depend one on the next; instead the
+// shapes go in one pass to blocks of kBlock consecutive positions (an
+// American flag sort pass: a few thousand blocks, each filled front to back,
+// so the writes stream), then each block is put in order in a buffer of its
+// own, on all cores.
+template <class Shape>
+void permute_in_place(LargeVector<Shape>& shapes, const LargeVector<PrimitiveId>& ids,
+                      const Progress& progress) {
+  const std::size_t n = shapes.size();
+  // Blocks of 2^bits positions, at most about 4,096 of them, each at least
+  // 1,024 shapes (a block's buffer stays in the core's cache).
+  int bits = 10;
+  while ((n >> bits) > 4096) ++bits;
+  const std::size_t block_count = (n >> bits) + 1;
+  LargeVector<std::uint32_t> position(n);  // where shapes[i] goes; moves with it
+  parallel_for(n, std::size_t{1} << 16, 0, [&](std::size_t first, std::size_t last) {
+    for (std::size_t p = first; p < last; ++p) position[ids[p]] = static_cast<std::uint32_t>(p);
+  });
+  std::vector<std::size_t> next(block_count);  // the block's first slot not yet filled
+  for (std::size_t b = 0; b < block_count; ++b) next[b] = std::min(n, b << bits);
+  for (std::size_t b = 0; b < block_count; ++b) {
     progress.check_cancel();
-    parallel_for(parts, 1, parts, [&](std::size_t first, std::size_t last) {
-      for (std::size_t p = first; p < last; ++p) {
-        counts[p].fill(0);
-        for (std::size_t i = part_begin(static_cast<unsigned>(p));
-             i < part_begin(static_cast<unsigned>(p + 1)); ++i) {
-          ++counts[p][(codes[i] >> shift) & (kBuckets - 1)];
-        }
+    const std::size_t end = std::min(n, (b + 1) << bits);
+    while (next[b] < end) {
+      Shape carried = shapes[next[b]];
+      std::uint32_t to = position[next[b]];
+      // Carry the shape to its block's next slot and take what lay there,
+      // until one belongs in block b.
+      for (std::size_t home = to >> bits; home != b; home = to >> bits) {
+        const std::size_t slot = next[home]++;
+        std::swap(carried, shapes[slot]);
+        std::swap(to, position[slot]);
       }
-    });
-    // Offsets: bucket by bucket, part by part within a bucket (stable).
-    std::size_t total = 0;
-    bool one_bucket = false;
-    for (std::size_t b = 0; b < kBuckets; ++b) {
-      std::size_t in_bucket = 0;
-      for (unsigned p = 0; p < parts; ++p) {
-        const std::size_t c = counts[p][b];
-        counts[p][b] = total;
-        total += c;
-        in_bucket += c;
-      }
-      if (in_bucket == n) one_bucket = true;
+      shapes[next[b]] = carried;
+      position[next[b]++] = to;
     }
-    if (one_bucket) continue;  // the offsets are unused: nothing moves
-    parallel_for(parts, 1, parts, [&](std::size_t first, std::size_t last) {
-      for (std::size_t p = first; p < last; ++p) {
-        auto& offset = counts[p];
-        for (std::size_t i = part_begin(static_cast<unsigned>(p));
-             i < part_begin(static_cast<unsigned>(p + 1)); ++i) {
-          const std::size_t to = offset[(codes[i] >> shift) & (kBuckets - 1)]++;
-          codes_out[to] = codes[i];
-          ids_out[to] = ids[i];
-        }
-      }
-    });
-    codes.swap(codes_out);
-    ids.swap(ids_out);
   }
+  parallel_for(block_count, 1, 0, [&](std::size_t first, std::size_t last) {
+    std::vector<Shape> block(std::size_t{1} << bits);
+    for (std::size_t b = first; b < last; ++b) {
+      const std::size_t begin = b << bits, end = std::min(n, (b + 1) << bits);
+      for (std::size_t i = begin; i < end; ++i) block[position[i] - begin] = shapes[i];
+      std::copy(block.begin(), block.begin() + static_cast<std::ptrdiff_t>(end - begin),
+                shapes.begin() + static_cast<std::ptrdiff_t>(begin));
+    }
+  });
 }
 
 template <class Shape>
@@ -124,9 +123,10 @@ class MortonBuilder {
 
   // Moves `shapes` in leaf order into `sorted` (ids[position] = index in
   // `shapes`), builds the nodes, and returns the root: an inner node, or a
-  // leaf when the whole scene is one. `shapes` is emptied once sorted (unless
-  // const: the caller's), so the two copies never live beside the nodes (16
-  // bytes a sphere at the peak).
+  // leaf when the whole scene is one. A LargeVector of shapes is put in
+  // order in place and becomes `sorted`; other owned shapes are gathered and
+  // emptied once sorted, so the two copies never live beside the nodes (16
+  // bytes a sphere at the peak); const ones (the caller's) are gathered.
   template <class Shapes>
   BuiltChild build(Shapes& shapes, LargeVector<Shape>& sorted, LargeVector<PrimitiveId>& ids) {
     const std::size_t n = shapes.size();
@@ -156,12 +156,18 @@ class MortonBuilder {
     });
     radix_sort_codes(codes_, ids, progress_);
 
-    sorted.resize(n);
-    parallel_for(n, std::size_t{1} << 16, 0, [&](std::size_t first, std::size_t last) {
-      progress_.check_cancel();
-      for (std::size_t i = first; i < last; ++i) sorted[i] = shapes[ids[i]];
-    });
-    if constexpr (!std::is_const_v<Shapes>) std::remove_cv_t<Shapes>().swap(shapes);
+    if constexpr (std::is_same_v<Shapes, LargeVector<Shape>>) {
+      permute_in_place(shapes, ids, progress_);
+      sorted.swap(shapes);
+      LargeVector<Shape>().swap(shapes);
+    } else {
+      sorted.resize(n);
+      parallel_for(n, std::size_t{1} << 16, 0, [&](std::size_t first, std::size_t last) {
+        progress_.check_cancel();
+        for (std::size_t i = first; i < last; ++i) sorted[i] = shapes[ids[i]];
+      });
+      if constexpr (!std::is_const_v<Shapes>) std::remove_cv_t<Shapes>().swap(shapes);
+    }
     sorted_ = &sorted;
     BuiltChild root;
     if (is_leaf_run(0, static_cast<std::uint32_t>(n))) {

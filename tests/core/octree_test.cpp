@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
 
 #include "occlusion/core/random.hpp"
 #include "occlusion/core/sampling.hpp"
@@ -209,6 +210,52 @@ TEST(Octree, BuiltFromAPackedMeshEqualsTheVectorPath) {
     if (a[i]) {
       EXPECT_EQ(a[i]->t_hit, b[i]->t_hit) << i;
       EXPECT_EQ(a[i]->primitive_id, b[i]->primitive_id) << i;
+    }
+  }
+}
+
+// Shapes handed over (a LargeVector moved in) are put in leaf order in place,
+// block by block, rather than gathered into a second array: every id must
+// still map back to its shape, and the tree must be the gathered one, for
+// counts that fill whole blocks of 1,024, leave a last block part full, or
+// make one shape.
+TEST(Octree, ShapesHandedOverAreReorderedInPlaceAsTheGatheredCopy) {
+  const std::vector<Triangle> scene = test_scene(50000);
+  for (const std::size_t count :
+       {std::size_t{1}, std::size_t{1023}, std::size_t{1024}, std::size_t{4096}, scene.size()}) {
+    LargeVector<PackedTriangle> packed;
+    for (std::size_t i = 0; i < count; ++i) packed.emplace_back(scene[i]);
+    const TriangleOctree gathered(packed);
+    LargeVector<PackedTriangle> handed = packed;
+    const TriangleOctree in_place(std::move(handed));
+    EXPECT_TRUE(handed.empty());
+    ASSERT_EQ(in_place.size(), count);
+    EXPECT_EQ(in_place.stats().inner_nodes, gathered.stats().inner_nodes);
+    EXPECT_EQ(in_place.stats().leaves, gathered.stats().leaves);
+    EXPECT_EQ(in_place.stats().depth, gathered.stats().depth);
+    for (std::size_t i = 0; i < count; ++i) {
+      const auto id = static_cast<PrimitiveId>(i);
+      ASSERT_EQ(in_place.shape(id).v0, packed[i].v0) << count << " shapes, id " << i;
+      ASSERT_EQ(in_place.shape(id).e1, packed[i].e1) << count << " shapes, id " << i;
+      ASSERT_EQ(in_place.shape(id).e2, packed[i].e2) << count << " shapes, id " << i;
+    }
+    const std::vector<Ray> rays = random_rays(2000, 7);
+    std::vector<std::optional<Hit>> a(rays.size()), b(rays.size());
+    in_place.intersect_batch(rays.data(), rays.size(), nullptr, a.data(), 2);
+    gathered.intersect_batch(rays.data(), rays.size(), nullptr, b.data(), 2);
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+      ASSERT_EQ(a[i].has_value(), b[i].has_value()) << i;
+      if (a[i]) {
+        EXPECT_EQ(a[i]->t_hit, b[i]->t_hit) << i;
+        EXPECT_EQ(a[i]->primitive_id, b[i]->primitive_id) << i;
+      }
+      if (count <= 4096) {
+        const auto brute = brute_force_intersect(packed, rays[i]);
+        ASSERT_EQ(a[i].has_value(), brute.has_value()) << i;
+        if (a[i]) {
+          EXPECT_EQ(a[i]->t_hit, brute->t_hit) << i;
+        }
+      }
     }
   }
 }

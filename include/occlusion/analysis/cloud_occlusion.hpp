@@ -96,6 +96,18 @@ CloudOcclusionResult compute_cloud_occlusion(const PointCloud& cloud,
                                              const CloudOcclusionOptions& options,
                                              const Progress& progress = {});
 
+// The same with the disc model handed over (options.surfels unset, every
+// point blocking): the octree takes the surfels and puts them in its order in
+// place, where a copy of them would live beside them through its build (28
+// bytes a point at a big cloud's peak). `surfels` is left with its stats and
+// no surfels.
+CloudOcclusionResult compute_cloud_occlusion(const PointCloud& cloud,
+                                             const std::vector<Eigen::Vector3d>& viewpoints,
+                                             const std::vector<PlanarPolygon>& openings,
+                                             SurfelEstimate&& surfels,
+                                             const CloudOcclusionOptions& options,
+                                             const Progress& progress = {});
+
 // Ray k of viewpoint v as compute_cloud_occlusion casts it, public so that the
 // benchmark traces exactly the analysis' rays: for the unit direction
 // d = SphereDirections(sampling, num_rays_per_vp, seed, v)(k), from

@@ -12,18 +12,30 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <vector>
 
 #include "occlusion/analysis/surfel_estimation.hpp"
+#include "occlusion/core/hit.hpp"
+#include "occlusion/core/ray.hpp"
 #include "occlusion/core/surfel_octree.hpp"
 
 namespace occlusion {
 
 inline constexpr std::size_t kClosureSamples = 20000;
 
-// `tree` holds estimate.surfels in their order (primitive id = point index).
-// Returns 0 when no point is oriented.
-double open_surface_share(const SurfelOctree& tree, const SurfelEstimate& estimate,
-                          std::uint64_t seed, unsigned threads = 0,
-                          std::size_t samples = kClosureSamples);
+// The sample rays, each with the point whose disc it does not count. Made
+// from the surfels in the cloud's order, so that a caller can make them
+// before handing the surfels to an octree that reorders them.
+struct ClosureRays {
+  std::vector<Ray> rays;
+  std::vector<PrimitiveId> own;
+};
+ClosureRays closure_rays(const SurfelEstimate& estimate, std::uint64_t seed,
+                         std::size_t samples = kClosureSamples);
+
+// `tree` holds the estimate's surfels (primitive id = point index). Returns
+// 0 when there are no rays (no point is oriented).
+double open_surface_share(const SurfelOctree& tree, const ClosureRays& closure,
+                          unsigned threads = 0);
 
 }  // namespace occlusion

@@ -126,6 +126,8 @@ class Octree {
   // The same from shapes in a LargeVector, whose pages are huge pages when
   // it is big (large_buffer.hpp): on a virtual machine a cold build of 100k
   // triangles spent more time faulting in fresh 4 KiB pages than building.
+  // The tree takes the buffer and puts the shapes in leaf order in place,
+  // with no second copy of them (octree_build.hpp, permute_in_place).
   explicit Octree(LargeVector<Shape>&& shapes, const OctreeOptions& options = {},
                   const Progress& progress = {});
   // From shapes the caller keeps (a cloud's surfels): the tree's sorted copy
