@@ -18,41 +18,7 @@ import {
   startServer,
 } from "./harness";
 import type { SentRequest, Server } from "./harness";
-
-/** Room A: x in [0, 4]; room B, larger: x in [4, 10]; y in [0, 4], z in [0, 3]; a closed wall at x = 4. */
-function twoRooms(): string {
-  const points: string[] = [];
-  const step = 0.1;
-  const plane = (axis: number, at: number, u: [number, number], v: [number, number]) => {
-    const [ua, va] = axis === 0 ? [1, 2] : axis === 1 ? [0, 2] : [0, 1];
-    for (let u0 = u[0]; u0 <= u[1] + 1e-9; u0 += step) {
-      for (let v0 = v[0]; v0 <= v[1] + 1e-9; v0 += step) {
-        const p = [0, 0, 0];
-        p[axis] = at;
-        p[ua!] = u0;
-        p[va!] = v0;
-        points.push(p.map((x) => x.toFixed(3)).join(" "));
-      }
-    }
-  };
-  plane(2, 0, [0.05, 9.95], [0.05, 3.95]); // floor
-  plane(2, 3, [0.05, 9.95], [0.05, 3.95]); // ceiling
-  plane(1, 0, [0.05, 9.95], [0.05, 2.95]);
-  plane(1, 4, [0.05, 9.95], [0.05, 2.95]);
-  plane(0, 0, [0.05, 3.95], [0.05, 2.95]);
-  plane(0, 10, [0.05, 3.95], [0.05, 2.95]);
-  plane(0, 4, [0.05, 3.95], [0.05, 2.95]); // the wall between the rooms
-  const header = [
-    "ply",
-    "format ascii 1.0",
-    `element vertex ${points.length}`,
-    "property float x",
-    "property float y",
-    "property float z",
-    "end_header",
-  ];
-  return [...header, ...points].join("\n") + "\n";
-}
+import { twoRoomsPly } from "./two_rooms";
 
 let server: Server;
 let browser: Browser;
@@ -79,7 +45,7 @@ async function drag(name: string, position: number[]): Promise<void> {
 describe("scan planning (e2e)", () => {
   beforeAll(async () => {
     const data = prepareData();
-    writeFileSync(join(data, "two_rooms.ply"), twoRooms());
+    writeFileSync(join(data, "two_rooms.ply"), twoRoomsPly());
     server = await startServer(data);
     browser = await launchBrowser();
     ({ page, problems, sent } = await openPage(browser, `${server.url}/?scene=two_rooms.ply`));

@@ -24,47 +24,9 @@ import {
   startServer,
 } from "./harness";
 import type { SentRequest, Server } from "./harness";
+import { twoRoomsPly } from "./two_rooms";
 
 const SHIFT = [500000, 5400000, 0];
-
-/**
- * Two rooms behind a closed wall (room A: x in [0, 4], room B: x in [4, 10];
- * y in [0, 4], z in [0, 3]) at SHIFT, as an ASCII PLY of doubles: in float
- * the y coordinates would be 0.5 apart.
- */
-function utmRooms(): string {
-  const points: string[] = [];
-  const step = 0.1;
-  const plane = (axis: number, at: number, u: [number, number], v: [number, number]) => {
-    const [ua, va] = axis === 0 ? [1, 2] : axis === 1 ? [0, 2] : [0, 1];
-    for (let u0 = u[0]; u0 <= u[1] + 1e-9; u0 += step) {
-      for (let v0 = v[0]; v0 <= v[1] + 1e-9; v0 += step) {
-        const p = [0, 0, 0];
-        p[axis] = at;
-        p[ua!] = u0;
-        p[va!] = v0;
-        points.push(p.map((x, a) => (x + SHIFT[a]!).toFixed(3)).join(" "));
-      }
-    }
-  };
-  plane(2, 0, [0.05, 9.95], [0.05, 3.95]); // floor
-  plane(2, 3, [0.05, 9.95], [0.05, 3.95]); // ceiling
-  plane(1, 0, [0.05, 9.95], [0.05, 2.95]);
-  plane(1, 4, [0.05, 9.95], [0.05, 2.95]);
-  plane(0, 0, [0.05, 3.95], [0.05, 2.95]);
-  plane(0, 10, [0.05, 3.95], [0.05, 2.95]);
-  plane(0, 4, [0.05, 3.95], [0.05, 2.95]); // the wall between the rooms
-  const header = [
-    "ply",
-    "format ascii 1.0",
-    `element vertex ${points.length}`,
-    "property double x",
-    "property double y",
-    "property double z",
-    "end_header",
-  ];
-  return [...header, ...points].join("\n") + "\n";
-}
 
 let server: Server;
 let browser: Browser;
@@ -124,7 +86,7 @@ describe("a cloud with a global shift (e2e)", () => {
   beforeAll(async () => {
     const data = prepareData();
     scene = join(data, "utm_rooms.ply");
-    writeFileSync(scene, utmRooms());
+    writeFileSync(scene, twoRoomsPly(SHIFT));
     server = await startServer(data);
     browser = await launchBrowser();
     ({ page, problems, sent } = await openPage(browser, `${server.url}/?scene=utm_rooms.ply`));
