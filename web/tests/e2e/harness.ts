@@ -332,6 +332,13 @@ export function removeData(dataDir: string): void {
   rmSync(dirname(dataDir), { recursive: true, force: true });
 }
 
+/** After a file's tests: the browser closed, the server stopped, its data removed (each if started). */
+export async function stopAll(browser?: Browser, server?: Server): Promise<void> {
+  await browser?.close().catch(() => undefined);
+  await server?.stop();
+  if (server) removeData(server.dataDir);
+}
+
 /**
  * Elements that stick out of their panel (header, sidebar, 3-D view, results,
  * footer) or whose text is cut (an ellipsis, or a clipped lil-gui name),

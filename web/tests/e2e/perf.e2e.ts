@@ -14,9 +14,9 @@ import {
   launchBrowser,
   openPage,
   prepareData,
-  removeData,
   screenshot,
   startServer,
+  stopAll,
 } from "./harness";
 import type { Server } from "./harness";
 import { writeMillionPointRoom } from "./million";
@@ -68,9 +68,7 @@ describe("a 1,000,000-point cloud (e2e, performance)", () => {
     mkdirSync(ARTIFACTS, { recursive: true });
     writeFileSync(join(ARTIFACTS, "perf.json"), JSON.stringify(figures, null, 2) + "\n");
     console.log(`perf: ${JSON.stringify(figures, null, 2)}`);
-    await browser?.close().catch(() => undefined);
-    await server?.stop();
-    if (server) removeData(server.dataDir);
+    await stopAll(browser, server);
   });
 
   test("first frame after the click", async () => {

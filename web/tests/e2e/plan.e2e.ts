@@ -5,20 +5,11 @@
 // one room to the other its visible count changes, and a burst of positions
 // is traced latest-first, not queued.
 
-import { writeFileSync } from "node:fs";
-import { join } from "node:path";
 import type { Browser, Page } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, test } from "vitest";
-import {
-  launchBrowser,
-  openPage,
-  prepareData,
-  removeData,
-  screenshot,
-  startServer,
-} from "./harness";
+import { screenshot, stopAll } from "./harness";
 import type { SentRequest, Server } from "./harness";
-import { twoRoomsPly } from "./two_rooms";
+import { openTwoRooms } from "./two_rooms";
 
 let server: Server;
 let browser: Browser;
@@ -44,21 +35,11 @@ async function drag(name: string, position: number[]): Promise<void> {
 
 describe("scan planning (e2e)", () => {
   beforeAll(async () => {
-    const data = prepareData();
-    writeFileSync(join(data, "two_rooms.ply"), twoRoomsPly());
-    server = await startServer(data);
-    browser = await launchBrowser();
-    ({ page, problems, sent } = await openPage(browser, `${server.url}/?scene=two_rooms.ply`));
-    await page.locator("[data-testid=connection][data-state=online]").waitFor();
-    await page
-      .locator("[data-testid=status-scene]", { hasText: "two_rooms.ply" })
-      .waitFor({ timeout: 30_000 });
+    ({ server, browser, page, problems, sent } = await openTwoRooms("two_rooms.ply"));
   });
 
   afterAll(async () => {
-    await browser?.close().catch(() => undefined);
-    await server?.stop();
-    if (server) removeData(server.dataDir);
+    await stopAll(browser, server);
   });
 
   test("Plan draws the heat map, one numbered station in each room and the curve", async () => {

@@ -15,9 +15,9 @@ import {
   layoutProblems,
   openPage,
   prepareData,
-  removeData,
   screenshot,
   startServer,
+  stopAll,
 } from "./harness";
 import type { Server } from "./harness";
 import { ROOM, writeRealLikeScan } from "./real_scan";
@@ -52,9 +52,7 @@ describe("a real-like scan: stray points, no colour (e2e)", () => {
     mkdirSync(ARTIFACTS, { recursive: true });
     writeFileSync(join(ARTIFACTS, "real-scan.json"), JSON.stringify(figures, null, 2) + "\n");
     console.log(`real scan: ${JSON.stringify(figures, null, 2)}`);
-    await browser?.close().catch(() => undefined);
-    await server?.stop();
-    if (server) removeData(server.dataDir);
+    await stopAll(browser, server);
   });
 
   test("frames the room, not the stray points; pattern viewpoints inside the room", async () => {

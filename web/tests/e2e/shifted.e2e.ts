@@ -9,22 +9,12 @@
 // station; a plan's stations are drawn in the rooms, not 5400 km away.
 
 import { execFile } from "node:child_process";
-import { writeFileSync } from "node:fs";
-import { join } from "node:path";
 import { promisify } from "node:util";
 import type { Browser, Page } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, test } from "vitest";
-import {
-  SERVER_BIN,
-  launchBrowser,
-  openPage,
-  prepareData,
-  removeData,
-  screenshot,
-  startServer,
-} from "./harness";
+import { SERVER_BIN, screenshot, stopAll } from "./harness";
 import type { SentRequest, Server } from "./harness";
-import { twoRoomsPly } from "./two_rooms";
+import { openTwoRooms } from "./two_rooms";
 
 const SHIFT = [500000, 5400000, 0];
 
@@ -84,22 +74,11 @@ async function cliScan(viewpoint: number[], model: Record<string, unknown>): Pro
 
 describe("a cloud with a global shift (e2e)", () => {
   beforeAll(async () => {
-    const data = prepareData();
-    scene = join(data, "utm_rooms.ply");
-    writeFileSync(scene, twoRoomsPly(SHIFT));
-    server = await startServer(data);
-    browser = await launchBrowser();
-    ({ page, problems, sent } = await openPage(browser, `${server.url}/?scene=utm_rooms.ply`));
-    await page.locator("[data-testid=connection][data-state=online]").waitFor();
-    await page
-      .locator("[data-testid=status-scene]", { hasText: "utm_rooms.ply" })
-      .waitFor({ timeout: 30_000 });
+    ({ scene, server, browser, page, problems, sent } = await openTwoRooms("utm_rooms.ply", SHIFT));
   });
 
   afterAll(async () => {
-    await browser?.close().catch(() => undefined);
-    await server?.stop();
-    if (server) removeData(server.dataDir);
+    await stopAll(browser, server);
   });
 
   test("the scene is drawn in its local frame and the viewpoint list shows the file's", async () => {

@@ -2,6 +2,12 @@
 // x in [0, 4], room B (larger) x in [4, 10]; y in [0, 4], z in [0, 3]; the
 // wall between them at x = 4; points 0.1 apart on every surface.
 
+import { writeFileSync } from "node:fs";
+import { join } from "node:path";
+import type { Browser, Page } from "playwright-core";
+import { launchBrowser, openPage, prepareData, startServer } from "./harness";
+import type { SentRequest, Server } from "./harness";
+
 /**
  * The rooms moved by `shift` (the file's coordinates); with a shift, the
  * coordinates are written as doubles, which float would round (0.5 apart at
@@ -40,4 +46,25 @@ export function twoRoomsPly(shift: readonly number[] = [0, 0, 0]): string {
     "end_header",
   ];
   return [...header, ...points].join("\n") + "\n";
+}
+
+/**
+ * The rooms written as `fileName` (moved by `shift`) to a fresh data folder,
+ * served, and open in a page that is online with the scene loaded.
+ */
+export async function openTwoRooms(fileName: string, shift?: readonly number[]) {
+  const data = prepareData();
+  const scene = join(data, fileName);
+  writeFileSync(scene, twoRoomsPly(shift));
+  const server: Server = await startServer(data);
+  const browser: Browser = await launchBrowser();
+  const opened: { page: Page; problems: string[]; sent: SentRequest[] } = await openPage(
+    browser,
+    `${server.url}/?scene=${fileName}`,
+  );
+  await opened.page.locator("[data-testid=connection][data-state=online]").waitFor();
+  await opened.page
+    .locator("[data-testid=status-scene]", { hasText: fileName })
+    .waitFor({ timeout: 30_000 });
+  return { scene, server, browser, ...opened };
 }

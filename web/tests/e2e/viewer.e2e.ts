@@ -16,10 +16,10 @@ import {
   launchBrowser,
   openPage,
   prepareData,
-  removeData,
   runCli,
   screenshot,
   startServer,
+  stopAll,
 } from "./harness";
 import type { SentRequest, Server } from "./harness";
 
@@ -92,9 +92,7 @@ describe("viewer (e2e)", () => {
         JSON.stringify(comparisons, null, 2) + "\n",
       );
     }
-    await browser?.close().catch(() => undefined);
-    await server?.stop();
-    if (server) removeData(server.dataDir);
+    await stopAll(browser, server);
   });
 
   test("opens on the sample room mesh with a WebGL canvas", async () => {
