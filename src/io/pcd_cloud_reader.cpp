@@ -93,6 +93,28 @@ class PcdCloudReader {
     return "ascii";
   }
 
+  // PCL's readHeader goes on reading header lines after DATA (skipping blank
+  // and comment lines) until one is not a header line, and trusts what it
+  // reads there: a second SIZE line after DATA made it allocate 6 GB (a
+  // fuzz_pcd_ascii finding). A PCD file's data follows its DATA line.
+  void reject_header_after_data(Lines lines) const {
+    std::string_view line;
+    while (lines.next(line)) {
+      Tokens tokens(line);
+      const std::string_view word = tokens.next();
+      if (word.empty() || word[0] == '#') continue;
+      for (const std::string_view keyword : {"VERSION", "FIELDS", "COLUMNS", "SIZE", "TYPE", "COUNT",
+                                             "WIDTH", "HEIGHT", "VIEWPOINT", "POINTS", "DATA"}) {
+        if (word.substr(0, keyword.size()) == keyword) {
+          throw InputError(path_, lines.number(),
+                           "a " + std::string(keyword) +
+                               " header line after the DATA line; the data must follow DATA");
+        }
+      }
+      return;
+    }
+  }
+
   void check_declared_size() {
     std::vector<std::uint64_t> sizes;
     std::vector<std::uint64_t> counts;
@@ -109,6 +131,7 @@ class PcdCloudReader {
       const std::string_view keyword = pcl_header_keyword(tokens.next());
       if (keyword == "DATA") {
         data = pcl_data_kind(tokens.next());
+        reject_header_after_data(lines);
         break;
       }
       std::vector<std::uint64_t>* list = keyword == "SIZE"     ? &sizes

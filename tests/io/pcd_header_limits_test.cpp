@@ -77,6 +77,24 @@ TEST(PcdHeaderLimits, KeywordsAreKnownByTheirStartAsPclKnowsThem) {
                               "COUNT value '133333333333333333333388'");
 }
 
+// fuzz_pcd_ascii finding: PCL reads header lines after DATA too, and a SIZE
+// line there (one the check before DATA never saw) made it allocate 6 GB.
+TEST(PcdHeaderLimits, AHeaderLineAfterDataIsRefused) {
+  testing::ScratchDirectory dir;
+  const std::string path = dir.file("after.pcd");
+  testing::write_text(path, header("COUNT 1 1 1", "1", "1", "ascii") +
+                                "# a comment\n\nSIZE 4 4 2147483647\n1 2 3\n");
+  testing::expect_input_error([&] { read_cloud(path); }, "after.pcd", 14,
+                              "a SIZE header line after the DATA line");
+  testing::write_text(path, header("COUNT 1 1 1", "1", "1", "ascii") + "POINTSx 9\n1 2 3\n");
+  testing::expect_input_error([&] { read_cloud(path); }, "after.pcd", 12, "a POINTS header line");
+  // The check stops at the first line of values.
+  testing::write_text(path, header("COUNT 1 1 1", "2", "2", "ascii") + "1 2 3\n4 5 6\n");
+  EXPECT_EQ(read_cloud(path).size(), 2u);
+  testing::write_text(path, header("COUNT 1 1 1", "1", "1", "ascii") + "1 2 3\n");
+  EXPECT_EQ(read_cloud(path).size(), 1u);
+}
+
 TEST(PcdHeaderLimits, CountWithinTheLimitIsStillCheckedAgainstTheFile) {
   testing::ScratchDirectory dir;
   const std::string path = dir.file("count.pcd");
