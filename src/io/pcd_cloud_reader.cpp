@@ -103,8 +103,9 @@ class PcdCloudReader {
       Tokens tokens(line);
       const std::string_view word = tokens.next();
       if (word.empty() || word[0] == '#') continue;
-      for (const std::string_view keyword : {"VERSION", "FIELDS", "COLUMNS", "SIZE", "TYPE", "COUNT",
-                                             "WIDTH", "HEIGHT", "VIEWPOINT", "POINTS", "DATA"}) {
+      for (const std::string_view keyword :
+           {"VERSION", "FIELDS", "COLUMNS", "SIZE", "TYPE", "COUNT", "WIDTH", "HEIGHT", "VIEWPOINT",
+            "POINTS", "DATA"}) {
         if (word.substr(0, keyword.size()) == keyword) {
           throw InputError(path_, lines.number(),
                            "a " + std::string(keyword) +
