@@ -7,7 +7,7 @@
 #
 #   bash src/scripts/experiment.sh [OUT]        (default out/experiment)
 #
-# Environment: TRAIN_ROOMS (24), TEST_ROOMS (16), SPACING (0.04), STEPS (1500),
+# Environment: TRAIN_ROOMS (24), TEST_ROOMS (16), SPACING (0.04), STEPS (3000),
 # THREADS (2), OCCLUSION_BUILD (the folder with occlusion and
 # generate_s3dis_room; default build). Stages whose output exists are skipped, so a stopped experiment
 # resumes (the study resumes run by run); delete OUT to start again.
@@ -18,7 +18,7 @@ out="$(realpath -m "${1:-$repo/out/experiment}")"
 train_rooms="${TRAIN_ROOMS:-24}"
 test_rooms="${TEST_ROOMS:-16}"
 spacing="${SPACING:-0.04}"
-steps="${STEPS:-1500}"
+steps="${STEPS:-3000}"
 threads="${THREADS:-2}"
 build="${OCCLUSION_BUILD:-$repo/build}"
 occlusion="$build/occlusion"

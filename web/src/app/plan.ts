@@ -15,7 +15,13 @@ import { Picker } from "../scene/picking";
 import type { Click } from "../scene/picking";
 import { PlanLayer } from "../scene/plan_layer";
 import { integer, percent } from "../ui/format";
-import { PlanPanel, planDeclarations, planJobParams, planLimitParams } from "../ui/plan_view";
+import {
+  PlanPanel,
+  planDeclarations,
+  planJobParams,
+  planLimitParams,
+  planUpDeclaration,
+} from "../ui/plan_view";
 import { cloudJobParams } from "../settings_defaults";
 import type { AppContext } from "./context";
 import { LatestOnly } from "./latest_only";
@@ -52,7 +58,7 @@ export class Plan {
 
   /** The plan keys' declarations from the server's hello (the tab's defaults). */
   declare(keys: unknown): void {
-    this.panel.declare(planDeclarations(keys));
+    this.panel.declare(planDeclarations(keys), planUpDeclaration(keys));
   }
 
   /** A new scene: the old plan and placed stations no longer apply. */
@@ -78,7 +84,7 @@ export class Plan {
     }
     let params: Record<string, unknown>;
     try {
-      params = planJobParams(this.panel.fields(), this.panel.declarations);
+      params = planJobParams(this.panel.fields(), this.panel.declarations, this.panel.up);
     } catch (error) {
       notices.error("Plan settings", (error as Error).message);
       return;
@@ -197,7 +203,9 @@ export class Plan {
    */
   liveLimits(): Record<string, unknown> {
     if (this.result !== null && this.resultLimits !== null) return this.resultLimits;
-    return planLimitParams(planJobParams(this.panel.fields(), this.panel.declarations));
+    return planLimitParams(
+      planJobParams(this.panel.fields(), this.panel.declarations, this.panel.up),
+    );
   }
 
   /** One live request: what a station at `position` (the scene's frame) sees, drawn on the scene. */

@@ -37,6 +37,32 @@ export interface FieldDeclaration {
   doc: string;
 }
 
+/**
+ * The plan's up axis, a choice (the floor the candidates stand on and the
+ * horizontal the elevation limits are measured from): its default and
+ * choices come only from hello. Camera-frame data (y down) needs "-y".
+ */
+export interface UpDeclaration {
+  default: string;
+  choices: string[];
+  doc: string;
+}
+
+/** The `up` key as `hello` declares it for the `plan` job; null when it does not. */
+export function planUpDeclaration(keys: unknown): UpDeclaration | null {
+  const plan = (keys as Record<string, unknown> | null)?.plan as
+    Record<string, Record<string, unknown> | undefined> | undefined;
+  const up = plan?.up;
+  if (typeof up !== "object" || up === null || !Array.isArray(up.choices)) return null;
+  const choices = up.choices.filter((c): c is string => typeof c === "string");
+  if (choices.length === 0) return null;
+  return {
+    default: typeof up.default === "string" && choices.includes(up.default) ? up.default : "",
+    choices,
+    doc: typeof up.doc === "string" ? up.doc : "",
+  };
+}
+
 /** The tab's fields as `hello` declares the `plan` job's keys; null for a key it does not declare. */
 export function planDeclarations(keys: unknown): Map<PlanField, FieldDeclaration> {
   const out = new Map<PlanField, FieldDeclaration>();
@@ -63,13 +89,23 @@ export function planDeclarations(keys: unknown): Map<PlanField, FieldDeclaration
  * set and what differs from the server's default, as the cloud jobs do, so
  * an untouched tab plans as `occlusion plan SCENE` would. `stations` and
  * `target_coverage` are the two questions: a number of stations wins.
- * Throws an Error naming a field whose text is not a number.
+ * `up` ("" for the server's default) is sent when it differs from `up`'s
+ * declared default. Throws an Error naming a field whose text is not a
+ * number, or an up axis the server does not offer.
  */
 export function planJobParams(
-  fields: Partial<Record<PlanField, string>>,
+  fields: Partial<Record<PlanField | "up", string>>,
   declarations: Map<PlanField, FieldDeclaration>,
+  up: UpDeclaration | null = null,
 ): Record<string, unknown> {
   const params: Record<string, unknown> = {};
+  const axis = fields.up ?? "";
+  if (axis !== "") {
+    if (up === null || !up.choices.includes(axis)) {
+      throw new Error(`up: '${axis}' is not one of ${up?.choices.join(", ") ?? "(none offered)"}`);
+    }
+    if (axis !== up.default) params.up = axis;
+  }
   for (const key of PLAN_FIELDS) {
     const text = (fields[key] ?? "").trim();
     if (text === "") continue;
@@ -90,6 +126,7 @@ export function planJobParams(
 export function planLimitParams(params: Record<string, unknown>): Record<string, unknown> {
   const limits: Record<string, unknown> = {};
   for (const key of PLAN_LIMIT_FIELDS) if (key in params) limits[key] = params[key];
+  if ("up" in params) limits.up = params.up;
   return limits;
 }
 
@@ -100,11 +137,13 @@ export interface PlanPanelActions {
 
 export class PlanPanel {
   private readonly inputs = new Map<PlanField, HTMLInputElement>();
+  private upSelect: HTMLSelectElement | null = null;
   private readonly form: HTMLElement;
   private readonly liveButton: HTMLButtonElement;
   private readonly liveText: HTMLElement;
   readonly results: HTMLElement;
   declarations = new Map<PlanField, FieldDeclaration>();
+  up: UpDeclaration | null = null;
 
   constructor(container: HTMLElement, actions: PlanPanelActions) {
     this.form = h("div", { class: "grid grid-cols-2 gap-2 text-xs", testid: "plan-form" });
@@ -140,10 +179,12 @@ export class PlanPanel {
   }
 
   /** Builds the fields from the server's declarations (blank: the server's default). */
-  declare(declarations: Map<PlanField, FieldDeclaration>): void {
+  declare(declarations: Map<PlanField, FieldDeclaration>, up: UpDeclaration | null = null): void {
     this.declarations = declarations;
+    this.up = up;
     clear(this.form);
     this.inputs.clear();
+    this.upSelect = null;
     for (const key of PLAN_FIELDS) {
       const d = declarations.get(key);
       const input = h("input", {
@@ -167,11 +208,26 @@ export class PlanPanel {
         ]),
       );
     }
+    if (up !== null) {
+      const options = [
+        h("option", { text: `default (${up.default || "server's"})`, attrs: { value: "" } }),
+        ...up.choices.map((c) => h("option", { text: c, attrs: { value: c } })),
+      ];
+      const select = h("select", { class: INPUT, testid: "plan-up", title: up.doc }, options);
+      this.upSelect = select;
+      this.form.append(
+        h("label", { class: "flex flex-col gap-0.5 text-slate-400", title: up.doc }, [
+          "up axis",
+          select,
+        ]),
+      );
+    }
   }
 
-  fields(): Partial<Record<PlanField, string>> {
-    const out: Partial<Record<PlanField, string>> = {};
+  fields(): Partial<Record<PlanField | "up", string>> {
+    const out: Partial<Record<PlanField | "up", string>> = {};
     for (const [key, input] of this.inputs) out[key] = input.value;
+    if (this.upSelect !== null) out.up = this.upSelect.value;
     return out;
   }
 

@@ -9,7 +9,12 @@ import { LatestOnly } from "../../src/app/latest_only";
 import { PlanReportError, parsePlanReport } from "../../src/plan_report";
 import { FrameError, decodeFrame, encodeFrame } from "../../src/protocol/frame";
 import { CHART_BOX, curvePoints } from "../../src/ui/coverage_chart";
-import { planDeclarations, planJobParams } from "../../src/ui/plan_view";
+import {
+  planDeclarations,
+  planJobParams,
+  planLimitParams,
+  planUpDeclaration,
+} from "../../src/ui/plan_view";
 
 /** A report as the contract of issue 28 gives it: two rooms, two stations. */
 function report(): Record<string, unknown> {
@@ -161,6 +166,29 @@ describe("plan params", () => {
   });
   test("a server without the plan job declares nothing", () => {
     expect(planDeclarations({ scan: {} }).size).toBe(0);
+    expect(planUpDeclaration({ scan: {} })).toBeNull();
+  });
+  // Camera-frame data (y down): without "-y" the candidates stand on a wall.
+  const up = planUpDeclaration({
+    plan: { up: { default: "+z", choices: ["+x", "-x", "+y", "-y", "+z", "-z"], doc: "up" } },
+  });
+  test("the up axis: its choices and default from the server", () => {
+    expect(up).toEqual({
+      default: "+z",
+      choices: ["+x", "-x", "+y", "-y", "+z", "-z"],
+      doc: "up",
+    });
+  });
+  test("an up axis other than the default goes to the plan and to the live station", () => {
+    expect(planJobParams({ up: "+z" }, declarations, up)).toEqual({});
+    expect(planJobParams({ up: "" }, declarations, up)).toEqual({});
+    const params = planJobParams({ up: "-y", max_range: "" }, declarations, up);
+    expect(params).toEqual({ up: "-y" });
+    expect(planLimitParams({ ...params, spacing: 0.25 })).toEqual({ up: "-y" });
+  });
+  test("an up axis the server does not offer is refused", () => {
+    expect(() => planJobParams({ up: "down" }, declarations, up)).toThrow(/up: 'down'/);
+    expect(() => planJobParams({ up: "-y" }, declarations, null)).toThrow(/up/);
   });
 });
 
