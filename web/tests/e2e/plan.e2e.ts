@@ -54,6 +54,18 @@ describe("scan planning (e2e)", () => {
     const request = [...sent].reverse().find((r) => r.command === "plan")!;
     expect(request.params.stations).toBe(2);
     expect(request.params.spacing).toBeUndefined(); // left to the server's default
+    // The up axis offers the server's choices and, left alone, is not sent.
+    const up = page.locator("[data-testid=plan-up] option");
+    expect(await up.allTextContents()).toEqual([
+      "default (+z)",
+      "+x",
+      "-x",
+      "+y",
+      "-y",
+      "+z",
+      "-z",
+    ]);
+    expect(request.params.up).toBeUndefined();
 
     const coverage = Number(
       await card.locator("[data-testid=plan-coverage]").getAttribute("data-value"),
