@@ -121,19 +121,7 @@ inline SlotLanes load_slots(const float* p) {
   return load(p);
 }
 
-// A leaf tests its shapes a group of lanes at a time (octree_packet_body.inc):
-// here the group is the whole packet.
-struct LaneGroup {
-  using Lanes = packet_sse2::Lanes;
-  static constexpr unsigned kLanes = packet_sse2::kLanes;
-  static Lanes of(const Lanes& x, unsigned) { return x; }
-  static Lanes load(const float* p) { return packet_sse2::load(p); }
-  static void store(float* p, Lanes x) { packet_sse2::store(p, x); }
-  static unsigned equal_ids(const std::uint32_t* ids, std::uint32_t id) {
-    return packet_sse2::equal_ids(ids, id);
-  }
-};
-
+#include "octree_lane_group_whole.inc"
 #include "octree_lane_operators.inc"
 
 }  // namespace packet_sse2
@@ -263,19 +251,7 @@ inline SlotLanes load_slots(const float* p) {
   return load(p);
 }
 
-// A leaf tests its shapes a group of lanes at a time (octree_packet_body.inc):
-// here the group is the whole packet.
-struct LaneGroup {
-  using Lanes = packet_avx2::Lanes;
-  static constexpr unsigned kLanes = packet_avx2::kLanes;
-  static Lanes of(const Lanes& x, unsigned) { return x; }
-  static Lanes load(const float* p) { return packet_avx2::load(p); }
-  static void store(float* p, Lanes x) { packet_avx2::store(p, x); }
-  static unsigned equal_ids(const std::uint32_t* ids, std::uint32_t id) {
-    return packet_avx2::equal_ids(ids, id);
-  }
-};
-
+#include "octree_lane_group_whole.inc"
 #include "octree_lane_operators.inc"
 
 }  // namespace packet_avx2
@@ -521,19 +497,7 @@ inline SlotLanes load_slots(const float* p) {
   return packet_avx2::load(p);
 }
 
-// A leaf tests its shapes a group of lanes at a time (octree_packet_body.inc):
-// here the group is the whole packet.
-struct LaneGroup {
-  using Lanes = packet_avx512::Lanes;
-  static constexpr unsigned kLanes = packet_avx512::kLanes;
-  static Lanes of(const Lanes& x, unsigned) { return x; }
-  static Lanes load(const float* p) { return packet_avx512::load(p); }
-  static void store(float* p, Lanes x) { packet_avx512::store(p, x); }
-  static unsigned equal_ids(const std::uint32_t* ids, std::uint32_t id) {
-    return packet_avx512::equal_ids(ids, id);
-  }
-};
-
+#include "octree_lane_group_whole.inc"
 #include "octree_lane_operators.inc"
 
 }  // namespace packet_avx512
