@@ -110,7 +110,7 @@ struct Batch {
 
 // Shadow rays from random scene points to the viewpoints (sample-major, so
 // viewpoints interleave), rays out of the viewpoints (viewpoint-major), random
-// rays, then the edge cases.
+// rays, a plan's rays from the viewpoints to points, then the edge cases.
 Batch test_batch(std::size_t primitives, std::uint64_t seed) {
   Rng rng(seed);
   Batch batch;
@@ -138,6 +138,24 @@ Batch test_batch(std::size_t primitives, std::uint64_t seed) {
     ray.t_min = static_cast<float>(rng.uniform());
     ray.t_max = ray.t_min + static_cast<float>(4.0 * rng.uniform());
     add(ray, static_cast<PrimitiveId>(i % primitives));
+  }
+  // A plan's rays: from each viewpoint to scene points, one after another (a
+  // packet of one origin, its rays loaded whole), ending short of the point
+  // with the point's own id ignored.
+  for (const Eigen::Vector3f& vp : kViewpoints) {
+    for (int i = 0; i < 1000; ++i) {
+      const Eigen::Vector3f p = random_point(rng, 0.0f, 10.0f);
+      add({vp, p - vp, 0.0f, 0.999f}, static_cast<PrimitiveId>(rng.next() % primitives));
+    }
+  }
+  // From one point of the floor's grid along the axes and the diagonals (zero
+  // components, inverse directions of 1e30, from one origin), three lengths each.
+  for (const float length : {0.5f, 2.0f, 20.0f}) {
+    for (int i = 0; i < 27; ++i) {
+      const Eigen::Vector3f d(static_cast<float>(i % 3 - 1), static_cast<float>(i / 3 % 3 - 1),
+                              static_cast<float>(i / 9 - 1));
+      add({{2.5f, 2.5f, 0.0f}, length * d, 0.0f, 1.0f}, kNoPrimitive);
+    }
   }
   const float inf = std::numeric_limits<float>::infinity();
   // In the floor plane and in the wall plane, along the grid's edges and across it.
