@@ -15,7 +15,7 @@ from .checkpoint import save
 from .features import BLOCK, INPUT_CHANNELS, block_relative, point_features
 from .rooms import read_room, room_dirs
 
-# The real settings: about 12 minutes on 2 quiet cores (docs/study.md).
+# The real settings: about 14 minutes on 2 quiet cores (docs/study.md).
 DEFAULTS = {"steps": 3000, "batch": 8, "points": 2048, "width": 64,
             "learning_rate": 0.002, "seed": 0}
 
