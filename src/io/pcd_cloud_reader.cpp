@@ -80,11 +80,13 @@ class PcdCloudReader {
   // PCL's readHeader knows a line by how its first word starts ("COUNTxyz" is
   // a COUNT line: a fuzz_pcd_ascii finding where PCL read an unchecked COUNT
   // and allocated 16 GB), and DATA's kind the same way; so does this check.
+  // The keyword PCL reads `word` as; empty when it is not a header line.
   static std::string_view pcl_header_keyword(std::string_view word) {
-    for (const std::string_view keyword : {"DATA", "SIZE", "COUNT", "WIDTH", "HEIGHT", "POINTS"}) {
+    for (const std::string_view keyword : {"VERSION", "FIELDS", "COLUMNS", "SIZE", "TYPE", "COUNT",
+                                           "WIDTH", "HEIGHT", "VIEWPOINT", "POINTS", "DATA"}) {
       if (word.substr(0, keyword.size()) == keyword) return keyword;
     }
-    return word;
+    return {};
   }
   static std::string_view pcl_data_kind(std::string_view word) {
     for (const std::string_view kind : {"binary_compressed", "binary"}) {
@@ -103,14 +105,11 @@ class PcdCloudReader {
       Tokens tokens(line);
       const std::string_view word = tokens.next();
       if (word.empty() || word[0] == '#') continue;
-      for (const std::string_view keyword :
-           {"VERSION", "FIELDS", "COLUMNS", "SIZE", "TYPE", "COUNT", "WIDTH", "HEIGHT", "VIEWPOINT",
-            "POINTS", "DATA"}) {
-        if (word.substr(0, keyword.size()) == keyword) {
-          throw InputError(path_, lines.number(),
-                           "a " + std::string(keyword) +
-                               " header line after the DATA line; the data must follow DATA");
-        }
+      const std::string_view keyword = pcl_header_keyword(word);
+      if (!keyword.empty()) {
+        throw InputError(path_, lines.number(),
+                         "a " + std::string(keyword) +
+                             " header line after the DATA line; the data must follow DATA");
       }
       return;
     }
