@@ -112,6 +112,26 @@ export const CHOICES: Record<ChoiceName, ChoiceDeclaration> = {
   primitive: { key: "primitive", default: "", choices: [], doc: "How each point meets rays." },
 };
 
+/**
+ * A choice key as `hello` declares it (`{default, choices, doc}`): its string
+ * choices, its default ("" unless one of them) and its doc (null without one);
+ * null when it declares no choices.
+ */
+export function declaredChoice(
+  k: unknown,
+): { default: string; choices: string[]; doc: string | null } | null {
+  if (typeof k !== "object" || k === null) return null;
+  const { choices: raw, default: fallback, doc } = k as ServerKey;
+  if (!Array.isArray(raw)) return null;
+  const choices = raw.filter((c): c is string => typeof c === "string");
+  if (choices.length === 0) return null;
+  return {
+    default: typeof fallback === "string" && choices.includes(fallback) ? fallback : "",
+    choices,
+    doc: typeof doc === "string" ? doc : null,
+  };
+}
+
 /** Declarations as `hello` may carry them (issue 11): per command, per key. */
 interface ServerKey {
   default?: unknown;
@@ -158,13 +178,11 @@ export function adoptServerKeys(hello: Record<string, unknown>): (SettingName | 
     changed.push(name);
   }
   for (const [name, d] of Object.entries(CHOICES) as [ChoiceName, ChoiceDeclaration][]) {
-    const k = found.get(d.key);
-    if (!k || !Array.isArray(k.choices)) continue;
-    const choices = k.choices.filter((c): c is string => typeof c === "string");
-    if (choices.length === 0) continue;
-    d.choices = choices;
-    d.default = typeof k.default === "string" && choices.includes(k.default) ? k.default : "";
-    if (typeof k.doc === "string") d.doc = k.doc;
+    const choice = declaredChoice(found.get(d.key));
+    if (choice === null) continue;
+    d.choices = choice.choices;
+    d.default = choice.default;
+    if (choice.doc !== null) d.doc = choice.doc;
     changed.push(name);
   }
   return changed;

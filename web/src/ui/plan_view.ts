@@ -5,6 +5,8 @@
 
 import { css, stationColour } from "../decode/colour_maps";
 import type { PlanResult } from "../plan_report";
+import { declaredChoice } from "../settings_defaults";
+import type { ChoiceDeclaration } from "../settings_defaults";
 import { coverageChart } from "./coverage_chart";
 import { BUTTON_PRIMARY, BUTTON_SMALL, INPUT, clear, h } from "./dom";
 import { fixed, integer, percent } from "./format";
@@ -42,25 +44,14 @@ export interface FieldDeclaration {
  * horizontal the elevation limits are measured from): its default and
  * choices come only from hello. Camera-frame data (y down) needs "-y".
  */
-export interface UpDeclaration {
-  default: string;
-  choices: string[];
-  doc: string;
-}
+export type UpDeclaration = Omit<ChoiceDeclaration, "key">;
 
 /** The `up` key as `hello` declares it for the `plan` job; null when it does not. */
 export function planUpDeclaration(keys: unknown): UpDeclaration | null {
   const plan = (keys as Record<string, unknown> | null)?.plan as
-    Record<string, Record<string, unknown> | undefined> | undefined;
-  const up = plan?.up;
-  if (typeof up !== "object" || up === null || !Array.isArray(up.choices)) return null;
-  const choices = up.choices.filter((c): c is string => typeof c === "string");
-  if (choices.length === 0) return null;
-  return {
-    default: typeof up.default === "string" && choices.includes(up.default) ? up.default : "",
-    choices,
-    doc: typeof up.doc === "string" ? up.doc : "",
-  };
+    Record<string, unknown> | undefined;
+  const choice = declaredChoice(plan?.up);
+  return choice === null ? null : { ...choice, doc: choice.doc ?? "" };
 }
 
 /** The tab's fields as `hello` declares the `plan` job's keys; null for a key it does not declare. */
