@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "occlusion/analysis/distinct_neighbours.hpp"
+#include "quantiles.hpp"
 
 namespace occlusion {
 
@@ -18,12 +19,6 @@ constexpr std::uint32_t kNeighbours = 8;
 // Positions closer than this (relative to their magnitude, floats) are one position.
 double same_position_distance(const Eigen::Vector3f& p) {
   return 1e-6 * std::max(1.0, static_cast<double>(p.cwiseAbs().maxCoeff()));
-}
-
-double quantile(std::vector<double>& values, double q) {
-  const auto k = static_cast<std::size_t>(q * static_cast<double>(values.size() - 1) + 0.5);
-  std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(k), values.end());
-  return values[k];
 }
 
 }  // namespace
@@ -58,9 +53,10 @@ PointSpacing measure_point_spacing(const PointCloud& cloud) {
         "point spacing: no point has a neighbour at a distinct position (all points coincide?)");
   }
   result.samples = distances.size();
-  result.spacing = quantile(distances, 0.5);
-  result.quantile_10 = quantile(distances, 0.1);
-  result.quantile_90 = quantile(distances, 0.9);
+  const std::vector<double> q = quantiles::in_place(distances, {0.5, 0.1, 0.9});
+  result.spacing = q[0];
+  result.quantile_10 = q[1];
+  result.quantile_90 = q[2];
   return result;
 }
 

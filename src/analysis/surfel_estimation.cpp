@@ -17,6 +17,7 @@
 #include "occlusion/core/morton_order.hpp"
 #include "occlusion/core/parallel.hpp"
 #include "pcl_frame.hpp"
+#include "quantiles.hpp"
 
 namespace occlusion {
 
@@ -47,13 +48,6 @@ std::size_t block_size(std::size_t count) {
 template <class T>
 void release(std::vector<T>& values) {
   std::vector<T>().swap(values);
-}
-
-float quantile(std::vector<float> values, double q) {
-  if (values.empty()) return 0.0f;
-  const auto k = static_cast<std::size_t>(q * static_cast<double>(values.size() - 1) + 0.5);
-  std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(k), values.end());
-  return values[k];
 }
 
 void check_options(const PointCloud& cloud, const SurfelOptions& options) {
@@ -386,7 +380,8 @@ SurfelEstimate estimate_surfels(const PointCloud& cloud, const SurfelOptions& op
       throw std::invalid_argument(
           "surfels: no point has a neighbour at a distinct position (all points coincide?)");
     }
-    const float median_radius = quantile(measured, 0.5);
+    const std::vector<float> measured_quantiles = quantiles::in_place(measured, {0.5, 0.1});
+    const float median_radius = measured_quantiles[0];
     for (float& r : radii) {
       if (!(r > 0.0f)) r = median_radius;
     }
@@ -396,7 +391,7 @@ SurfelEstimate estimate_surfels(const PointCloud& cloud, const SurfelOptions& op
       // stray point's neighbours are at least as dense as the sparsest tenth
       // of the cloud, so only points above kStrayRatio x that quantile can be
       // stray.
-      const float low = quantile(std::move(measured), 0.1);
+      const float low = measured_quantiles[1];
       std::vector<std::uint32_t> candidates;
       for (std::size_t s = 0; s < count; ++s) {
         if (radii[s] > kStrayRatio * low) candidates.push_back(static_cast<std::uint32_t>(s));
@@ -410,7 +405,7 @@ SurfelEstimate estimate_surfels(const PointCloud& cloud, const SurfelOptions& op
                         if (ids[j] != s) around.push_back(radii[ids[j]]);
                       }
                       if (around.empty()) return;
-                      const float typical = quantile(around, 0.5);
+                      const float typical = quantiles::in_place(around, {0.5}).front();
                       if (radii[s] > kStrayRatio * typical) stray_radius[n] = typical;
                     });
       for (std::size_t n = 0; n < candidates.size(); ++n) {
@@ -436,12 +431,23 @@ SurfelEstimate estimate_surfels(const PointCloud& cloud, const SurfelOptions& op
     }
     stats.oriented = oriented_variation.size();
     stats.unoriented = count - stats.oriented;
-    stats.surface_variation_median = quantile(std::move(oriented_variation), 0.5);
-    stats.thickness_median = quantile(std::move(oriented_thickness), 0.5);
+    // Three selections over a million values each, apart: one a thread.
+    std::vector<float> radius_order = radii;
+    parallel_for(3, 1, options.threads, [&](std::size_t first, std::size_t last) {
+      for (std::size_t task = first; task < last; ++task) {
+        if (task == 0 && !oriented_variation.empty()) {
+          stats.surface_variation_median = quantiles::in_place(oriented_variation, {0.5}).front();
+        } else if (task == 1 && !oriented_thickness.empty()) {
+          stats.thickness_median = quantiles::in_place(oriented_thickness, {0.5}).front();
+        } else if (task == 2) {
+          const std::vector<float> q = quantiles::in_place(radius_order, {0.1, 0.5, 0.9});
+          stats.radius_quantile_10 = q[0];
+          stats.radius_median = q[1];
+          stats.radius_quantile_90 = q[2];
+        }
+      }
+    });
   }
-  stats.radius_quantile_10 = quantile(radii, 0.1);
-  stats.radius_median = quantile(radii, 0.5);
-  stats.radius_quantile_90 = quantile(radii, 0.9);
   // Freed (`v = {}` would keep their memory) before the surfels are made: a
   // big cloud's peak was there.
   release(variation);
@@ -451,14 +457,14 @@ SurfelEstimate estimate_surfels(const PointCloud& cloud, const SurfelOptions& op
 
   // Back in the cloud's order.
   estimate.surfels.resize(count);
-  for (std::size_t s = 0; s < count; ++s) {
-    const std::size_t i = order[s];
-    estimate.surfels[i] = make_surfel(cloud.positions[i], normals[s], radii[s], i);
-  }
-  if (options.keep_thickness) {
-    estimate.thickness.resize(count);
-    for (std::size_t s = 0; s < count; ++s) estimate.thickness[order[s]] = thickness[s];
-  }
+  if (options.keep_thickness) estimate.thickness.resize(count);
+  parallel_for(count, kGrain * 16, options.threads, [&](std::size_t first, std::size_t last) {
+    for (std::size_t s = first; s < last; ++s) {
+      const std::size_t i = order[s];
+      estimate.surfels[i] = make_surfel(cloud.positions[i], normals[s], radii[s], i);
+      if (options.keep_thickness) estimate.thickness[i] = thickness[s];
+    }
+  });
   stats.seconds = seconds_since(start);
   progress("surfels", 1.0);
   return estimate;
