@@ -53,32 +53,48 @@ struct Buckets {
 };
 
 Buckets fill_buckets(const Grid& grid, const std::vector<Eigen::Vector3f>& points) {
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> pairs;
-  pairs.reserve(points.size() * 27);
-  for (std::size_t q = 0; q < points.size(); ++q) {
+  // Counted, then placed (a counting sort by bucket): the queries of a bucket
+  // come in increasing order, as a sort of (bucket, query) pairs would put
+  // them, without sorting 27 pairs a query.
+  const std::size_t count = static_cast<std::size_t>(grid.mask) + 1;
+  Buckets buckets;
+  buckets.begin.assign(count + 1, 0);
+  buckets.occupied.assign((count + 63) / 64, 0);
+  // The distinct buckets of the 27 cells around query q (two cells may share one).
+  std::array<std::uint64_t, 27> around{};
+  const auto buckets_around = [&](std::size_t q) {
     const Cell c = grid.cell_of(points[q]);
+    std::size_t n = 0;
     for (std::int64_t dx = -1; dx <= 1; ++dx) {
       for (std::int64_t dy = -1; dy <= 1; ++dy) {
         for (std::int64_t dz = -1; dz <= 1; ++dz) {
-          pairs.emplace_back(grid.bucket_of({c[0] + dx, c[1] + dy, c[2] + dz}),
-                             static_cast<std::uint32_t>(q));
+          around[n++] = grid.bucket_of({c[0] + dx, c[1] + dy, c[2] + dz});
         }
       }
     }
-  }
-  std::sort(pairs.begin(), pairs.end());
-  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
-  Buckets buckets;
-  const std::size_t count = static_cast<std::size_t>(grid.mask) + 1;
-  buckets.begin.assign(count + 1, 0);
-  buckets.occupied.assign((count + 63) / 64, 0);
-  buckets.entries.reserve(pairs.size());
-  for (const auto& [bucket, query] : pairs) {
-    ++buckets.begin[bucket + 1];
-    buckets.occupied[bucket / 64] |= std::uint64_t{1} << (bucket % 64);
-    buckets.entries.push_back(query);
+    std::sort(around.begin(), around.end());
+    return static_cast<std::size_t>(std::unique(around.begin(), around.end()) - around.begin());
+  };
+  std::size_t entries = 0;
+  for (std::size_t q = 0; q < points.size(); ++q) {
+    const std::size_t n = buckets_around(q);
+    for (std::size_t j = 0; j < n; ++j) ++buckets.begin[around[j] + 1];
+    entries += n;
   }
   for (std::size_t b = 0; b < count; ++b) buckets.begin[b + 1] += buckets.begin[b];
+  buckets.entries.resize(entries);
+  // Each bucket's offset moves on as it is filled, to its end, the next
+  // bucket's beginning; shifted back by one bucket after.
+  for (std::size_t q = 0; q < points.size(); ++q) {
+    const std::size_t n = buckets_around(q);
+    for (std::size_t j = 0; j < n; ++j) {
+      const std::uint64_t bucket = around[j];
+      buckets.entries[buckets.begin[bucket]++] = static_cast<std::uint32_t>(q);
+      buckets.occupied[bucket / 64] |= std::uint64_t{1} << (bucket % 64);
+    }
+  }
+  std::copy_backward(buckets.begin.begin(), buckets.begin.end() - 1, buckets.begin.end());
+  buckets.begin[0] = 0;
   return buckets;
 }
 

@@ -320,7 +320,9 @@ SurfelEstimate estimate_surfels(const PointCloud& cloud, const SurfelOptions& op
     // The sorted copy and the search's boxes (about 15 bytes a point) live
     // only while searched.
     std::vector<Eigen::Vector3f> sorted(count);
-    for (std::size_t s = 0; s < count; ++s) sorted[s] = cloud.positions[order[s]];
+    parallel_for(count, kGrain * 16, options.threads, [&](std::size_t first, std::size_t last) {
+      for (std::size_t s = first; s < last; ++s) sorted[s] = cloud.positions[order[s]];
+    });
     const MortonKnn knn(sorted, options.threads);
 
     // visit(n, s, ids, got) for every point s = subset[n] of `subset` (null:

@@ -16,7 +16,7 @@ namespace occlusion {
 namespace {
 
 // Leaves hold kLeafPoints to 2 kLeafPoints - 1 points.
-constexpr std::size_t kLeafPoints = 8;
+constexpr std::size_t kLeafPoints = 16;
 // A leaf wider than this many gather radii is a jump of the curve (or holds
 // stray points): its queries search alone rather than gather half the cloud.
 constexpr float kWideLeaf = 8.0f;
@@ -25,6 +25,9 @@ constexpr float kWideLeaf = 8.0f;
 // point's does not inflate it).
 constexpr float kRadiusSlack = 1.1f;
 constexpr float kTypical = 4.0f;
+// A query's k nearest are first sought within this many times the k-th
+// distance of the query before.
+constexpr float kTightRadius = 1.2f;
 
 // Gaps are rounded like the points' own differences, so a box is never
 // farther than a point inside it.
@@ -237,6 +240,7 @@ void MortonKnn::search(const std::uint32_t* subset, std::size_t first, std::size
   const auto query_of = [&](std::size_t m) -> std::size_t { return subset ? subset[m] : m; };
   float radius = -1.0f;  // none yet
   scratch.last_ids.clear();
+  float last_kth_d2 = std::numeric_limits<float>::infinity();
   for (std::size_t m = first; m < last;) {
     const std::size_t s = query_of(m);
     std::size_t j = static_cast<std::size_t>((static_cast<std::uint64_t>(s) << depth_) / n);
@@ -282,7 +286,18 @@ void MortonKnn::search(const std::uint32_t* subset, std::size_t first, std::size
           sum += dz * dz;
           scratch.d2[c] = sum;
         }
-        select_nearest(count, guess, k, scratch);
+        // A tighter bound when it holds k points: the query before's k-th
+        // distance, a little widened (the same density around a point next
+        // to it), keeps about k of the gathered points where `guess` keeps
+        // about three times as many, each then weighed in the selection.
+        float threshold = guess;
+        const float tight = kTightRadius * kTightRadius * last_kth_d2;
+        if (tight < guess) {
+          std::size_t within = 0;
+          for (std::size_t c = 0; c < count; ++c) within += scratch.d2[c] <= tight ? 1 : 0;
+          if (within >= k) threshold = tight;
+        }
+        select_nearest(count, threshold, k, scratch);
         if (scratch.found == k) {
           bound = scratch.best_d2[k - 1];
           // A point left out lies farther than r from the box, so farther
@@ -297,6 +312,7 @@ void MortonKnn::search(const std::uint32_t* subset, std::size_t first, std::size
         if (scratch.found < k) search_alone(p, k, std::numeric_limits<float>::infinity(), scratch);
       }
       scratch.last_ids.assign(scratch.best_ids.begin(), scratch.best_ids.end());
+      last_kth_d2 = scratch.best_d2[k - 1];
       scratch.kth.push_back(std::sqrt(scratch.best_d2[k - 1]));
       visit(m, q, scratch.best_ids.data(), k);
     }
