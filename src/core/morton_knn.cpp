@@ -19,7 +19,7 @@ namespace {
 constexpr std::size_t kLeafPoints = 16;
 // A leaf wider than this many gather radii is a jump of the curve (or holds
 // stray points): its queries search alone rather than gather half the cloud.
-constexpr float kWideLeaf = 8.0f;
+constexpr float kWideLeaf = 16.0f;
 // The next leaf's radius: this much above the largest k-th distance of the
 // leaf before, among those within kTypical times its median (a stray
 // point's does not inflate it).
