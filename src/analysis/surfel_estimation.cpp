@@ -227,13 +227,26 @@ double tangent_radius(const Eigen::Vector3f& own, const Distinct& distinct, cons
   // Squared, and the root taken once per sector: the root is correctly
   // rounded and monotone, so this is the nearest distance bit for bit, with
   // no root in the loop (its latency was a tenth of the estimate's time).
-  double nearest[4] = {INFINITY, INFINITY, INFINITY, INFINITY};  // +u, +v, -u, -v
+  // Each neighbour offered to all four sectors, infinitely far from the
+  // three it is not in: the sector of a neighbour is a coin toss, and a
+  // branch on it or a store to it indexed by it cost more than the rest of
+  // the loop.
+  double plus_u = INFINITY, plus_v = INFINITY, minus_u = INFINITY, minus_v = INFINITY;
   for (std::size_t j = 0; j < distinct.count(); ++j) {
     const Eigen::Vector3d d = (distinct[j] - own).cast<double>();
     const double u = axis_u.dot(d), v = axis_v.dot(d);
-    const int sector = std::abs(u) >= std::abs(v) ? (u >= 0.0 ? 0 : 2) : (v >= 0.0 ? 1 : 3);
-    nearest[sector] = std::min(nearest[sector], u * u + v * v);
+    const double squared = u * u + v * v;
+    // squared + 0 where the neighbour is, squared + infinity elsewhere: a
+    // table, as a select compiled to a branch.
+    static constexpr double kAway[2] = {INFINITY, 0.0};
+    const int along_u = std::abs(u) >= std::abs(v) ? 1 : 0;
+    const int u_ahead = u >= 0.0 ? 1 : 0, v_ahead = v >= 0.0 ? 1 : 0;
+    plus_u = std::min(plus_u, squared + kAway[along_u & u_ahead]);
+    minus_u = std::min(minus_u, squared + kAway[along_u & (1 - u_ahead)]);
+    plus_v = std::min(plus_v, squared + kAway[(1 - along_u) & v_ahead]);
+    minus_v = std::min(minus_v, squared + kAway[(1 - along_u) & (1 - v_ahead)]);
   }
+  double nearest[4] = {plus_u, plus_v, minus_u, minus_v};
   for (double& g : nearest) g = std::sqrt(g);
   int occupied = 0;
   for (const double g : nearest) occupied += std::isfinite(g) ? 1 : 0;
