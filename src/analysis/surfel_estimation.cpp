@@ -25,7 +25,10 @@ namespace {
 
 using analysis_support::Clock;
 using analysis_support::seconds_since;
-constexpr std::size_t kGrain = 1024;
+// Points a thread takes at a time: each range's first leaf searches the tree
+// alone (morton_knn.hpp), so ranges of a few thousand keep that to a few
+// queries in a thousand.
+constexpr std::size_t kGrain = 4096;
 // A second eigenvalue below this share of the largest: the neighbours lie on a line.
 constexpr double kMinSpread = 1e-3;
 // Below this surface variation a neighbourhood is one flat surface: no refit.
@@ -333,7 +336,7 @@ SurfelEstimate estimate_surfels(const PointCloud& cloud, const SurfelOptions& op
     // The sorted copy and the search's boxes (about 15 bytes a point) live
     // only while searched.
     std::vector<Eigen::Vector3f> sorted(count);
-    parallel_for(count, kGrain * 16, options.threads, [&](std::size_t first, std::size_t last) {
+    parallel_for(count, kGrain * 4, options.threads, [&](std::size_t first, std::size_t last) {
       for (std::size_t s = first; s < last; ++s) sorted[s] = cloud.positions[order[s]];
     });
     const MortonKnn knn(sorted, options.threads);
@@ -473,7 +476,7 @@ SurfelEstimate estimate_surfels(const PointCloud& cloud, const SurfelOptions& op
   // Back in the cloud's order.
   estimate.surfels.resize(count);
   if (options.keep_thickness) estimate.thickness.resize(count);
-  parallel_for(count, kGrain * 16, options.threads, [&](std::size_t first, std::size_t last) {
+  parallel_for(count, kGrain * 4, options.threads, [&](std::size_t first, std::size_t last) {
     for (std::size_t s = first; s < last; ++s) {
       const std::size_t i = order[s];
       estimate.surfels[i] = make_surfel(cloud.positions[i], normals[s], radii[s], i);
