@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "occlusion/core/large_buffer.hpp"
 #include "occlusion/core/morton_knn.hpp"
 #include "occlusion/core/parallel.hpp"
 
@@ -47,8 +48,8 @@ struct Grid {
 
 // The queries of each bucket, as offsets into one list (no query twice in a bucket).
 struct Buckets {
-  std::vector<std::uint32_t> begin;  // buckets + 1 offsets
-  std::vector<std::uint32_t> entries;
+  LargeVector<std::uint32_t> begin;  // buckets + 1 offsets
+  LargeVector<std::uint32_t> entries;
   std::vector<std::uint64_t> occupied;  // one bit per bucket
 };
 

@@ -19,9 +19,10 @@ inline std::size_t rank_of(double q, std::size_t count) {
 
 // The values of `values` (reordered; not empty) at `ranks` (each below its
 // size), in the order given.
-template <class T>
-std::vector<T> at_ranks(std::vector<T>& values, const std::vector<std::size_t>& ranks) {
-  std::vector<T> out;
+template <class Values>
+std::vector<typename Values::value_type> at_ranks(Values& values,
+                                                  const std::vector<std::size_t>& ranks) {
+  std::vector<typename Values::value_type> out;
   out.reserve(ranks.size());
   // Ranks already placed: every value before one is no larger, after it no smaller.
   std::vector<std::size_t> placed;
@@ -42,8 +43,9 @@ std::vector<T> at_ranks(std::vector<T>& values, const std::vector<std::size_t>& 
 }
 
 // The quantiles qs of `values` (reordered; not empty), in the order given.
-template <class T>
-std::vector<T> in_place(std::vector<T>& values, std::initializer_list<double> qs) {
+template <class Values>
+std::vector<typename Values::value_type> in_place(Values& values,
+                                                  std::initializer_list<double> qs) {
   std::vector<std::size_t> ranks;
   for (const double q : qs) ranks.push_back(rank_of(q, values.size()));
   return at_ranks(values, ranks);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "occlusion/core/large_buffer.hpp"
 #include "quantiles.hpp"
 
 namespace occlusion {
@@ -11,7 +12,7 @@ namespace occlusion {
 SceneFrame measure_scene_frame(const std::vector<Eigen::Vector3f>& points) {
   if (points.empty()) throw std::invalid_argument("scene frame: no points");
   SceneFrame frame;
-  std::vector<float> values(points.size());
+  LargeVector<float> values(points.size());  // huge pages: see core/large_buffer.hpp
   const double last = static_cast<double>(points.size() - 1);
   const auto low = static_cast<std::size_t>(std::floor(kRobustQuantile * last));
   const auto high = static_cast<std::size_t>(std::ceil((1.0 - kRobustQuantile) * last));

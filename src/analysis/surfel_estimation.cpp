@@ -48,9 +48,9 @@ std::size_t block_size(std::size_t count) {
   return std::max<std::size_t>(count / 20, 16384);
 }
 
-template <class T>
-void release(std::vector<T>& values) {
-  std::vector<T>().swap(values);
+template <class Vector>
+void release(Vector& values) {
+  Vector().swap(values);
 }
 
 void check_options(const PointCloud& cloud, const SurfelOptions& options) {
@@ -103,8 +103,8 @@ class Distinct {
   }
   // The neighbours ids[0..got) of `points`, nearest first, but `self`. Their
   // distances are taken first, apart: each root then waits on nothing.
-  void offer_all(const std::vector<Eigen::Vector3f>& points, const std::uint32_t* ids,
-                 std::size_t got, std::size_t self) {
+  void offer_all(const Eigen::Vector3f* points, const std::uint32_t* ids, std::size_t got,
+                 std::size_t self) {
     distances_.resize(got);
     for (std::size_t j = 0; j < got; ++j) {
       distances_[j] = (points[ids[j]] - own_).cast<double>().norm();
@@ -327,15 +327,17 @@ SurfelEstimate estimate_surfels(const PointCloud& cloud, const SurfelOptions& op
   }
   const std::vector<std::uint32_t> order = morton_order(cloud.positions, options.threads);
   // Per point, in Morton order.
-  std::vector<Eigen::Vector3f> normals(count);
-  std::vector<float> radii(count), variation(count), thickness(count);
-  std::vector<std::uint8_t> duplicate(count), line(count);
+  // Big arrays in huge pages (core/large_buffer.hpp): on a virtual machine
+  // first touching 4 KiB pages one at a time cost a tenth of a 1M cloud's run.
+  LargeVector<Eigen::Vector3f> normals(count);
+  LargeVector<float> radii(count), variation(count), thickness(count);
+  LargeVector<std::uint8_t> duplicate(count), line(count);
   SurfelEstimate estimate;
   SurfelStats& stats = estimate.stats;
   {
     // The sorted copy and the search's boxes (about 15 bytes a point) live
     // only while searched.
-    std::vector<Eigen::Vector3f> sorted(count);
+    LargeVector<Eigen::Vector3f> sorted(count);
     parallel_for(count, kGrain * 4, options.threads, [&](std::size_t first, std::size_t last) {
       for (std::size_t s = first; s < last; ++s) sorted[s] = cloud.positions[order[s]];
     });
@@ -367,7 +369,7 @@ SurfelEstimate estimate_surfels(const PointCloud& cloud, const SurfelOptions& op
       thread_local Distinct distinct;
       const Eigen::Vector3f& own = sorted[s];
       distinct.reset(own, same_position_distance(own));
-      distinct.offer_all(sorted, ids, got, s);
+      distinct.offer_all(sorted.data(), ids, got, s);
       const Neighbourhood hood = measure(own, distinct, options);
       normals[s] = hood.normal;
       radii[s] = hood.normal.isZero() ? kSphereShare * hood.radius : hood.radius;
@@ -389,7 +391,7 @@ SurfelEstimate estimate_surfels(const PointCloud& cloud, const SurfelOptions& op
 
     // Positions stored more than k times have no distinct neighbour in
     // reach: they take the cloud's median radius.
-    std::vector<float> measured;
+    LargeVector<float> measured;
     measured.reserve(count);
     for (const float r : radii) {
       if (r > 0.0f) measured.push_back(r);
@@ -439,7 +441,9 @@ SurfelEstimate estimate_surfels(const PointCloud& cloud, const SurfelOptions& op
 
   stats.points = count;
   {
-    std::vector<float> oriented_variation, oriented_thickness;
+    LargeVector<float> oriented_variation, oriented_thickness;
+    oriented_variation.reserve(count);
+    oriented_thickness.reserve(count);
     for (std::size_t s = 0; s < count; ++s) {
       stats.duplicates += duplicate[s];
       if (!normals[s].isZero()) {
@@ -450,7 +454,7 @@ SurfelEstimate estimate_surfels(const PointCloud& cloud, const SurfelOptions& op
     stats.oriented = oriented_variation.size();
     stats.unoriented = count - stats.oriented;
     // Three selections over a million values each, apart: one a thread.
-    std::vector<float> radius_order = radii;
+    LargeVector<float> radius_order = radii;
     parallel_for(3, 1, options.threads, [&](std::size_t first, std::size_t last) {
       for (std::size_t task = first; task < last; ++task) {
         if (task == 0 && !oriented_variation.empty()) {

@@ -75,9 +75,9 @@ struct MortonKnn::Scratch {
   }
 };
 
-MortonKnn::MortonKnn(const std::vector<Eigen::Vector3f>& points, unsigned threads)
-    : points_(points) {
-  const std::size_t n = points.size();
+MortonKnn::MortonKnn(const Eigen::Vector3f* points, std::size_t count, unsigned threads)
+    : points_(points), count_(count) {
+  const std::size_t n = count;
   if (n == 0) return;
   if (n > std::numeric_limits<std::uint32_t>::max()) {
     throw std::invalid_argument("MortonKnn: at most 2^32 - 1 points, got " + std::to_string(n));
@@ -232,7 +232,7 @@ void MortonKnn::select_nearest(std::size_t count, float guess, std::size_t k,
 
 void MortonKnn::search(const std::uint32_t* subset, std::size_t first, std::size_t last,
                        std::size_t k, const Visit& visit) const {
-  const std::size_t n = points_.size();
+  const std::size_t n = count_;
   k = std::min(k, n);
   if (k == 0 || first >= last) return;
   thread_local Scratch scratch;

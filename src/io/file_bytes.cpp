@@ -38,7 +38,8 @@ std::string kind_of(mode_t mode) {
 
 }  // namespace
 
-std::string read_file_bytes(const std::string& path) {
+template <class Bytes>
+Bytes read_file_bytes(const std::string& path) {
   // O_NONBLOCK: opening a FIFO for reading would otherwise wait for a writer.
   const Descriptor file(::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC));
   if (file.get() < 0) {
@@ -58,7 +59,7 @@ std::string read_file_bytes(const std::string& path) {
                      "is " + std::to_string(size) + " bytes, more than the " +
                          std::to_string(kMaxInputFileBytes) + " bytes an input file may have");
   }
-  std::string bytes(static_cast<std::size_t>(size), '\0');
+  Bytes bytes(static_cast<std::size_t>(size), '\0');
   std::size_t done = 0;
   while (done < bytes.size()) {
     const ssize_t got = ::read(file.get(), bytes.data() + done, bytes.size() - done);
@@ -70,5 +71,8 @@ std::string read_file_bytes(const std::string& path) {
   bytes.resize(done);
   return bytes;
 }
+
+template std::string read_file_bytes<std::string>(const std::string& path);
+template LargeString read_file_bytes<LargeString>(const std::string& path);
 
 }  // namespace occlusion

@@ -33,7 +33,10 @@ enum DataType { kAscii = 0, kBinary = 1, kBinaryCompressed = 2 };
 class PcdCloudReader {
  public:
   PcdCloudReader(const std::string& path, const CloudReadOptions& options, CloudReadReport& report)
-      : path_(path), report_(report), shifted_(options.shift), bytes_(read_file_bytes(path)) {}
+      : path_(path),
+        report_(report),
+        shifted_(options.shift),
+        bytes_(read_file_bytes<LargeString>(path)) {}
 
   PointCloud run() {
     read_header();
@@ -598,7 +601,7 @@ class PcdCloudReader {
   const std::string& path_;
   CloudReadReport& report_;
   ShiftedPositions shifted_;
-  std::string bytes_;
+  LargeString bytes_;
   pcl::PCDReader reader_;
   pcl::PCLPointCloud2 blob_;            // its data holds decoded ascii and compressed bodies
   const std::uint8_t* body_ = nullptr;  // the points, point_step bytes each

@@ -314,7 +314,7 @@ class PlyCloudReader : public PlySink {
 
 PointCloud read_ply(const std::string& path, const CloudReadOptions& options,
                     CloudReadReport& report) {
-  const std::string bytes = read_file_bytes(path);
+  const LargeString bytes = read_file_bytes<LargeString>(path);
   return PlyCloudReader(bytes, path, options, report).run();
 }
 

@@ -9,6 +9,7 @@
 
 #include <cstddef>
 #include <new>
+#include <string>
 #include <vector>
 
 namespace occlusion {
@@ -43,5 +44,6 @@ struct LargeBufferAllocator {
 
 template <class T>
 using LargeVector = std::vector<T, LargeBufferAllocator<T>>;
+using LargeString = std::basic_string<char, std::char_traits<char>, LargeBufferAllocator<char>>;
 
 }  // namespace occlusion

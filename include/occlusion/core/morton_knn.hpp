@@ -28,6 +28,8 @@
 #include <functional>
 #include <vector>
 
+#include "occlusion/core/large_buffer.hpp"
+
 namespace occlusion {
 
 // The squared distance as FLANN's L2_Simple<float> sums it, term by term in
@@ -48,9 +50,12 @@ class MortonKnn {
   using Visit = std::function<void(std::size_t n, std::size_t query, const std::uint32_t* ids,
                                    std::size_t got)>;
 
-  // `points` in Morton order, borrowed: they must outlive the search and stay
-  // unchanged. At most 2^32 - 1 points, all finite.
-  explicit MortonKnn(const std::vector<Eigen::Vector3f>& points, unsigned threads = 0);
+  // points[0..count) in Morton order, borrowed: they must outlive the search
+  // and stay unchanged. At most 2^32 - 1 points, all finite.
+  MortonKnn(const Eigen::Vector3f* points, std::size_t count, unsigned threads = 0);
+  template <class Allocator>
+  explicit MortonKnn(const std::vector<Eigen::Vector3f, Allocator>& points, unsigned threads = 0)
+      : MortonKnn(points.data(), points.size(), threads) {}
 
   // For n in [first, last): the query is subset[n] (null: n itself), the
   // subset increasing; calls visit(n, query, ids, got) with its min(k, size)
@@ -59,7 +64,7 @@ class MortonKnn {
   void search(const std::uint32_t* subset, std::size_t first, std::size_t last, std::size_t k,
               const Visit& visit) const;
 
-  std::size_t size() const { return points_.size(); }
+  std::size_t size() const { return count_; }
 
  private:
   struct Box {
@@ -68,16 +73,17 @@ class MortonKnn {
   struct Scratch;
 
   std::size_t begin_of(int depth, std::size_t j) const {
-    return static_cast<std::size_t>((static_cast<std::uint64_t>(points_.size()) * j) >> depth);
+    return static_cast<std::size_t>((static_cast<std::uint64_t>(count_) * j) >> depth);
   }
   void gather(const Box& around, float radius, Scratch& scratch) const;
   void select_nearest(std::size_t count, float guess, std::size_t k, Scratch& scratch) const;
   void search_alone(const Eigen::Vector3f& query, std::size_t k, float bound,
                     Scratch& scratch) const;
 
-  const std::vector<Eigen::Vector3f>& points_;
+  const Eigen::Vector3f* points_;
+  std::size_t count_;
   int depth_ = 0;           // of the leaves: 2^depth_ of them
-  std::vector<Box> boxes_;  // node i at depth d, rank j: i = 2^d - 1 + j
+  LargeVector<Box> boxes_;  // node i at depth d, rank j: i = 2^d - 1 + j
   float margin_ = 0.0f;     // float rounding of distances at the cloud's coordinates
 };
 

@@ -7,6 +7,8 @@
 #include <cstdint>
 #include <string>
 
+#include "occlusion/core/large_buffer.hpp"
+
 namespace occlusion {
 
 // The largest input file read into memory: 16 GiB. Bigger is no scan we know
@@ -17,6 +19,9 @@ inline constexpr std::uint64_t kMaxInputFileBytes = std::uint64_t{16} << 30;
 // anything but a regular file (a FIFO would block, /dev/zero never ends), or
 // larger than kMaxInputFileBytes. Opened without blocking, so that a FIFO is
 // refused, not waited on.
-std::string read_file_bytes(const std::string& path);
+// Bytes is std::string or LargeString (core/large_buffer.hpp: a big scan's
+// bytes in huge pages, first touched in hundreds of faults, not thousands).
+template <class Bytes = std::string>
+Bytes read_file_bytes(const std::string& path);
 
 }  // namespace occlusion
