@@ -2,12 +2,15 @@
 // Exact k nearest neighbours of points already in Morton order
 // (morton_order.hpp), without a copy of them: a complete binary tree over the
 // array's index ranges (each node a contiguous run of the Morton curve, so a
-// box of nearby points), of which only the boxes are stored (about 3 bytes a
-// point).
+// box of nearby points), of which only the boxes are stored (about 1.5 bytes
+// a point: leaves of 16 to 31 points).
 //
 // Queries come in index order, so consecutive ones share a leaf: the points
 // within a radius r of the leaf's box are gathered once, and each query of
-// the leaf takes its k nearest among them. Its answer is certain when its
+// the leaf takes its k nearest among them, first among those within 1.2 times
+// the k-th distance of the query before when at least k are (the same density
+// a step away), else within the farthest of that query's k neighbours from
+// this one (k points, so never fewer). Its answer is certain when its
 // k-th distance is below r plus its own distance to the box's faces (a point
 // left out is farther than that); r follows the k-th distances of the leaf
 // before. A query that is not certain (too few points within reach: a stray
