@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <cstdlib>
 
 #if defined(__linux__)
@@ -23,10 +24,7 @@ void* allocate(std::size_t bytes, std::size_t alignment) {
   if (bytes >= kLargeBuffer) {
     const std::size_t rounded = (bytes + kHugePage - 1) / kHugePage * kHugePage;
     p = std::aligned_alloc(kHugePage, rounded);
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-    // Only advice: where huge pages are off or unavailable, nothing changes.
-    if (p != nullptr) madvise(p, rounded, MADV_HUGEPAGE);
-#endif
+    if (p != nullptr) advise_huge_pages(p, rounded);
   } else {
     // aligned_alloc wants a size that is a multiple of the alignment.
     const std::size_t align = std::max(alignment, alignof(std::max_align_t));
@@ -42,3 +40,22 @@ void deallocate(void* p) noexcept {
 }
 
 }  // namespace occlusion::large_buffer_detail
+
+namespace occlusion {
+
+void advise_huge_pages(void* p, std::size_t bytes) noexcept {
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  const auto begin = reinterpret_cast<std::uintptr_t>(p);
+  const std::uintptr_t first = (begin + large_buffer_detail::kHugePage - 1) /
+                               large_buffer_detail::kHugePage * large_buffer_detail::kHugePage;
+  const std::uintptr_t last =
+      (begin + bytes) / large_buffer_detail::kHugePage * large_buffer_detail::kHugePage;
+  // Where huge pages are off or unavailable, nothing changes.
+  if (last > first) madvise(reinterpret_cast<void*>(first), last - first, MADV_HUGEPAGE);
+#else
+  (void)p;
+  (void)bytes;
+#endif
+}
+
+}  // namespace occlusion

@@ -5,6 +5,8 @@
 #include <limits>
 #include <stdexcept>
 
+#include "occlusion/core/large_buffer.hpp"
+
 namespace occlusion {
 
 namespace {
@@ -50,6 +52,11 @@ Eigen::Vector3d PointCloud::original_position(std::size_t i) const {
   return Eigen::Vector3d(shortest_decimal(p.x()), shortest_decimal(p.y()),
                          shortest_decimal(p.z())) +
          shift;
+}
+
+void PointCloud::reserve_positions(std::size_t count) {
+  positions.reserve(count);
+  advise_huge_pages(positions.data(), positions.capacity() * sizeof(Eigen::Vector3f));
 }
 
 void PointCloud::validate() const {

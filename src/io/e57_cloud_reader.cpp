@@ -208,7 +208,7 @@ class E57CloudReader {
     }
 
     const auto count = static_cast<std::size_t>(scan.record_count);
-    cloud_.positions.reserve(cloud_.positions.size() + count);
+    cloud_.reserve_positions(cloud_.positions.size() + count);
     cloud_.station_ids.reserve(cloud_.station_ids.size() + count);
     std::int64_t max_row = -1, max_column = -1;
     const auto read = [&](int f, std::uint64_t record) {

@@ -53,7 +53,7 @@ PointCloud read_las(const std::string& path, const CloudReadOptions& options,
 
   PointCloud cloud;
   ShiftedPositions shifted(options.shift);
-  cloud.positions.reserve(count);
+  cloud.reserve_positions(count);
   cloud.intensities.reserve(count);
   cloud.labels.reserve(count);
   if (depth != ColourDepth::kNone) cloud.colours.reserve(count);

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "cloud_formats.hpp"
+#include "occlusion/core/large_buffer.hpp"
 #include "occlusion/io/file_bytes.hpp"
 #include "occlusion/io/input_error.hpp"
 #include "pcd_limits.hpp"
@@ -226,6 +227,11 @@ class PcdCloudReader {
 
   void read_header() {
     check_declared_size();
+    // PCL's header parse sizes and zeroes the blob's data for the points it
+    // reads; room in huge pages first spares a big cloud thousands of page
+    // faults (a binary body is then read in place, so the blob is not used).
+    blob_.data.reserve(declared_bytes_);
+    advise_huge_pages(blob_.data.data(), blob_.data.capacity());
     Eigen::Vector4f origin;
     Eigen::Quaternionf orientation;
     int data_type = 0;
@@ -535,7 +541,7 @@ class PcdCloudReader {
     cloud.class_names = class_names_;
     cloud.sensor = sensor_;
     const bool colours = packed_colour_ != nullptr || channels_[0] != nullptr;
-    cloud.positions.reserve(points_);
+    cloud.reserve_positions(points_);
     if (colours) cloud.colours.reserve(points_);
     if (label_ != nullptr) cloud.labels.reserve(points_);
     if (instance_ != nullptr) cloud.instances.reserve(points_);

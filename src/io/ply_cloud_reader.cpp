@@ -184,7 +184,7 @@ class PlyCloudReader : public PlySink {
     // Capped by the file size, so a header that claims billions of vertices
     // fails as truncated instead of exhausting memory first.
     const std::size_t reserve = std::min(vertex.count, bytes_.size() / 4);
-    cloud_.positions.reserve(reserve);
+    cloud_.reserve_positions(reserve);
     if (has_colours_ && !float_colours_) cloud_.colours.reserve(reserve);
     if (float_colours_) float_rgb_.reserve(3 * reserve);
     if (has_labels_) cloud_.labels.reserve(reserve);

@@ -45,7 +45,7 @@ class TextCloudParser {
     // A UTF-8 byte order mark, which some Windows editors add, is not data.
     if (text_.substr(0, 3) == "\xEF\xBB\xBF") text_.remove_prefix(3);
     const auto line_count = static_cast<std::size_t>(std::count(text_.begin(), text_.end(), '\n'));
-    cloud_.positions.reserve(line_count + 1);
+    cloud_.reserve_positions(line_count + 1);
     if (columns_fixed_ && columns_ >= 6) cloud_.colours.reserve(line_count + 1);
     Lines lines(text_);
     std::string_view line;

@@ -19,6 +19,11 @@ void* allocate(std::size_t bytes, std::size_t alignment);
 void deallocate(void* p) noexcept;
 }  // namespace large_buffer_detail
 
+// Offers the whole huge pages inside [p, p + bytes) to the kernel as such:
+// for big buffers that are not LargeVectors (a cloud's positions, a
+// std::vector every layer passes around). Only advice; nothing below 2 MiB.
+void advise_huge_pages(void* p, std::size_t bytes) noexcept;
+
 template <class T>
 struct LargeBufferAllocator {
   using value_type = T;
