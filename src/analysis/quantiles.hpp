@@ -17,6 +17,16 @@ inline std::size_t rank_of(double q, std::size_t count) {
   return static_cast<std::size_t>(q * static_cast<double>(count - 1) + 0.5);
 }
 
+// The quantile q of `values` (reordered); zero when there are none.
+template <class Values>
+typename Values::value_type at(Values& values, double q) {
+  if (values.empty()) return {};
+  const std::size_t rank = rank_of(q, values.size());
+  std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(rank),
+                   values.end());
+  return values[rank];
+}
+
 // The values of `values` (reordered; not empty) at `ranks` (each below its
 // size), in the order given.
 template <class Values>

@@ -425,7 +425,7 @@ SurfelEstimate estimate_surfels(const PointCloud& cloud, const SurfelOptions& op
                         if (ids[j] != s) around.push_back(radii[ids[j]]);
                       }
                       if (around.empty()) return;
-                      const float typical = quantiles::in_place(around, {0.5}).front();
+                      const float typical = quantiles::at(around, 0.5);
                       if (radii[s] > kStrayRatio * typical) stray_radius[n] = typical;
                     });
       for (std::size_t n = 0; n < candidates.size(); ++n) {
@@ -457,11 +457,11 @@ SurfelEstimate estimate_surfels(const PointCloud& cloud, const SurfelOptions& op
     LargeVector<float> radius_order = radii;
     parallel_for(3, 1, options.threads, [&](std::size_t first, std::size_t last) {
       for (std::size_t task = first; task < last; ++task) {
-        if (task == 0 && !oriented_variation.empty()) {
-          stats.surface_variation_median = quantiles::in_place(oriented_variation, {0.5}).front();
-        } else if (task == 1 && !oriented_thickness.empty()) {
-          stats.thickness_median = quantiles::in_place(oriented_thickness, {0.5}).front();
-        } else if (task == 2) {
+        if (task == 0) {
+          stats.surface_variation_median = quantiles::at(oriented_variation, 0.5);
+        } else if (task == 1) {
+          stats.thickness_median = quantiles::at(oriented_thickness, 0.5);
+        } else {
           const std::vector<float> q = quantiles::in_place(radius_order, {0.1, 0.5, 0.9});
           stats.radius_quantile_10 = q[0];
           stats.radius_median = q[1];

@@ -39,6 +39,10 @@ TEST(Quantiles, ARankIsTheRoundedShareOfTheLastIndex) {
   std::vector<double> values = {10, 9, 8, 7, 6, 5, 4, 3, 2, 1, 0};
   const std::vector<double> got = quantiles::in_place(values, {0.5, 0.1, 0.9, 0.25});
   EXPECT_EQ(got, (std::vector<double>{5, 1, 9, 3}));
+  std::vector<double> again = {10, 9, 8, 7, 6, 5, 4, 3, 2, 1, 0};
+  EXPECT_EQ(quantiles::at(again, 0.25), 3.0);
+  std::vector<double> none;
+  EXPECT_EQ(quantiles::at(none, 0.5), 0.0);
 }
 
 }  // namespace
