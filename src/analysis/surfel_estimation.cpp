@@ -69,6 +69,8 @@ void check_options(const PointCloud& cloud, const SurfelOptions& options) {
     throw std::invalid_argument("surfels: max_surface_variation must lie in [0, 1/3]");
   }
   if (cloud.size() < 2) throw std::invalid_argument("surfels: the cloud needs at least two points");
+  // The grid's points are looked up by pixel: each must be in it, once.
+  if (cloud.has_pixels()) cloud.validate();
   for (const Eigen::Vector3f& p : cloud.positions) {
     if (!(p.cwiseAbs().maxCoeff() <= pcl_frame::kMaxLocalCoordinate)) {
       throw std::invalid_argument(
@@ -142,6 +144,65 @@ class Distinct {
   std::vector<double> distance_;
   std::vector<double> distances_;  // offer_all's, of every neighbour
   bool duplicate_ = false;
+};
+
+// An organised frame's grid (PointCloud::pixels): a depth camera rounds its
+// depths to steps about as deep as its pixels are wide, so a point's nearest
+// neighbours in space lie mostly on its own step, and a plane through them
+// leans towards the camera. The pixels around its own are the surface's
+// neighbours whatever the steps: the plane is fitted to those.
+class PixelGrid {
+ public:
+  // Pixels on each side of a point's own that its window reaches: 5 x 5
+  // pixels kept 99.3 % of the real Kinect frame from its sensor (3 x 3: 96.6 %,
+  // 7 x 7: 99.3 %; its nearest 16 in space: 98.0 %).
+  static constexpr int kReach = 2;
+  // The window's points farther than this many times the distance to the
+  // point's farthest nearest neighbour are another surface (2: 99.2 %, 3 and
+  // 6: 99.3 %; no limit: 99.5 %, but rays between the pixels then leaked
+  // through 0.3 % of the frame, at its depth edges).
+  static constexpr double kGate = 3.0;
+
+  // `order[s]` is the cloud index of Morton index s.
+  PixelGrid(const PointCloud& cloud, const std::vector<std::uint32_t>& order)
+      : cloud_(cloud), order_(order) {
+    if (!cloud.has_pixels()) return;
+    point_.assign(cloud.sensor.width * cloud.sensor.height, kNone);
+    for (std::size_t s = 0; s < order.size(); ++s) {
+      point_[cloud.pixels[order[s]]] = static_cast<std::uint32_t>(s);
+    }
+  }
+
+  bool empty() const { return point_.empty(); }
+
+  // The points (Morton indices) of the window around point s's pixel, but s,
+  // nearest to it first.
+  void window(std::size_t s, const Eigen::Vector3f* sorted, std::vector<std::uint32_t>& ids) const {
+    thread_local std::vector<std::pair<float, std::uint32_t>> found;
+    found.clear();
+    const auto width = static_cast<std::ptrdiff_t>(cloud_.sensor.width);
+    const auto height = static_cast<std::ptrdiff_t>(cloud_.sensor.height);
+    const std::uint32_t pixel = cloud_.pixels[order_[s]];
+    const std::ptrdiff_t row = pixel / width, column = pixel % width;
+    for (std::ptrdiff_t r = std::max<std::ptrdiff_t>(0, row - kReach);
+         r <= std::min(height - 1, row + kReach); ++r) {
+      for (std::ptrdiff_t c = std::max<std::ptrdiff_t>(0, column - kReach);
+           c <= std::min(width - 1, column + kReach); ++c) {
+        const std::uint32_t t = point_[static_cast<std::size_t>(r * width + c)];
+        if (t == kNone || t == s) continue;
+        found.emplace_back((sorted[t] - sorted[s]).squaredNorm(), t);
+      }
+    }
+    std::sort(found.begin(), found.end());
+    ids.clear();
+    for (const auto& entry : found) ids.push_back(entry.second);
+  }
+
+ private:
+  static constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+  const PointCloud& cloud_;
+  const std::vector<std::uint32_t>& order_;
+  std::vector<std::uint32_t> point_;  // per pixel, its point's Morton index, or kNone
 };
 
 // A plane fitted to the point and its `count` nearest distinct neighbours.
@@ -265,8 +326,11 @@ double tangent_radius(const Eigen::Vector3f& own, const Distinct& distinct, cons
   return radius;
 }
 
+// `distinct` are the point's nearest, which its density is measured from;
+// its plane is fitted to `plane_points` (the same, or its pixel window in an
+// organised frame).
 Neighbourhood measure(const Eigen::Vector3f& own, const Distinct& distinct,
-                      const SurfelOptions& options) {
+                      const Distinct& plane_points, const SurfelOptions& options) {
   Neighbourhood hood;
   hood.duplicate = distinct.duplicate();
   const std::size_t m = distinct.count();
@@ -275,14 +339,15 @@ Neighbourhood measure(const Eigen::Vector3f& own, const Distinct& distinct,
   hood.radius = static_cast<float>(options.fixed_radius > 0.0
                                        ? options.fixed_radius
                                        : coverage_radius(farthest, m, options.coverage));
-  if (m < kMinNeighbours) return hood;
+  const std::size_t fitted = plane_points.count();
+  if (m < kMinNeighbours || fitted < kMinNeighbours) return hood;
   // Near an edge the neighbours lie on two surfaces and the plane through
   // all of them is tilted between both; the nearest half lie mostly on the
   // point's own surface, so where they fit a plane better, theirs is taken.
-  PlaneFit fit = fit_plane(own, distinct, m);
-  const std::size_t half = std::max(kMinNeighbours, (m + 1) / 2);
-  if (fit.variation > kFlatVariation && half < m) {
-    const PlaneFit nearest = fit_plane(own, distinct, half);
+  PlaneFit fit = fit_plane(own, plane_points, fitted);
+  const std::size_t half = std::max(kMinNeighbours, (fitted + 1) / 2);
+  if (fit.variation > kFlatVariation && half < fitted) {
+    const PlaneFit nearest = fit_plane(own, plane_points, half);
     if (nearest.spread && nearest.variation < fit.variation) fit = nearest;
   }
   hood.surface_variation = static_cast<float>(fit.variation);
@@ -293,8 +358,8 @@ Neighbourhood measure(const Eigen::Vector3f& own, const Distinct& distinct,
     // quantised depths put most neighbours on the point's own step): half
     // the RMS distance bounds it from below, and stays below half the gap
     // between a thin board's two sides.
-    hood.thickness =
-        std::max(surface_noise(own, distinct, fit.normal), static_cast<float>(kRmsShare * fit.rms));
+    hood.thickness = std::max(surface_noise(own, plane_points, fit.normal),
+                              static_cast<float>(kRmsShare * fit.rms));
     if (options.fixed_radius <= 0.0) {
       hood.radius =
           static_cast<float>(tangent_radius(own, distinct, fit, farthest, options.coverage));
@@ -364,13 +429,33 @@ SurfelEstimate estimate_surfels(const PointCloud& cloud, const SurfelOptions& op
       }
     };
 
+    const PixelGrid grid(cloud, order);
     const auto model_point = [&](std::size_t, std::size_t s, const std::uint32_t* ids,
                                  std::size_t got) {
-      thread_local Distinct distinct;
+      thread_local Distinct distinct, window;
+      thread_local std::vector<std::uint32_t> window_ids;
       const Eigen::Vector3f& own = sorted[s];
-      distinct.reset(own, same_position_distance(own));
+      const double same = same_position_distance(own);
+      distinct.reset(own, same);
       distinct.offer_all(sorted.data(), ids, got, s);
-      const Neighbourhood hood = measure(own, distinct, options);
+      const Distinct* plane_points = &distinct;
+      if (!grid.empty()) {
+        grid.window(s, sorted.data(), window_ids);
+        window.reset(own, same);
+        // Across a depth edge the window holds the surface behind (or in
+        // front): only its points within kGate times the farthest nearest
+        // neighbour's distance are taken for the point's surface.
+        std::size_t kept = window_ids.size();
+        if (distinct.count() > 0) {
+          const double gate = PixelGrid::kGate * distinct.distance(distinct.count() - 1);
+          while (kept > 0 && (sorted[window_ids[kept - 1]] - own).cast<double>().norm() > gate) {
+            --kept;
+          }
+        }
+        window.offer_all(sorted.data(), window_ids.data(), kept, s);
+        if (window.count() >= kMinNeighbours) plane_points = &window;
+      }
+      const Neighbourhood hood = measure(own, distinct, *plane_points, options);
       normals[s] = hood.normal;
       radii[s] = hood.normal.isZero() ? kSphereShare * hood.radius : hood.radius;
       variation[s] = hood.surface_variation;

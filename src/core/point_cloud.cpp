@@ -25,6 +25,30 @@ void keep_where(const std::vector<T>& in, const std::vector<bool>& keep, std::ve
     if (keep[i]) out.push_back(in[i]);
   }
 }
+// A pixel per point, each in the organised sensor's grid and none twice
+// (the surfel estimate looks points up by their pixel).
+void check_pixels(const PointCloud& cloud) {
+  if (!cloud.has_pixels()) return;
+  check_size(cloud.pixels.size(), cloud.size(), "pixels");
+  if (!cloud.sensor.organised()) {
+    throw std::invalid_argument(
+        "point cloud: pixels are given but the cloud is not an organised frame");
+  }
+  const std::size_t grid = cloud.sensor.width * cloud.sensor.height;
+  std::vector<bool> taken(grid, false);
+  for (std::size_t i = 0; i < cloud.pixels.size(); ++i) {
+    const std::uint32_t pixel = cloud.pixels[i];
+    if (pixel >= grid || taken[pixel]) {
+      throw std::invalid_argument("point cloud: point " + std::to_string(i) + " has pixel " +
+                                  std::to_string(pixel) +
+                                  (pixel >= grid ? ", outside the " : ", taken twice in the ") +
+                                  std::to_string(cloud.sensor.width) + " x " +
+                                  std::to_string(cloud.sensor.height) + " grid");
+    }
+    taken[pixel] = true;
+  }
+}
+
 // The double nearest the shortest decimal that reads back as `value`.
 double shortest_decimal(float value) {
   char text[32];
@@ -77,6 +101,7 @@ void PointCloud::validate() const {
                                   std::to_string(stations.size()) + " stations");
     }
   }
+  check_pixels(*this);
   if (!class_names.empty()) {
     for (std::size_t i = 0; i < labels.size(); ++i) {
       if (labels[i] >= static_cast<std::int32_t>(class_names.size())) {
@@ -103,6 +128,7 @@ PointCloud PointCloud::subset(const std::vector<bool>& keep) const {
   keep_where(instances, keep, out.instances);
   keep_where(intensities, keep, out.intensities);
   keep_where(station_ids, keep, out.station_ids);
+  keep_where(pixels, keep, out.pixels);
   return out;
 }
 

@@ -44,6 +44,7 @@ PointCloud read_depth_frame(const std::string& path, const CloudReadOptions& opt
       const Eigen::Vector3d world = rotation * camera + frame.translation;
       const double xyz[3] = {world.x(), world.y(), world.z()};
       cloud.positions.push_back(shifted.local(xyz));
+      cloud.pixels.push_back(static_cast<std::uint32_t>(pixel));
       if (frame.colour_path) {
         const std::uint8_t* rgb = colour.rgb.data() + 3 * pixel;
         cloud.colours.push_back({rgb[0], rgb[1], rgb[2]});
@@ -62,6 +63,7 @@ PointCloud read_depth_frame(const std::string& path, const CloudReadOptions& opt
   sensor.width = depth.width;
   sensor.height = depth.height;
   cloud.sensor = sensor;
+  if (!sensor.organised()) cloud.pixels.clear();  // one row: no grid around a pixel
   cloud.stations.push_back({frame.name, sensor});
   cloud.station_ids.assign(cloud.size(), 0);
   return cloud;

@@ -547,6 +547,10 @@ class PcdCloudReader {
     if (instance_ != nullptr) cloud.instances.reserve(points_);
     if (intensity_ != nullptr) cloud.intensities.reserve(points_);
     if (station_ != nullptr) cloud.station_ids.reserve(points_);
+    // An organised PCD's records are its pixels, row by row.
+    const bool organised =
+        sensor_.organised() && points_ <= std::numeric_limits<std::uint32_t>::max();
+    if (organised) cloud.pixels.reserve(points_);
     cloud.stations = stations_;
     std::vector<ScalarField> extra;
     for (const Field* field : extra_) {
@@ -566,6 +570,7 @@ class PcdCloudReader {
         continue;
       }
       cloud.positions.push_back(position);
+      if (organised) cloud.pixels.push_back(static_cast<std::uint32_t>(i));
       if (packed_colour_ != nullptr) {
         std::uint32_t bits = 0;
         std::memcpy(&bits, record + packed_colour_->offset, sizeof bits);

@@ -20,7 +20,9 @@ std::size_t LoadedScene::bytes() const {
   for (const auto& frame : frames) total += frame.message.size();
   if (cloud) {
     total += cloud->positions.size() * sizeof(Eigen::Vector3f) + cloud->colours.size() * 3 +
-             (cloud->labels.size() + cloud->instances.size() + cloud->station_ids.size()) * 4 +
+             (cloud->labels.size() + cloud->instances.size() + cloud->station_ids.size() +
+              cloud->pixels.size()) *
+                 4 +
              cloud->intensities.size() * sizeof(float);
   }
   if (mesh) {

@@ -103,6 +103,7 @@ TEST(RealScanJobs, OcclusionOfAFrameIsTakenOverItsFieldOfView) {
   // The same points, unorganised and without a pose: every ray counts.
   PointCloud unorganised = frame;
   unorganised.sensor = SensorFrame{};
+  unorganised.pixels.clear();
   const CloudOcclusionReport all = run_cloud_occlusion_on(unorganised, at_sensor(), {}, request);
   EXPECT_FALSE(all.field_of_view);
   EXPECT_EQ(all.result.outside_view_rays, 0u);

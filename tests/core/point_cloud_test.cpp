@@ -45,6 +45,36 @@ TEST(PointCloudStations, ASubsetKeepsTheStationsAndEachPointsStation) {
   EXPECT_NO_THROW(kept.validate());
 }
 
+// A 3 x 2 frame whose pixels (0, 0), (2, 0) and (1, 1) measured a depth.
+PointCloud organised_frame() {
+  PointCloud cloud;
+  cloud.positions = {{0, 0, 1}, {2, 0, 1}, {1, 1, 1}};
+  cloud.sensor.width = 3;
+  cloud.sensor.height = 2;
+  cloud.pixels = {0, 2, 4};
+  return cloud;
+}
+
+TEST(PointCloudPixels, EachPointHasOnePixelOfTheGrid) {
+  PointCloud cloud = organised_frame();
+  EXPECT_NO_THROW(cloud.validate());
+  cloud.pixels[2] = 6;  // past the last pixel, 5
+  EXPECT_THROW(cloud.validate(), std::invalid_argument);
+  cloud.pixels[2] = 2;  // point 1's
+  EXPECT_THROW(cloud.validate(), std::invalid_argument);
+  cloud.pixels.pop_back();
+  EXPECT_THROW(cloud.validate(), std::invalid_argument);
+  cloud = organised_frame();
+  cloud.sensor.height = 1;  // one row is no organised frame
+  EXPECT_THROW(cloud.validate(), std::invalid_argument);
+}
+
+TEST(PointCloudPixels, ASubsetKeepsEachPointsPixel) {
+  const PointCloud kept = organised_frame().subset({true, false, true});
+  EXPECT_EQ(kept.pixels, (std::vector<std::uint32_t>{0, 4}));
+  EXPECT_NO_THROW(kept.validate());
+}
+
 TEST(PointCloudStations, AScanStationIsTheFilesOrASingleViewSensor) {
   EXPECT_EQ(scan_stations(two_station_cloud()).size(), 2u);
   PointCloud frame;

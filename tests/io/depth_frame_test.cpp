@@ -94,6 +94,12 @@ TEST_F(DepthFrame, BackProjectsEveryMeasuredPixelThroughTheIntrinsics) {
   ASSERT_EQ(cloud.stations.size(), 1u);
   EXPECT_EQ(cloud.stations[0].name, "frame_a");
   EXPECT_EQ(cloud.station_ids, std::vector<std::int32_t>(cloud.size(), 0));
+  // Each point's pixel, row by row, pixel (0, 0) left out.
+  ASSERT_EQ(cloud.pixels.size(), cloud.size());
+  EXPECT_EQ(cloud.pixels[index_of(0, 5)], 5u * kWidth);
+  EXPECT_EQ(cloud.pixels[index_of(7, 0)], 7u);
+  EXPECT_EQ(cloud.pixels.front(), 1u);
+  EXPECT_EQ(cloud.pixels.back(), kWidth * kHeight - 1);
 }
 
 TEST_F(DepthFrame, ColoursComeFromTheSamePixel) {

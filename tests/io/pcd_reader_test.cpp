@@ -75,6 +75,14 @@ TEST(PcdReader, AsciiNanPointsAreDroppedAndCounted) {
   ASSERT_EQ(cloud.size(), 2u);
   EXPECT_EQ(cloud.positions[1], Eigen::Vector3f(4, 5, 6));
   EXPECT_EQ(report.dropped_nan, 2u);
+  // The kept points' pixels: (0, 0) and (0, 1), row by row.
+  EXPECT_EQ(cloud.pixels, (std::vector<std::uint32_t>{0, 2}));
+}
+
+TEST(PcdReader, UnorganisedCloudsHaveNoPixels) {
+  const PointCloud cloud = read_cloud(kRoomScan);
+  EXPECT_FALSE(cloud.sensor.organised());
+  EXPECT_FALSE(cloud.has_pixels());
 }
 
 TEST(PcdReader, AllNanIsNoPointsNotAnEmptyCloud) {

@@ -59,6 +59,7 @@ PointCloud kinect_like_frame(std::size_t width, std::size_t height, double horiz
       // d.z() is 1, so t is the depth; a sensor reports depth in steps.
       if (depth_step > 0) t = std::round(t / depth_step) * depth_step;
       cloud.positions.push_back((t * d).cast<float>());
+      cloud.pixels.push_back(static_cast<std::uint32_t>(v * width + u));
     }
   }
   return cloud;

@@ -13,6 +13,7 @@ namespace occlusion::testing {
 // horizontal field of view (degrees) holds the first surface along its ray.
 // Every pixel sees a surface, so a scan from the origin must keep every point.
 // depth_step > 0 rounds each depth (z) to a multiple of it, as a sensor does.
+// Each point's pixel is in PointCloud::pixels, as the readers give it.
 PointCloud kinect_like_frame(std::size_t width, std::size_t height, double horizontal_fov_deg,
                              double depth_step = 0.0);
 

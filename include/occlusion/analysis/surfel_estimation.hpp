@@ -29,7 +29,10 @@
 // scan line of a sparse grid, have no plane). Otherwise the point is a sphere
 // of half its disc's radius: it stands at an edge, a corner, a leg or in
 // clutter, where its oriented neighbours' discs already reach, and a sphere
-// as wide as a disc would hide what passes beside the edge.
+// as wide as a disc would hide what passes beside the edge. In an organised
+// frame (PointCloud::pixels) the plane is fitted to the points of the pixels
+// around the point's own instead (a depth camera's steps put its nearest
+// points in space on its own step); the density still comes from the nearest.
 //
 // Stray points. A point in the air (dust, a passer-by, a mixed pixel) finds
 // its neighbours far away on some surface, and the rule would give it a
@@ -96,9 +99,10 @@ struct SurfelEstimate {
 };
 
 // Throws std::invalid_argument for a cloud with fewer than two distinct
-// positions, options out of range (neighbours < kMinNeighbours, coverage not
-// in (0, 1), a negative or non-finite fixed radius) or a point more than 1e15
-// from the cloud's centre; Cancelled on cancel.
+// positions, pixels that do not fit its grid (PointCloud::validate), options
+// out of range (neighbours < kMinNeighbours, coverage not in (0, 1), a
+// negative or non-finite fixed radius) or a point more than 1e15 from the
+// cloud's centre; Cancelled on cancel.
 SurfelEstimate estimate_surfels(const PointCloud& cloud, const SurfelOptions& options,
                                 const Progress& progress = {});
 

@@ -16,7 +16,8 @@ namespace occlusion {
 // origin, then the rotation from the sensor frame, +z forward, +y down, to the
 // cloud's frame) and, for an organised frame, its pixel grid (PCD WIDTH x
 // HEIGHT with HEIGHT > 1). The grid says how the file was laid out; positions
-// hold only the valid pixels, so it is no index into them.
+// hold only the valid pixels, so it is no index into them (PointCloud::pixels
+// is).
 struct SensorFrame {
   Eigen::Vector3d origin = Eigen::Vector3d::Zero();
   Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();
@@ -76,6 +77,11 @@ struct PointCloud {
   // the station that measured it (empty when the file does not say).
   std::vector<Station> stations;
   std::vector<std::int32_t> station_ids;
+  // Per point of an organised frame, its pixel in sensor's grid (row *
+  // sensor.width + column), so that the grid's neighbours are known; empty
+  // when the file has no grid (or a face dropped it: the points are then
+  // measured as any cloud's).
+  std::vector<std::uint32_t> pixels;
 
   std::size_t size() const { return positions.size(); }
   bool has_colours() const { return !colours.empty(); }
@@ -83,6 +89,7 @@ struct PointCloud {
   bool has_instances() const { return !instances.empty(); }
   bool has_intensities() const { return !intensities.empty(); }
   bool has_station_ids() const { return !station_ids.empty(); }
+  bool has_pixels() const { return !pixels.empty(); }
   bool shifted() const { return shift != Eigen::Vector3d::Zero(); }
 
   // A point given in the file's frame (a viewpoint, an opening's corner) in
@@ -95,8 +102,9 @@ struct PointCloud {
   Eigen::Vector3d original_position(std::size_t i) const;
 
   // Throws std::invalid_argument if an attribute's size differs from the point
-  // count, a position is not finite, a label has no name while names exist, or
-  // a station id names no station.
+  // count, a position is not finite, a label has no name while names exist, a
+  // station id names no station, or pixels are given for a cloud that is not
+  // organised, lie outside its grid or name one pixel twice.
   void validate() const;
   // Room for `count` positions, offered huge pages where that is big (a
   // reader's first touch of a 12 MB array otherwise takes 3,000 page faults).
