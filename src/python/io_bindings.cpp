@@ -40,6 +40,8 @@ struct CloudArrays {
   py::object intensities;         // float32 (N,) or None
   py::object station_ids;         // int32 (N,) or None: index into stations
   py::list stations;              // stations_to_python
+  py::object sensor;              // sensor_to_python: a single-view frame's camera, or None
+  py::object pixels;              // uint32 (N,) or None: each point's pixel in the sensor's grid
   std::vector<std::string> class_names;
   py::dict fields;  // other per-point properties: name -> float32 or int32 (N,)
   std::size_t dropped_nan = 0;
@@ -81,6 +83,9 @@ CloudArrays read_cloud_arrays(const std::string& path, bool skip_bad_lines) {
   out.station_ids =
       optional_array(to_numpy<std::int32_t>(std::move(cloud.station_ids)), has_station_ids);
   out.stations = stations_to_python(cloud.stations);
+  out.sensor = sensor_to_python(cloud.sensor);
+  const bool has_pixels = cloud.has_pixels();
+  out.pixels = optional_array(to_numpy<std::uint32_t>(std::move(cloud.pixels)), has_pixels);
   out.class_names = std::move(cloud.class_names);
   for (ScalarField& field : report.extra_fields) {
     if (field.integer) {
@@ -213,6 +218,13 @@ void bind_io(py::module_& m) {
                     "The scanner stations the file records: [{'name', 'origin' (x, y, z) "
                     "relative to shift, as positions, 'orientation' (w, x, y, z), 'width', "
                     "'height' (the scan's grid, 0 = none)}]; the jobs' default viewpoints")
+      .def_readonly("sensor", &CloudArrays::sensor,
+                    "A single-view frame's camera (an organised PCD, a PCD VIEWPOINT, a depth "
+                    "frame): {'origin', 'orientation', 'width', 'height'} as a station's, "
+                    "+z forward and +y down; else None")
+      .def_readonly("pixels", &CloudArrays::pixels,
+                    "uint32 (N,) each point's pixel (row * width + column) in an organised "
+                    "sensor's grid, which the disc model fits planes on; else None")
       .def_readonly("class_names", &CloudArrays::class_names,
                     "class_names[label] when the file names its classes (S3DIS), else []")
       .def_readonly("fields", &CloudArrays::fields,

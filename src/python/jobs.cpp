@@ -104,6 +104,13 @@ PointCloud cloud_from_source(const py::handle& source, const py::handle& labels,
       cloud.intensities = float32_from_array(source.attr("intensities"), "intensities");
     }
   }
+  // A single-view frame's camera and its pixel grid.
+  if (is_cloud && py::hasattr(source, "sensor")) {
+    cloud.sensor = sensor_from_python(source.attr("sensor"), "sensor");
+  }
+  if (is_cloud && py::hasattr(source, "pixels") && !source.attr("pixels").is_none()) {
+    cloud.pixels = pixels_from_array(source.attr("pixels"), "pixels");
+  }
   if (is_cloud && py::hasattr(source, "shift")) {
     const auto shift = source.attr("shift").cast<std::array<double, 3>>();
     cloud.shift = Eigen::Vector3d(shift[0], shift[1], shift[2]);

@@ -100,6 +100,41 @@ def test_scan_equals_cli_and_arrays_match_files(tmp_path):
     assert occlusion.scan(cloud.positions, pattern=1).visible_fraction == result.visible_fraction
 
 
+KINECT = str(ROOT.parent / "shared" / "data" / "mosd_learn25.pcd")
+
+
+def test_a_depth_frame_read_into_python_keeps_its_camera_and_grid():
+    """The real Kinect frame as a Cloud: its camera and pixels come along, so a
+    scan of the Cloud is the CLI's scan of the file (discs fitted on the grid)."""
+    cli = cli_json("-fscan", KINECT)
+    cloud = occlusion.read_cloud(KINECT)
+    assert cloud.sensor["width"] == 640 and cloud.sensor["height"] == 480
+    assert cloud.sensor["origin"] == (0.0, 0.0, 0.0)
+    assert cloud.pixels.dtype == np.uint32 and cloud.pixels.shape == (len(cloud),)
+    assert cloud.pixels[0] < cloud.pixels[-1] < 640 * 480
+    in_memory = occlusion.scan(cloud)
+    assert in_memory.visible_fraction >= 0.99
+    assert in_memory.report["visible_points"] == cli["visible_points"]
+    assert_same_report(in_memory.report["point_model"], cli["point_model"])
+    # The bare points are a cloud without a camera: measured from its nearest in space.
+    assert occlusion.scan(cloud.positions, viewpoints=[(0, 0, 0)]).visible_fraction < 0.99
+
+
+def test_pixels_that_do_not_fit_the_sensor_are_refused():
+    cloud = occlusion.read_cloud(KINECT)
+    fields = {name: getattr(cloud, name) for name in
+              ("positions", "labels", "class_names", "colours", "stations", "station_ids",
+               "intensities", "shift", "sensor", "pixels")}
+    no_grid = dict(fields, sensor=None)
+    with pytest.raises(ValueError, match="not an organised frame"):
+        occlusion.scan(type("Frame", (), no_grid)(), viewpoints=[(0, 0, 0)])
+    twice = dict(fields, pixels=np.zeros(len(cloud), np.uint32))
+    with pytest.raises(ValueError, match="taken twice"):
+        occlusion.scan(type("Frame", (), twice)(), viewpoints=[(0, 0, 0)])
+    with pytest.raises(ValueError, match="no pixel index"):
+        occlusion.scan(type("Frame", (), dict(fields, pixels=-np.ones(len(cloud))))())
+
+
 def test_mesh_arrays_equal_file():
     mesh = occlusion.read_mesh(ROOM_MESH)
     from_file = occlusion.mesh_occlusion(ROOM_MESH, pattern=2, samples_per_unit_area=10)

@@ -156,6 +156,9 @@ class Cloud:
     station_ids: Optional[npt.NDArray[np.int32]]  # (N,), index into stations
     # {"name", "origin" (relative to shift), "orientation" (w, x, y, z), "width", "height"}
     stations: list[dict[str, Any]]
+    # A single-view frame's camera: {"origin", "orientation", "width", "height"}, else None
+    sensor: Optional[dict[str, Any]]
+    pixels: Optional[npt.NDArray[np.uint32]]  # (N,), row * width + column in sensor's grid
     class_names: list[str]
     fields: dict[str, npt.NDArray[Any]]  # float32 or int32 (N,)
     dropped_nan: int
