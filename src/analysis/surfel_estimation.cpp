@@ -13,6 +13,7 @@
 #include <string>
 
 #include "analysis_support.hpp"
+#include "occlusion/analysis/point_spacing.hpp"
 #include "occlusion/core/morton_knn.hpp"
 #include "occlusion/core/morton_order.hpp"
 #include "occlusion/core/parallel.hpp"
@@ -37,11 +38,6 @@ constexpr float kSphereShare = 0.5f;
 constexpr double kRmsShare = 0.5;
 // How many times more neighbours a point whose neighbours lie on a line asks for.
 constexpr std::size_t kWideSearch = 4;
-
-// Positions closer than this (relative to their magnitude, floats) are one position.
-double same_position_distance(const Eigen::Vector3f& p) {
-  return 1e-6 * std::max(1.0, static_cast<double>(p.cwiseAbs().maxCoeff()));
-}
 
 // About 20 progress steps per pass, but no block so small that the threads idle.
 std::size_t block_size(std::size_t count) {
@@ -204,6 +200,24 @@ class PixelGrid {
   const std::vector<std::uint32_t>& order_;
   std::vector<std::uint32_t> point_;  // per pixel, its point's Morton index, or kNone
 };
+
+// What distinct_neighbours answers for a point whose nearest, nearest first
+// by the same float distance, are ids[0..got) (itself among them): the first
+// kSpacingNeighbours of them are a kd-tree's, so the point spacing's sample
+// needs no search of its own.
+DistinctNeighbour spacing_answer(const Eigen::Vector3f* points, std::size_t self,
+                                 const std::uint32_t* ids, std::size_t got, double same) {
+  DistinctNeighbour answer{0, std::numeric_limits<float>::infinity()};
+  for (std::size_t j = 0; j < std::min<std::size_t>(got, kSpacingNeighbours); ++j) {
+    const float squared = knn_squared_distance(points[self], points[ids[j]]);
+    if (std::sqrt(static_cast<double>(squared)) <= same) {
+      ++answer.coincident;
+    } else if (squared < answer.nearest_squared) {
+      answer.nearest_squared = squared;
+    }
+  }
+  return answer;
+}
 
 // A plane fitted to the point and its `count` nearest distinct neighbours.
 struct PlaneFit {
@@ -430,6 +444,14 @@ SurfelEstimate estimate_surfels(const PointCloud& cloud, const SurfelOptions& op
     };
 
     const PixelGrid grid(cloud, order);
+    // The point spacing's sample, answered from this search when it reaches
+    // as far as the spacing asks (a point's k nearest hold its
+    // kSpacingNeighbours nearest).
+    const std::size_t stride = spacing_stride(count);
+    std::vector<DistinctNeighbour> spacing_answers;
+    if (k >= std::min<std::size_t>(kSpacingNeighbours, count)) {
+      spacing_answers.resize((count + stride - 1) / stride);
+    }
     const auto model_point = [&](std::size_t, std::size_t s, const std::uint32_t* ids,
                                  std::size_t got) {
       thread_local Distinct distinct, window;
@@ -456,6 +478,9 @@ SurfelEstimate estimate_surfels(const PointCloud& cloud, const SurfelOptions& op
         if (window.count() >= kMinNeighbours) plane_points = &window;
       }
       const Neighbourhood hood = measure(own, distinct, *plane_points, options);
+      if (!spacing_answers.empty() && order[s] % stride == 0) {
+        spacing_answers[order[s] / stride] = spacing_answer(sorted.data(), s, ids, got, same);
+      }
       normals[s] = hood.normal;
       radii[s] = hood.normal.isZero() ? kSphereShare * hood.radius : hood.radius;
       variation[s] = hood.surface_variation;
@@ -473,6 +498,7 @@ SurfelEstimate estimate_surfels(const PointCloud& cloud, const SurfelOptions& op
     }
     search_blocks("surfels (scan lines)", &lines,
                   std::min(kWideSearch * options.neighbours + 1, count), model_point);
+    if (!spacing_answers.empty()) estimate.spacing = spacing_from(spacing_answers);
 
     // Positions stored more than k times have no distinct neighbour in
     // reach: they take the cloud's median radius.

@@ -161,11 +161,12 @@ void warn_viewpoints_inside_solids(const std::vector<ViewpointVisibility>& visib
   }
 }
 
-PointRadius choose_point_radius(const PointCloud& cloud, double requested, const std::string& job) {
+PointRadius choose_point_radius(const PointCloud& cloud, double requested, const std::string& job,
+                                const std::optional<PointSpacing>& measured) {
   PointRadius chosen;
   chosen.automatic = is_auto_radius(requested);
   try {
-    chosen.spacing = measure_point_spacing(cloud);
+    chosen.spacing = measured ? *measured : measure_point_spacing(cloud);
   } catch (const std::invalid_argument& e) {
     // Too few distinct points for a spacing: fine with an explicit radius.
     if (!chosen.automatic) {

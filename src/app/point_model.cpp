@@ -79,8 +79,8 @@ PointModel choose_point_model(const PointCloud& cloud, const PointSettings& sett
   PointModel model;
   PointModelReport& report = model.report;
   report.primitive = settings.primitive;
-  report.radius = choose_point_radius(cloud, settings.point_radius, job);
   if (settings.primitive == "sphere") {
+    report.radius = choose_point_radius(cloud, settings.point_radius, job);
     warn_open_surfaces(report, job, warnings);
     return model;
   }
@@ -90,7 +90,7 @@ PointModel choose_point_model(const PointCloud& cloud, const PointSettings& sett
   SurfelOptions options;
   options.neighbours = settings.normal_neighbours;
   options.coverage = settings.disc_coverage;
-  options.fixed_radius = report.radius.automatic ? 0.0 : settings.point_radius;
+  options.fixed_radius = is_auto_radius(settings.point_radius) ? 0.0 : settings.point_radius;
   options.threads = settings.threads;
   options.keep_thickness = job != "-poc";
   try {
@@ -99,6 +99,8 @@ PointModel choose_point_model(const PointCloud& cloud, const PointSettings& sett
     throw UsageError(std::string("primitive disc: ") + e.what() +
                      "; trace spheres of a given radius instead (primitive sphere)");
   }
+  // The spacing from the discs' own search, when it measured it.
+  report.radius = choose_point_radius(cloud, settings.point_radius, job, model.surfels->spacing);
   const SurfelStats& stats = model.surfels->stats;
   report.surfels = stats;
   report.normal_neighbours = settings.normal_neighbours;

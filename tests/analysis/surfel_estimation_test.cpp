@@ -10,6 +10,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "occlusion/analysis/point_spacing.hpp"
 #include "occlusion/core/random.hpp"
 #include "occlusion/core/surfel_octree.hpp"
 
@@ -121,6 +122,40 @@ TEST(SurfelEstimation, PointsStoredTwiceCountOnce) {
   // Twice the points, the same gaps: the radii stay those of the single cloud
   // (fewer distinct neighbours are in reach, so the estimate is noisier).
   EXPECT_NEAR(b.stats.radius_median / a.stats.radius_median, 1.0, 0.15);
+}
+
+void expect_same_spacing(const PointSpacing& a, const PointSpacing& b) {
+  EXPECT_EQ(a.spacing, b.spacing);
+  EXPECT_EQ(a.quantile_10, b.quantile_10);
+  EXPECT_EQ(a.quantile_90, b.quantile_90);
+  EXPECT_EQ(a.samples, b.samples);
+  EXPECT_EQ(a.duplicate_hits, b.duplicate_hits);
+}
+
+TEST(SurfelEstimation, ItsSearchMeasuresThePointSpacingBitForBit) {
+  // 50,000 points (a stride sample of 25,000) stored once and twice, and
+  // 22,500 (every point a sample), 2,500 of them stored eight times: those
+  // have a kd-tree's eight nearest at their own position, and no distance.
+  PointCloud once = random_plane(50000, 10.0, 4.0, 12);
+  PointCloud twice = once;
+  twice.positions.insert(twice.positions.end(), once.positions.begin(), once.positions.end());
+  PointCloud eightfold;
+  for (int copy = 0; copy < 8; ++copy) {
+    eightfold.positions.insert(eightfold.positions.end(), once.positions.begin(),
+                               once.positions.begin() + 2500);
+  }
+  eightfold.positions.insert(eightfold.positions.end(), once.positions.begin() + 2500,
+                             once.positions.begin() + 5000);
+  for (const PointCloud* cloud : {&once, &twice, &eightfold}) {
+    const SurfelEstimate estimate = estimate_surfels(*cloud, SurfelOptions{});
+    ASSERT_TRUE(estimate.spacing);
+    expect_same_spacing(*estimate.spacing, measure_point_spacing(*cloud));
+  }
+  EXPECT_GT(measure_point_spacing(twice).duplicate_hits, 19000u);
+  // Six neighbours do not reach a kd-tree's eight: the spacing is measured apart.
+  SurfelOptions few;
+  few.neighbours = 6;
+  EXPECT_FALSE(estimate_surfels(once, few).spacing);
 }
 
 TEST(SurfelEstimation, StrayPointsBecomeSmallSpheres) {

@@ -16,13 +16,20 @@
 
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
+#include <optional>
+#include <vector>
 
+#include "occlusion/analysis/distinct_neighbours.hpp"
 #include "occlusion/core/point_cloud.hpp"
 
 namespace occlusion {
 
 inline constexpr std::size_t kSpacingSamples = 20000;
+// Neighbours asked for per sample: a point stored k times has k - 1
+// neighbours at distance 0 before the first distinct one.
+inline constexpr std::uint32_t kSpacingNeighbours = 8;
 
 struct PointSpacing {
   double spacing = 0.0;            // median nearest distinct-neighbour distance
@@ -34,6 +41,16 @@ struct PointSpacing {
 
 // Throws std::invalid_argument when the cloud has fewer than two distinct positions.
 PointSpacing measure_point_spacing(const PointCloud& cloud);
+
+// The sample: points 0, stride, 2 stride, ... of a cloud of `points`.
+std::size_t spacing_stride(std::size_t points);
+// Positions closer than this to p (relative to its magnitude, floats) are one position.
+double same_position_distance(const Eigen::Vector3f& p);
+// The spacing from the sample's answers (distinct_neighbours' with cap
+// kSpacingNeighbours, in sample order), as measure_point_spacing gives it
+// (which a search that already knows each sample's kSpacingNeighbours
+// nearest can skip); empty when no sample has a distinct neighbour.
+std::optional<PointSpacing> spacing_from(const std::vector<DistinctNeighbour>& answers);
 
 }  // namespace occlusion
 

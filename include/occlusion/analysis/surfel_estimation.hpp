@@ -47,8 +47,10 @@
 
 #include <Eigen/Core>
 #include <cstddef>
+#include <optional>
 #include <vector>
 
+#include "occlusion/analysis/point_spacing.hpp"
 #include "occlusion/core/large_buffer.hpp"
 #include "occlusion/core/point_cloud.hpp"
 #include "occlusion/core/progress.hpp"
@@ -96,6 +98,10 @@ struct SurfelEstimate {
   LargeVector<Surfel> surfels;   // one per point, in the cloud's order
   std::vector<float> thickness;  // per point (0 for spheres); empty unless keep_thickness
   SurfelStats stats;
+  // The cloud's point spacing (point_spacing.hpp), the same as
+  // measure_point_spacing's, from this search: set when it asks for at least
+  // kSpacingNeighbours (neighbours >= 7) and some sample has a distinct neighbour.
+  std::optional<PointSpacing> spacing;
 };
 
 // Throws std::invalid_argument for a cloud with fewer than two distinct
