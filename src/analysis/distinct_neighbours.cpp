@@ -121,12 +121,7 @@ std::vector<DistinctNeighbour> one_pass(const std::vector<Eigen::Vector3f>& posi
         if (!(buckets.occupied[b / 64] >> (b % 64) & 1u)) continue;
         for (std::uint32_t e = buckets.begin[b]; e < buckets.begin[b + 1]; ++e) {
           const std::uint32_t q = buckets.entries[e];
-          const float squared = knn_squared_distance(points[q], p);
-          if (std::sqrt(static_cast<double>(squared)) <= same[q]) {
-            ++mine[q].coincident;
-          } else if (squared < mine[q].nearest_squared) {
-            mine[q].nearest_squared = squared;
-          }
+          mine[q].offer(knn_squared_distance(points[q], p), same[q]);
         }
       }
     }

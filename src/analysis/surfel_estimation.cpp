@@ -171,9 +171,10 @@ class PixelGrid {
 
   bool empty() const { return point_.empty(); }
 
-  // The points (Morton indices) of the window around point s's pixel, but s,
-  // nearest to it first.
-  void window(std::size_t s, const Eigen::Vector3f* sorted, std::vector<std::uint32_t>& ids) const {
+  // The points (Morton indices) of the window around point s's pixel within
+  // `reach` of it, but s, nearest to it first.
+  void window(std::size_t s, const Eigen::Vector3f* sorted, double reach,
+              std::vector<std::uint32_t>& ids) const {
     thread_local std::vector<std::pair<float, std::uint32_t>> found;
     found.clear();
     const auto width = static_cast<std::ptrdiff_t>(cloud_.sensor.width);
@@ -186,6 +187,7 @@ class PixelGrid {
            c <= std::min(width - 1, column + kReach); ++c) {
         const std::uint32_t t = point_[static_cast<std::size_t>(r * width + c)];
         if (t == kNone || t == s) continue;
+        if ((sorted[t] - sorted[s]).cast<double>().norm() > reach) continue;
         found.emplace_back((sorted[t] - sorted[s]).squaredNorm(), t);
       }
     }
@@ -209,12 +211,7 @@ DistinctNeighbour spacing_answer(const Eigen::Vector3f* points, std::size_t self
                                  const std::uint32_t* ids, std::size_t got, double same) {
   DistinctNeighbour answer{0, std::numeric_limits<float>::infinity()};
   for (std::size_t j = 0; j < std::min<std::size_t>(got, kSpacingNeighbours); ++j) {
-    const float squared = knn_squared_distance(points[self], points[ids[j]]);
-    if (std::sqrt(static_cast<double>(squared)) <= same) {
-      ++answer.coincident;
-    } else if (squared < answer.nearest_squared) {
-      answer.nearest_squared = squared;
-    }
+    answer.offer(knn_squared_distance(points[self], points[ids[j]]), same);
   }
   return answer;
 }
@@ -462,19 +459,15 @@ SurfelEstimate estimate_surfels(const PointCloud& cloud, const SurfelOptions& op
       distinct.offer_all(sorted.data(), ids, got, s);
       const Distinct* plane_points = &distinct;
       if (!grid.empty()) {
-        grid.window(s, sorted.data(), window_ids);
-        window.reset(own, same);
         // Across a depth edge the window holds the surface behind (or in
         // front): only its points within kGate times the farthest nearest
         // neighbour's distance are taken for the point's surface.
-        std::size_t kept = window_ids.size();
-        if (distinct.count() > 0) {
-          const double gate = PixelGrid::kGate * distinct.distance(distinct.count() - 1);
-          while (kept > 0 && (sorted[window_ids[kept - 1]] - own).cast<double>().norm() > gate) {
-            --kept;
-          }
-        }
-        window.offer_all(sorted.data(), window_ids.data(), kept, s);
+        const double reach = distinct.count() > 0
+                                 ? PixelGrid::kGate * distinct.distance(distinct.count() - 1)
+                                 : std::numeric_limits<double>::infinity();
+        grid.window(s, sorted.data(), reach, window_ids);
+        window.reset(own, same);
+        window.offer_all(sorted.data(), window_ids.data(), window_ids.size(), s);
         if (window.count() >= kMinNeighbours) plane_points = &window;
       }
       const Neighbourhood hood = measure(own, distinct, *plane_points, options);

@@ -23,6 +23,7 @@
 // h spans the whole cloud. Memory: a few arrays per query, none per point.
 
 #include <Eigen/Core>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -32,6 +33,16 @@ namespace occlusion {
 struct DistinctNeighbour {
   std::uint32_t coincident = 0;  // capped at the `cap` asked for
   float nearest_squared = 0.0f;  // infinity: no point beyond `same`
+
+  // One more point, `squared` (knn_squared_distance) from the query: the
+  // rule above, in one place for every search that answers it.
+  void offer(float squared, double same) {
+    if (std::sqrt(static_cast<double>(squared)) <= same) {
+      ++coincident;
+    } else if (squared < nearest_squared) {
+      nearest_squared = squared;
+    }
+  }
 };
 
 // Throws std::invalid_argument when a query index is out of range, the sizes
