@@ -92,16 +92,18 @@ MeshSamples sample_mesh(const TriangleMesh& mesh, double samples_per_unit_area, 
   }
   samples.points.resize(total);
   samples.face.resize(total);
+  // Checked by sample count, not by face: one large face of a coarse mesh
+  // can hold millions of samples.
   std::size_t next_check = kSamplesPerBlock;
   for (std::size_t f = 0; f < face_count; ++f) {
-    if (samples.first[f] >= next_check) {
-      progress.check_cancel();
-      progress("sampling", static_cast<double>(samples.first[f]) / static_cast<double>(total));
-      next_check = samples.first[f] + kSamplesPerBlock;
-    }
     const auto& corners = mesh.faces[f];
     Rng rng(seed, f);
     for (std::size_t s = samples.first[f]; s < samples.first[f + 1]; ++s) {
+      if (s >= next_check) {
+        progress.check_cancel();
+        progress("sampling", static_cast<double>(s) / static_cast<double>(total));
+        next_check = s + kSamplesPerBlock;
+      }
       const double r1 = rng.uniform();
       const double r2 = rng.uniform();
       samples.points[s] = sample_triangle(mesh.vertices[corners[0]], mesh.vertices[corners[1]],

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
+
 #include "support/scenes.hpp"
 
 namespace occlusion {
@@ -39,6 +41,37 @@ TEST(MeshSampling, SeedDecidesEverything) {
   const MeshSamples c = sample_mesh(mesh, 20, 10);
   EXPECT_EQ(a.points, b.points);
   EXPECT_NE(a.points, c.points);
+}
+
+// One face of a coarse mesh can hold millions of samples (a 20 m^2 floor
+// triangle at 1e5 per m^2): a cancel stops it within a block of samples, not
+// at the next face. The cancel comes in the first progress report; the
+// sampling must throw before it reports again.
+TEST(MeshSampling, CancelStopsWithinALargeFace) {
+  TriangleMesh one_face;
+  one_face.vertices = {{0, 0, 0}, {10, 0, 0}, {0, 4, 0}};
+  one_face.faces = {{0, 1, 2}};
+  one_face.face_group = {0};
+  one_face.group_names = {"floor"};
+  std::atomic<bool> cancel{false};
+  int reports = 0;
+  double fraction_at_cancel = -1.0;
+  Progress progress;
+  progress.cancel = &cancel;
+  progress.report = [&](const std::string& stage, double fraction) {
+    EXPECT_EQ(stage, "sampling");
+    ++reports;
+    fraction_at_cancel = fraction;
+    cancel = true;
+  };
+  EXPECT_THROW(sample_mesh(one_face, 1e5, 1, progress), Cancelled);
+  EXPECT_EQ(reports, 1);
+  EXPECT_GT(fraction_at_cancel, 0.0);
+  EXPECT_LT(fraction_at_cancel, 0.1);  // 2e6 samples, checked every 65,536
+  // Not cancelled, the same face is sampled whole.
+  cancel = false;
+  progress.report = nullptr;
+  EXPECT_EQ(sample_mesh(one_face, 1e5, 1, progress).size(), 2'000'000u);
 }
 
 TEST(MeshSampling, RejectsNonPositiveDensity) {

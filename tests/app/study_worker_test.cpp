@@ -4,7 +4,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <chrono>
 #include <filesystem>
 #include <string>
 
@@ -98,9 +97,9 @@ TEST(StudyWorker, OneThatHangsIsKilledAtTheTimeoutAndOneThatRefusesStays) {
   StudyRequest request = office_study(dir.file("hang"));
   request.segmenter = truth_worker(starts, "hang");
   request.segmenter_timeout = 20.0;  // python's start-up on a loaded machine fits
-  const auto start = std::chrono::steady_clock::now();
+  // The hung worker sleeps for an hour: the study returns only if it was
+  // killed, and the next run's answer comes from a second worker.
   const StudyReport hung = run_study(request);
-  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 120.0);
   ASSERT_EQ(hung.table.rows.size(), 3u);
   EXPECT_EQ(hung.runs_failed, 1u);
   EXPECT_NE(cell(hung.table, 1, "failure").find("did not answer within"), std::string::npos)

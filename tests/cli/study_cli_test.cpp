@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 #include <json/reader.h>
 
-#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <sstream>
@@ -97,21 +96,20 @@ TEST(StudyCli, AFailedRunIsARowAndExitOneAfterTheWholeStudy) {
 TEST(StudyCli, SigtermKeepsTheFinishedRowsAndStopsTheSegmenter) {
   const TempDir dir;
   const std::string started = dir.file("started");
-  // pattern_7 is made; pattern_4's segmenter hangs until the signal.
+  // pattern_7 is made; pattern_4's segmenter hangs until the signal, for
+  // longer than ctest lets a test run: the study ends only if it stops it.
   const std::string study =
       "'" + std::string(OCCLUSION_CLI_PATH) + "' " + kConfig +
       " --pattern 7 --pattern 4 --num-rays-per-vp 300 --out '" + dir.file("study") +
       "' --segmenter 'case {input} in *pattern_4*) touch " + started +
-      "; exec sleep 31.25;; esac; " + kAllWall + "' --segmenter-output labels -q";
+      "; exec sleep 3125;; esac; " + kAllWall + "' --segmenter-output labels -q";
   const std::string script =
       study + " >'" + dir.file("out") + "' 2>'" + dir.file("err") +
-      "' & pid=$!; for i in $(seq 1 600); do [ -e '" + started +
+      "' & pid=$!; for i in $(seq 1 1800); do [ -e '" + started +
       "' ] && break; sleep 0.1; done; kill -TERM $pid; wait $pid; echo $? >'" + dir.file("status") +
       "'";
-  const auto start = std::chrono::steady_clock::now();
   dir.write("run.sh", script);
   ASSERT_EQ(std::system(("sh '" + dir.file("run.sh") + "'").c_str()), 0);
-  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 30.0);
   // Every finished row kept, then the process dies of the SIGTERM itself (128 + 15), as a
   // signalled process should, so a scheduler or shell sees why it ended.
   EXPECT_EQ(testing::read_text(dir.file("status")), "143\n") << testing::read_text(dir.file("err"));
@@ -121,7 +119,7 @@ TEST(StudyCli, SigtermKeepsTheFinishedRowsAndStopsTheSegmenter) {
   for (const char c : csv) lines += c == '\n' ? 1 : 0;
   EXPECT_EQ(lines, 2u) << csv;  // the header and pattern_7's row
   EXPECT_NE(csv.find("pattern_7"), std::string::npos);
-  EXPECT_NE(std::system("pgrep -f 'sleep 31[.]25' >/dev/null"), 0)
+  EXPECT_NE(std::system("pgrep -f 'sleep 312[5]' >/dev/null"), 0)
       << "the segmenter was left running";
 }
 

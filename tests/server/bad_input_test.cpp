@@ -28,7 +28,7 @@ class BadInput : public ::testing::Test {
 
   // The next message, which must be an error with `code`.
   Json::Value expect_error(const std::string& code) {
-    const auto message = client_->receive(Millis(10000));
+    const auto message = client_->receive(kHangGuard);
     if (!message) {
       ADD_FAILURE() << "no reply, expected " << code;
       return Json::Value();
@@ -172,7 +172,7 @@ TEST_F(BadInput, BinaryMessageOverTheTransportLimitClosesThatConnectionOnly) {
   header.count = 3 << 20;
   const std::string bytes(header.count, 'x');
   client_->send_binary(server::encode_frame(header, bytes.data(), bytes.size()).message);
-  EXPECT_TRUE(client_->wait_closed(Millis(10000)));
+  EXPECT_TRUE(client_->wait_closed(kHangGuard));
   EXPECT_EQ(client_->close_code(), 1009);  // message too big
   client_ = server_->connect();
   expect_still_serving();
@@ -211,7 +211,7 @@ TEST_F(BadInput, CorruptUploadIsRefusedAndNotStored) {
   header.request_id = 1;
   header.count = bytes.size();
   client_->send_binary(server::encode_frame(header, bytes.data(), bytes.size()).message);
-  const Reply reply = client_->collect(1, Millis(10000));
+  const Reply reply = client_->collect(1, kHangGuard);
   EXPECT_EQ(reply.error_code(), "input_error") << reply.final;
   EXPECT_NE(reply.final["message"].asString().find("uploads/broken.ply"), std::string::npos)
       << reply.final["message"];
@@ -241,17 +241,15 @@ TEST_F(BadInput, CorruptFileInTheDataDirectory) {
 }
 
 TEST_F(BadInput, DuplicateIdOfARunningRequest) {
-  client_->send_request(5, "cloud_occlusion",
-                        params(R"({"path": "s3dis_synthetic/Area_1/office_1", "point_radius": 0.06,
-                                   "num_rays_per_vp": 20000000, "out": ""})"));
+  client_->send_request(5, "cloud_occlusion", long_job());
   client_->send_request(5, "ping");
   client_->send_request(5, "load", params(R"({"path": "sample_room.obj"})"));
   for (int i = 0; i < 2; ++i) {
-    const Reply reply = client_->collect(5, Millis(10000));
+    const Reply reply = client_->collect(5, kHangGuard);
     EXPECT_EQ(reply.error_code(), "duplicate_id") << reply.final;
   }
   EXPECT_TRUE(client_->request(6, "cancel", params(R"({"target": 5})")).ok());
-  EXPECT_EQ(client_->collect(5, Millis(10000)).error_code(), "cancelled");
+  EXPECT_EQ(client_->collect(5, kHangGuard).error_code(), "cancelled");
   expect_still_serving();
 }
 

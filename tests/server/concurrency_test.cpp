@@ -21,13 +21,6 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// A job that runs for many seconds unless cancelled, in little memory (rays
-// are traced in blocks; no escape directions are kept without "out").
-Json::Value long_job() {
-  return params(R"({"path": "s3dis_synthetic/Area_1/office_1", "point_radius": 0.06,
-                    "num_rays_per_vp": 20000000, "out": ""})");
-}
-
 TEST(Concurrency, SixteenClientsLoadAndComputeAtOnce) {
   TestServer server;
   // The expected figures, computed directly by the app layer.
@@ -49,13 +42,13 @@ TEST(Concurrency, SixteenClientsLoadAndComputeAtOnce) {
       try {
         auto client = server.connect();
         const Reply cloud = client->request(
-            1, "load", params(R"({"path": "s3dis_synthetic/Area_1/office_1"})"), Millis(60000));
+            1, "load", params(R"({"path": "s3dis_synthetic/Area_1/office_1"})"), kHangGuard);
         const Reply mesh = client->request(
             2, "mesh_occlusion",
             params(R"({"path": "sample_room.obj", "samples_per_unit_area": 10, "seed": )" +
                    std::to_string(i) + R"(, "pattern": )" + std::to_string(i % 7 + 1) +
                    R"(, "out": ""})"),
-            Millis(60000));
+            kHangGuard);
         const bool cloud_ok = cloud.ok() && cloud.frames.size() == 4 &&
                               cloud.final["result"]["points"].asUInt64() > 0;
         const bool mesh_ok =
@@ -85,19 +78,20 @@ TEST(Concurrency, OtherClientsAreAnsweredWhileJobsRun) {
   busy->send_request(1, "cloud_occlusion", long_job());
   busy->send_request(2, "load", params(R"({"path": "sample_room.obj"})"));  // queued behind it
   // Wait until the job really runs.
-  const auto first = busy->receive(Millis(10000));
+  const auto first = busy->receive(kHangGuard);
   ASSERT_TRUE(first.has_value());
 
+  // Answered while the job runs: it ends cancelled, not done, after them, and
+  // the load queued behind it is done only after that.
   auto other = server.connect();
   for (std::uint32_t id = 10; id < 20; ++id) {
-    const auto start = Clock::now();
-    const Reply reply = other->request(id, "list_files", Json::Value(Json::objectValue));
+    const Reply reply =
+        other->request(id, "list_files", Json::Value(Json::objectValue), kHangGuard);
     EXPECT_TRUE(reply.ok());
-    EXPECT_LT(seconds_since(start), 0.5);
   }
-  EXPECT_TRUE(busy->request(3, "cancel", params(R"({"target": 1})")).ok());
-  EXPECT_EQ(busy->collect(1, Millis(10000)).error_code(), "cancelled");
-  EXPECT_TRUE(busy->collect(2, Millis(10000)).ok());
+  EXPECT_TRUE(busy->request(3, "cancel", params(R"({"target": 1})"), kHangGuard).ok());
+  EXPECT_EQ(busy->collect(1, kHangGuard).error_code(), "cancelled");
+  EXPECT_TRUE(busy->collect(2, kHangGuard).ok());
 }
 
 TEST(Concurrency, CancelStopsAJobPromptly) {
@@ -105,20 +99,27 @@ TEST(Concurrency, CancelStopsAJobPromptly) {
   auto client = server.connect();
   client->send_request(1, "cloud_occlusion", long_job());
   // Cancel once it is tracing.
+  double traced_at_cancel = 0.0;
   for (;;) {
-    const auto message = client->receive(Millis(20000));
+    const auto message = client->receive(kHangGuard);
     ASSERT_TRUE(message.has_value());
     const Json::Value json = params(message->data);
     ASSERT_EQ(json["type"].asString(), "progress") << message->data;
-    if (json["stage"].asString() == "tracing") break;
+    if (json["stage"].asString() == "tracing") {
+      traced_at_cancel = json["fraction"].asDouble();
+      break;
+    }
   }
-  const auto start = Clock::now();
-  const Reply cancel = client->request(2, "cancel", params(R"({"target": 1})"));
+  const Reply cancel = client->request(2, "cancel", params(R"({"target": 1})"), kHangGuard);
   ASSERT_TRUE(cancel.ok());
   EXPECT_TRUE(cancel.final["result"]["found"].asBool());
-  const Reply job = client->collect(1, Millis(10000));
+  // Stopped within the tracing: whatever it reported after the cancel is
+  // still a small part of it (minutes of rays; a block takes milliseconds).
+  const Reply job = client->collect(1, kHangGuard);
   EXPECT_EQ(job.error_code(), "cancelled") << job.final;
-  EXPECT_LT(seconds_since(start), 1.0);
+  for (const Json::Value& progress : job.progress) {
+    EXPECT_LT(progress["fraction"].asDouble(), traced_at_cancel + 0.05) << progress;
+  }
 
   const Reply nothing = client->request(3, "cancel", params(R"({"target": 1})"));
   EXPECT_FALSE(nothing.final["result"]["found"].asBool());
@@ -151,7 +152,7 @@ TEST(Concurrency, CancelStopsAJobDuringItsOctreeBuild) {
   // Reads the job's progress until it reports `stage`.
   const auto wait_for_stage = [&](const std::string& stage) {
     for (;;) {
-      const auto message = client->receive(Millis(120000));
+      const auto message = client->receive(kHangGuard);
       ASSERT_TRUE(message.has_value());
       const Json::Value json = params(message->data);
       ASSERT_EQ(json["type"].asString(), "progress") << message->data;
@@ -168,7 +169,7 @@ TEST(Concurrency, CancelStopsAJobDuringItsOctreeBuild) {
     const auto build_start = Clock::now();
     wait_for_stage("tracing");
     const double seconds = seconds_since(build_start);
-    EXPECT_TRUE(client->collect(id, Millis(120000)).ok());
+    EXPECT_TRUE(client->collect(id, kHangGuard).ok());
     return seconds;
   };
   const double build_before = whole_build_seconds(1);
@@ -177,9 +178,9 @@ TEST(Concurrency, CancelStopsAJobDuringItsOctreeBuild) {
   wait_for_stage("building octree");
   const auto start = Clock::now();
   client->send_request(3, "cancel", params(R"({"target": 2})"));
-  const Reply job = client->collect(2, Millis(60000));
+  const Reply job = client->collect(2, kHangGuard);
   const double cancel_seconds = seconds_since(start);
-  EXPECT_TRUE(client->collect(3, Millis(60000)).ok());  // the cancel's own answer
+  EXPECT_TRUE(client->collect(3, kHangGuard).ok());  // the cancel's own answer
   EXPECT_EQ(job.error_code(), "cancelled") << job.final;
   for (const Json::Value& progress : job.progress) {
     EXPECT_NE(progress["stage"].asString(), "tracing") << "the build ran to its end";
@@ -197,14 +198,14 @@ TEST(Concurrency, ClientThatLeavesMidJobHasItsJobsCancelled) {
   {
     auto leaving = server.connect();
     leaving->send_request(1, "cloud_occlusion", long_job());
-    ASSERT_TRUE(leaving->receive(Millis(10000)).has_value());  // it runs
+    ASSERT_TRUE(leaving->receive(kHangGuard).has_value());  // it runs
   }
-  // The only worker is free again as soon as the job noticed.
+  // The only worker is free again once the job noticed; had it run on, the
+  // load would wait for minutes behind it, past the guard.
   auto next = server.connect();
-  const auto start = Clock::now();
-  const Reply reply = next->request(1, "load", params(R"({"path": "sample_room.obj"})"));
+  const Reply reply =
+      next->request(1, "load", params(R"({"path": "sample_room.obj"})"), kHangGuard);
   EXPECT_TRUE(reply.ok()) << reply.final;
-  EXPECT_LT(seconds_since(start), 2.0);
 }
 
 TEST(Concurrency, FullQueueSaysBusy) {
@@ -214,14 +215,14 @@ TEST(Concurrency, FullQueueSaysBusy) {
   TestServer server(options);
   auto client = server.connect();
   client->send_request(1, "cloud_occlusion", long_job());
-  ASSERT_TRUE(client->receive(Millis(10000)).has_value());  // running, the queue is empty
-  client->send_request(2, "cloud_occlusion", long_job());   // queued
+  ASSERT_TRUE(client->receive(kHangGuard).has_value());    // running, the queue is empty
+  client->send_request(2, "cloud_occlusion", long_job());  // queued
   const Reply third = client->request(3, "cloud_occlusion", long_job());
   EXPECT_EQ(third.error_code(), "busy");
   client->send_request(4, "cancel", params(R"({"target": 1})"));
   client->send_request(5, "cancel", params(R"({"target": 2})"));
-  EXPECT_EQ(client->collect(1, Millis(10000)).error_code(), "cancelled");
-  EXPECT_EQ(client->collect(2, Millis(10000)).error_code(), "cancelled");
+  EXPECT_EQ(client->collect(1, kHangGuard).error_code(), "cancelled");
+  EXPECT_EQ(client->collect(2, kHangGuard).error_code(), "cancelled");
   EXPECT_TRUE(client->request(6, "ping").ok());
 }
 

@@ -41,7 +41,7 @@ TEST(Hardening, FortyThousandThreadsDoNotEndTheServer) {
       client->request(1, "region_growing_occlusion",
                       params(R"({"path": "wall.txt", "threads": 40000, "min_cluster_size": 50,
                  "samples_per_unit_area": 10, "out": ""})"),
-                      Millis(120000));
+                      kHangGuard);
   EXPECT_TRUE(reply.ok() || reply.error_code() == "invalid_request") << reply.final;
   expect_serving(server);
 }
@@ -52,7 +52,7 @@ TEST(Hardening, PointsNearFloatMaxAreAnErrorReply) {
   auto client = server.connect();
   for (const char* command : {"extract_polygons", "region_growing_occlusion"}) {
     const Reply reply =
-        client->request(2, command, params(R"({"path": "far.txt", "out": ""})"), Millis(60000));
+        client->request(2, command, params(R"({"path": "far.txt", "out": ""})"), kHangGuard);
     EXPECT_EQ(reply.error_code(), "invalid_request") << command << reply.final;
   }
   expect_serving(server);
@@ -63,15 +63,15 @@ TEST(Hardening, WorkBeyondTheMemoryBudgetIsRefusedWithTheEstimate) {
   options.max_memory_mb = 64;
   TestServer server(options);
   auto client = server.connect();
-  const auto start = Clock::now();
   const Reply reply = client->request(
       3, "mesh_occlusion",
-      params(R"({"path": "sample_room.obj", "samples_per_unit_area": 1e6, "out": ""})"));
+      params(R"({"path": "sample_room.obj", "samples_per_unit_area": 1e6, "out": ""})"),
+      kHangGuard);
   EXPECT_EQ(reply.error_code(), "invalid_request") << reply.final;
   const std::string message = reply.final["message"].asString();
   EXPECT_NE(message.find("MB"), std::string::npos) << message;
   EXPECT_NE(message.find("max_memory_mb"), std::string::npos) << message;
-  EXPECT_LT(std::chrono::duration<double>(Clock::now() - start).count(), 10.0);  // not attempted
+  EXPECT_EQ(work_stages(reply), std::vector<std::string>{}) << "refused after it started";
   EXPECT_EQ(client->hello()["limits"]["max_memory_mb"].asUInt64(), 64u);
   // Within the budget, the same job runs.
   EXPECT_TRUE(client
@@ -92,18 +92,17 @@ TEST(Hardening, MinSamplesIsInTheMemoryBudget) {
   auto client = server.connect();
   int id = 1;
   for (const char* min_samples : {"6e7", "1e12"}) {
-    const auto start = Clock::now();
     const Reply reply = client->request(
         id++, "region_growing_occlusion",
         params(std::string(R"({"path": "wall.txt", "min_cluster_size": 50, "out": "",
                                "min_samples": )") +
                min_samples + "}"),
-        Millis(120000));
+        kHangGuard);
     EXPECT_EQ(reply.error_code(), "invalid_request") << min_samples << reply.final;
     const std::string message = reply.final["message"].asString();
     EXPECT_NE(message.find("lower min_samples"), std::string::npos) << message;
     EXPECT_NE(message.find("max_memory_mb = 400"), std::string::npos) << message;
-    EXPECT_LT(std::chrono::duration<double>(Clock::now() - start).count(), 30.0);
+    EXPECT_EQ(work_stages(reply), std::vector<std::string>{}) << "refused after it started";
   }
   expect_serving(server);
 }
@@ -120,17 +119,11 @@ TEST(Hardening, StudyRunsAreInTheMemoryBudget) {
       client->request(1, "study", params(R"({"scenes": ["s3dis_synthetic/Area_1/office_1"],
                  "configurations": [{"name": "pattern_1", "pattern": 1}], "point_radius": 0.06,
                  "num_rays_per_vp": 400, "out": "study"})"),
-                      Millis(120000));
+                      kHangGuard);
   EXPECT_EQ(reply.error_code(), "invalid_request") << reply.final;
   const std::string message = reply.final["message"].asString();
   EXPECT_NE(message.find("max_memory_mb = 1"), std::string::npos) << message;
   expect_serving(server);
-}
-
-// A job that runs for many seconds unless cancelled (see concurrency_test).
-Json::Value long_job() {
-  return params(R"({"path": "s3dis_synthetic/Area_1/office_1", "point_radius": 0.06,
-                    "num_rays_per_vp": 20000000, "out": ""})");
 }
 
 TEST(Hardening, OneClientsLongJobsLeaveAWorkerToOthers) {
@@ -140,7 +133,7 @@ TEST(Hardening, OneClientsLongJobsLeaveAWorkerToOthers) {
   greedy->send_request(2, "cloud_occlusion", long_job());
   // The second waits for the first, and says where it is in the queue.
   bool told_position = false;
-  const auto deadline = Clock::now() + std::chrono::seconds(20);
+  const auto deadline = Clock::now() + kHangGuard;
   while (!told_position && Clock::now() < deadline) {
     const auto message = greedy->receive(Millis(1000));
     if (!message || message->binary) continue;
@@ -152,18 +145,17 @@ TEST(Hardening, OneClientsLongJobsLeaveAWorkerToOthers) {
   }
   EXPECT_TRUE(told_position);
 
+  // The other client's job is done while the greedy one's still run or wait
+  // (they end cancelled, not done).
   auto other = server.connect();
-  const auto start = Clock::now();
   const Reply reply = other->request(
       1, "mesh_occlusion",
-      params(R"({"path": "sample_room.obj", "samples_per_unit_area": 5, "out": ""})"),
-      Millis(30000));
+      params(R"({"path": "sample_room.obj", "samples_per_unit_area": 5, "out": ""})"), kHangGuard);
   EXPECT_TRUE(reply.ok()) << reply.final;
-  EXPECT_LT(std::chrono::duration<double>(Clock::now() - start).count(), 10.0);
   greedy->send_request(3, "cancel", params(R"({"target": 1})"));
   greedy->send_request(4, "cancel", params(R"({"target": 2})"));
-  EXPECT_EQ(greedy->collect(1, Millis(20000)).error_code(), "cancelled");
-  EXPECT_EQ(greedy->collect(2, Millis(20000)).error_code(), "cancelled");
+  EXPECT_EQ(greedy->collect(1, kHangGuard).error_code(), "cancelled");
+  EXPECT_EQ(greedy->collect(2, kHangGuard).error_code(), "cancelled");
 }
 
 TEST(Hardening, WorkBeyondTheWorkBudgetIsRefusedNamingTheKeysToChange) {
@@ -190,7 +182,7 @@ TEST(Hardening, WorkBeyondTheWorkBudgetIsRefusedNamingTheKeysToChange) {
 // Waits for a progress event of request `id` at a stage other than "queued":
 // the job runs on a worker. False after the hang guard.
 bool wait_running(BlockingClient& client, std::uint32_t id) {
-  const auto deadline = Clock::now() + std::chrono::seconds(120);
+  const auto deadline = Clock::now() + kHangGuard;
   while (Clock::now() < deadline) {
     const auto message = client.receive(Millis(1000));
     if (!message || message->binary) continue;
@@ -220,35 +212,46 @@ TEST(Hardening, AThirdClientsSmallJobRunsWhileTwoHeavyOnesHoldBothWorkers) {
   const Reply reply = small->request(
       1, "cloud_occlusion", params(R"({"path": "s3dis_synthetic/Area_1/office_1", "pattern": 1,
                  "num_rays_per_vp": 2000, "out": ""})"),
-      Millis(120000));  // hang guard: it takes well under a second
+      kHangGuard);
   EXPECT_TRUE(reply.ok()) << reply.final;
   // The heavy jobs were still running (or waiting): they end cancelled, not done.
   for (BlockingClient* heavy : {first.get(), second.get(), third.get()}) {
     heavy->send_request(2, "cancel", params(R"({"target": 1})"));
-    EXPECT_EQ(heavy->collect(1, Millis(60000)).error_code(), "cancelled");
+    EXPECT_EQ(heavy->collect(1, kHangGuard).error_code(), "cancelled");
   }
 }
 
-// Cancel is noticed while the mesh is sampled, not only once rays are traced.
+// Cancel is noticed while the mesh is sampled, not only once rays are
+// traced: the job ends cancelled before it reports any later stage. (That it
+// stops within a block of samples, even inside one large face, is
+// MeshSampling.CancelStopsWithinALargeFace.)
 TEST(Hardening, CancelStopsSamplingAtOnce) {
   TestServer server;
   auto client = server.connect();
+  // 16 million samples: seconds of sampling, against the milliseconds a
+  // cancel takes to arrive.
   client->send_request(1, "mesh_occlusion",
                        params(R"({"path": "sample_room.obj", "samples_per_unit_area": 60000,
                                   "pattern": 1, "out": ""})"));
   // Wait until it samples.
-  const auto deadline = Clock::now() + std::chrono::seconds(20);
+  const auto deadline = Clock::now() + kHangGuard;
   bool sampling = false;
+  double sampled_at_cancel = 0.0;
   while (!sampling && Clock::now() < deadline) {
     const auto message = client->receive(Millis(1000));
     if (!message || message->binary) continue;
-    sampling = params(message->data)["stage"].asString() == "sampling";
+    const Json::Value json = params(message->data);
+    sampling = json["stage"].asString() == "sampling";
+    sampled_at_cancel = json["fraction"].asDouble();
   }
   ASSERT_TRUE(sampling);
-  const auto start = Clock::now();
   client->send_request(2, "cancel", params(R"({"target": 1})"));
-  EXPECT_EQ(client->collect(1, Millis(30000)).error_code(), "cancelled");
-  EXPECT_LT(std::chrono::duration<double>(Clock::now() - start).count(), 2.0);
+  const Reply job = client->collect(1, kHangGuard);
+  EXPECT_EQ(job.error_code(), "cancelled") << job.final;
+  for (const Json::Value& progress : job.progress) {
+    EXPECT_EQ(progress["stage"].asString(), "sampling") << "the sampling ran to its end";
+    EXPECT_LT(progress["fraction"].asDouble(), sampled_at_cancel + 0.5) << progress;
+  }
 }
 
 TEST(Hardening, LinkNestedInASceneFolderCannotLeadOut) {

@@ -492,7 +492,7 @@ TEST_F(RoundTrip, UploadIsStoredAndUsableByJobs) {
   header.request_id = 20;
   header.count = bytes.size();
   client_->send_binary(server::encode_frame(header, bytes.data(), bytes.size()).message);
-  const Reply reply = client_->collect(20, Millis(30000));
+  const Reply reply = client_->collect(20, kHangGuard);
   ASSERT_TRUE(reply.ok()) << reply.final;
   EXPECT_EQ(reply.final["result"]["path"].asString(), "uploads/browser.ply");
   EXPECT_EQ(reply.final["result"]["points"].asUInt(), 200u);

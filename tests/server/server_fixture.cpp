@@ -58,7 +58,7 @@ TestServer::~TestServer() {
 }
 
 std::unique_ptr<BlockingClient> TestServer::connect(const std::string& origin) const {
-  return std::make_unique<BlockingClient>("127.0.0.1", port(), Millis(10000), origin);
+  return std::make_unique<BlockingClient>("127.0.0.1", port(), kHangGuard, origin);
 }
 
 std::string read_file(const std::string& path) {
@@ -83,6 +83,20 @@ Json::Value run_cli_json(const std::string& arguments) {
   if (!Json::parseFromStream(Json::CharReaderBuilder(), stream, &json, &errors))
     return Json::Value();
   return json;
+}
+
+Json::Value long_job() {
+  return params(R"({"path": "s3dis_synthetic/Area_1/office_1", "point_radius": 0.06,
+                    "num_vp": 9, "num_rays_per_vp": 100000000, "out": ""})");
+}
+
+std::vector<std::string> work_stages(const Reply& reply) {
+  std::vector<std::string> stages;
+  for (const Json::Value& event : reply.progress) {
+    const std::string stage = event["stage"].asString();
+    if (stage != "queued" && stage != "loading") stages.push_back(stage);
+  }
+  return stages;
 }
 
 Json::Value params(const std::string& json) {

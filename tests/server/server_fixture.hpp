@@ -63,6 +63,21 @@ Json::Value run_cli_json(const std::string& arguments);
 // Params object from a JSON literal, e.g. params(R"({"path": "x"})").
 Json::Value params(const std::string& json);
 
+// How long a test waits for a message that must come before it calls the
+// server hung. It bounds a wait; it is never the figure a test asserts, so a
+// slow or loaded machine only waits longer.
+inline constexpr Millis kHangGuard{180000};
+
+// A cloud_occlusion job that runs for minutes unless cancelled (9 x 1e8 rays:
+// about 4 minutes on 2 threads in Release), in little memory: rays are traced
+// in blocks, and no escape directions are kept without "out". A test that
+// sees it end "cancelled" knows it was still running.
+Json::Value long_job();
+
+// The stages of a reply's progress events that do the job's work: every
+// stage but "queued" and "loading" (a refusal up front reports none).
+std::vector<std::string> work_stages(const Reply& reply);
+
 // Compares a job's figures in the server's reply to the CLI's report: every
 // key of both, numbers to 1e-9 relative, except timings and file names (the
 // two name the same files differently).

@@ -151,7 +151,7 @@ TEST(TransportLimits, WholeOversizedTextMessageClosesThatConnectionOnly) {
   TestServer server;
   auto client = server.connect();
   client->send_text(std::string(8 << 20, ' '));
-  EXPECT_TRUE(client->wait_closed(Millis(60000)));
+  EXPECT_TRUE(client->wait_closed(kHangGuard));
   // WebSocket++ drops the TCP connection right after its 1009 close frame (a
   // terminal close), with most of this message still unread: the reset that
   // follows can reach a client still sending before it has read that frame,
@@ -177,11 +177,11 @@ TEST(TransportLimits, AnnouncedUploadLargerThanTheTextLimitStillArrives) {
   header.request_id = 1;
   header.count = bytes.size();
   client->send_binary(server::encode_frame(header, bytes.data(), bytes.size()).message);
-  const Reply reply = client->collect(1, Millis(60000));
+  const Reply reply = client->collect(1, kHangGuard);
   EXPECT_TRUE(reply.ok()) << reply.final;
   // The allowance went with the upload: the next long message is refused.
   client->send_binary(server::encode_frame(header, bytes.data(), bytes.size()).message);
-  EXPECT_TRUE(client->wait_closed(Millis(60000)));
+  EXPECT_TRUE(client->wait_closed(kHangGuard));
   EXPECT_EQ(client->close_code(), 1009);
 }
 
