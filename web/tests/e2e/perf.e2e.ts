@@ -1,8 +1,9 @@
 // How the viewer copes with a 1,000,000-point cloud in headless Chromium
 // (SwiftShader, no GPU): time from the click in the file list to the first
 // frame drawn, and the frame rate while orbiting. Figures go to
-// web/test-artifacts/perf.json and the test log; the bounds asserted are
-// loose (a slow CI machine must not fail), the figures are the point.
+// web/test-artifacts/perf.json and the test log. No duration is asserted (a
+// slow CI machine must not fail; each wait has a hang guard): the figures are
+// the point, and what is asserted is what was drawn.
 
 import { mkdirSync, writeFileSync } from "node:fs";
 import { join } from "node:path";
@@ -89,7 +90,6 @@ describe("a 1,000,000-point cloud (e2e, performance)", () => {
       geometryAndFirstDrawMs: Math.round(first.frameMs),
     };
     figures.cachedReloadClickToFirstFrameMs = Math.round(again.clickToFrameMs);
-    expect(first.clickToFrameMs).toBeLessThan(60_000);
   });
 
   test("frame rate while orbiting", async () => {
