@@ -35,7 +35,7 @@ std::optional<PointSpacing> spacing_from(const std::vector<DistinctNeighbour>& a
   return result;
 }
 
-PointSpacing measure_point_spacing(const PointCloud& cloud) {
+PointSpacing measure_point_spacing(const PointCloud& cloud, unsigned threads) {
   if (cloud.size() < 2) {
     throw std::invalid_argument("point spacing: the cloud needs at least two points");
   }
@@ -49,8 +49,8 @@ PointSpacing measure_point_spacing(const PointCloud& cloud) {
   // A kd-tree's k nearest (k = kSpacingNeighbours, the sample itself among
   // them): the first beyond `same` is the nearest distinct neighbour, unless
   // all k are within it; any of them but the sample itself makes a duplicate.
-  const std::optional<PointSpacing> spacing =
-      spacing_from(distinct_neighbours(cloud.positions, samples, same, kSpacingNeighbours));
+  const std::optional<PointSpacing> spacing = spacing_from(
+      distinct_neighbours(cloud.positions, samples, same, kSpacingNeighbours, threads));
   if (!spacing) {
     throw std::invalid_argument(
         "point spacing: no point has a neighbour at a distinct position (all points coincide?)");

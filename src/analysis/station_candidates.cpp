@@ -217,7 +217,7 @@ StationCandidates keep_free_positions(const PointCloud& cloud,
   if (cloud.size() == 0) throw std::invalid_argument("station candidates: the cloud is empty");
   check_positions(positions, clearance);
   const std::vector<bool> clear = clear_of_points(cloud, positions, clearance, threads, progress);
-  const double radius = kProbeRadiusPerSpacing * measure_point_spacing(cloud).spacing;
+  const double radius = kProbeRadiusPerSpacing * measure_point_spacing(cloud, threads).spacing;
   const SphereOctree tree(make_spheres(cloud.positions, static_cast<float>(radius)),
                           sphere_octree_options(), progress);
   return keep(std::move(positions), clear, {}, tree, up, progress);

@@ -162,11 +162,11 @@ void warn_viewpoints_inside_solids(const std::vector<ViewpointVisibility>& visib
 }
 
 PointRadius choose_point_radius(const PointCloud& cloud, double requested, const std::string& job,
-                                const std::optional<PointSpacing>& measured) {
+                                const std::optional<PointSpacing>& measured, unsigned threads) {
   PointRadius chosen;
   chosen.automatic = is_auto_radius(requested);
   try {
-    chosen.spacing = measured ? *measured : measure_point_spacing(cloud);
+    chosen.spacing = measured ? *measured : measure_point_spacing(cloud, threads);
   } catch (const std::invalid_argument& e) {
     // Too few distinct points for a spacing: fine with an explicit radius.
     if (!chosen.automatic) {

@@ -77,9 +77,10 @@ UpAxis parse_up(const std::string& up);
 // The point radius a job traces with: the request's, or for kAutoPointRadius
 // the measured spacing times kScanRadiusPerSpacing (`job` "-fscan") or
 // kTracingRadiusPerSpacing ("-poc"). The spacing is measured either way,
-// unless `measured` already holds it (the disc model's search measures it).
+// unless `measured` already holds it (the disc model's search measures it),
+// on `threads` (0 = all cores).
 PointRadius choose_point_radius(const PointCloud& cloud, double requested, const std::string& job,
-                                const std::optional<PointSpacing>& measured = std::nullopt);
+                                const std::optional<PointSpacing>& measured, unsigned threads);
 Json::Value point_radius_json(const PointRadius& radius);
 
 // A cloud job's point settings, as its keys hold them.

@@ -23,16 +23,6 @@ void validate(const MeshOcclusionRequest& request) {
   request.viewpoints.validate();
 }
 
-MeshOcclusionOptions mesh_occlusion_options(const MeshOcclusionRequest& request) {
-  MeshOcclusionOptions options;
-  options.samples_per_unit_area = request.samples_per_unit_area;
-  options.octree.min_cell_size = static_cast<float>(request.octree_resolution);
-  options.octree.enable_acceleration = request.enable_acceleration;
-  options.seed = request.seed;
-  options.threads = request.threads;
-  return options;
-}
-
 MeshOcclusionReport run_mesh_occlusion_on(const TriangleMesh& mesh,
                                           const MeshOcclusionRequest& request,
                                           const Progress& progress) {

@@ -80,7 +80,8 @@ PointModel choose_point_model(const PointCloud& cloud, const PointSettings& sett
   PointModelReport& report = model.report;
   report.primitive = settings.primitive;
   if (settings.primitive == "sphere") {
-    report.radius = choose_point_radius(cloud, settings.point_radius, job);
+    report.radius =
+        choose_point_radius(cloud, settings.point_radius, job, std::nullopt, settings.threads);
     warn_open_surfaces(report, job, warnings);
     return model;
   }
@@ -100,7 +101,8 @@ PointModel choose_point_model(const PointCloud& cloud, const PointSettings& sett
                      "; trace spheres of a given radius instead (primitive sphere)");
   }
   // The spacing from the discs' own search, when it measured it.
-  report.radius = choose_point_radius(cloud, settings.point_radius, job, model.surfels->spacing);
+  report.radius = choose_point_radius(cloud, settings.point_radius, job, model.surfels->spacing,
+                                      settings.threads);
   const SurfelStats& stats = model.surfels->stats;
   report.surfels = stats;
   report.normal_neighbours = settings.normal_neighbours;

@@ -7,6 +7,7 @@
 #include "occlusion/app/errors.hpp"
 #include "occlusion/app/json_output.hpp"
 #include "occlusion/app/memory_budget.hpp"
+#include "occlusion/app/mesh_occlusion_job.hpp"
 #include "occlusion/app/work_budget.hpp"
 #include "occlusion/io/atomic_file.hpp"
 #include "occlusion/io/cloud_io.hpp"
@@ -83,12 +84,8 @@ RegionGrowingReport run_region_growing_occlusion(const RegionGrowingRequest& req
   check_work_budget(mesh_occlusion_work(report.estimate.mesh, report.samples_per_unit_area,
                                         viewpoints.positions.size(), request.enable_acceleration),
                     request.max_work);
-  MeshOcclusionOptions options;
-  options.samples_per_unit_area = report.samples_per_unit_area;
-  options.octree.min_cell_size = static_cast<float>(request.octree_resolution);
-  options.octree.enable_acceleration = request.enable_acceleration;
-  options.seed = request.seed;
-  options.threads = request.threads;
+  const MeshOcclusionOptions options =
+      mesh_occlusion_options(request, report.samples_per_unit_area);
   // Traced in the cloud's local frame, reported and written in the file's.
   report.occlusion =
       compute_mesh_occlusion(report.estimate.mesh, viewpoints.positions, options, progress);

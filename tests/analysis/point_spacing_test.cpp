@@ -47,6 +47,12 @@ TEST(PointSpacing, MedianIgnoresFarStraysAndSparseTails) {
   const PointSpacing spacing = measure_point_spacing(cloud);
   EXPECT_NEAR(spacing.spacing, 0.01, 1e-6);
   EXPECT_NEAR(spacing.quantile_90, 0.04, 1e-6);
+  // --threads 1 measures the same, bit for bit.
+  const PointSpacing one_thread = measure_point_spacing(cloud, 1);
+  EXPECT_EQ(one_thread.spacing, spacing.spacing);
+  EXPECT_EQ(one_thread.quantile_10, spacing.quantile_10);
+  EXPECT_EQ(one_thread.quantile_90, spacing.quantile_90);
+  EXPECT_EQ(one_thread.samples, spacing.samples);
 }
 
 TEST(PointSpacing, RefusesCloudsWithoutTwoDistinctPositions) {

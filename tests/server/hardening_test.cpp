@@ -102,7 +102,11 @@ TEST(Hardening, MinSamplesIsInTheMemoryBudget) {
     const std::string message = reply.final["message"].asString();
     EXPECT_NE(message.find("lower min_samples"), std::string::npos) << message;
     EXPECT_NE(message.find("max_memory_mb = 400"), std::string::npos) << message;
-    EXPECT_EQ(work_stages(reply), std::vector<std::string>{}) << "refused after it started";
+    // The mesh is estimated first (its area sets the samples), but never sampled.
+    for (const std::string& stage : work_stages(reply)) {
+      EXPECT_TRUE(stage != "sampling" && stage != "building octree" && stage != "tracing")
+          << stage << " ran before the refusal";
+    }
   }
   expect_serving(server);
 }

@@ -39,8 +39,9 @@ struct PointSpacing {
   std::size_t duplicate_hits = 0;  // sampled points with a neighbour at the same position
 };
 
-// Throws std::invalid_argument when the cloud has fewer than two distinct positions.
-PointSpacing measure_point_spacing(const PointCloud& cloud);
+// Throws std::invalid_argument when the cloud has fewer than two distinct
+// positions. `threads`: 0 = all cores.
+PointSpacing measure_point_spacing(const PointCloud& cloud, unsigned threads = 0);
 
 // The sample: points 0, stride, 2 stride, ... of a cloud of `points`.
 std::size_t spacing_stride(std::size_t points);

@@ -51,11 +51,25 @@ void validate(const MeshOcclusionRequest& request);
 // Every key of the job (config section occlusion.mesh), declared once.
 const Keys<MeshOcclusionRequest>& mesh_occlusion_keys();
 
+// The analysis's options as a request's keys set them, at a sampling density
+// (the request's, or -rgoc's raised to min_samples): the mesh job, the
+// server's live station and -rgoc on the mesh it estimates trace the same way.
+template <class Request>
+MeshOcclusionOptions mesh_occlusion_options(const Request& request, double samples_per_unit_area) {
+  MeshOcclusionOptions options;
+  options.samples_per_unit_area = samples_per_unit_area;
+  options.octree.min_cell_size = static_cast<float>(request.octree_resolution);
+  options.octree.enable_acceleration = request.enable_acceleration;
+  options.seed = request.seed;
+  options.threads = request.threads;
+  return options;
+}
+inline MeshOcclusionOptions mesh_occlusion_options(const MeshOcclusionRequest& request) {
+  return mesh_occlusion_options(request, request.samples_per_unit_area);
+}
+
 // Loads the mesh, computes, writes outputs. Throws UsageError, InputError,
 // OutputError, Cancelled.
-// The analysis's options as the request's keys set them (the job and the
-// server's live station trace the same way).
-MeshOcclusionOptions mesh_occlusion_options(const MeshOcclusionRequest& request);
 MeshOcclusionReport run_mesh_occlusion(const MeshOcclusionRequest& request,
                                        const Progress& progress = {});
 
