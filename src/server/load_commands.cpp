@@ -36,7 +36,11 @@ std::shared_ptr<LoadedScene> read_scene(const fs::path& path, const std::string&
   try {
     if (lower_case(fs::path(path).extension().string()) == ".obj" && !fs::is_directory(path)) {
       auto mesh = std::make_shared<const TriangleMesh>(read_obj(path.string()));
-      auto scene = mesh_scene(*mesh);
+      // Drawn in float32 as a cloud is: relative to the shift a cloud there
+      // would get, so a mesh in UTM coordinates is not drawn to half a metre.
+      auto scene =
+          mesh_scene(*mesh, mesh->vertices.empty() ? Eigen::Vector3d::Zero()
+                                                   : choose_global_shift(mesh->vertices.front()));
       scene->mesh = std::move(mesh);
       return scene;
     }

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 
 #include "occlusion/io/cloud_io.hpp"
 #include "server_fixture.hpp"
@@ -47,11 +48,28 @@ PointCloud utm_room() {
   return cloud;
 }
 
+// The same room as a mesh: 8 corners, 12 triangles facing in, written with
+// its coordinates in the file's frame (0.25 and 0.5 are exact in float too).
+void write_utm_room_mesh(const std::string& path) {
+  std::ofstream obj(path);
+  obj.precision(17);
+  for (int corner = 0; corner < 8; ++corner) {
+    obj << "v " << kShift.x() + 0.25 + ((corner & 1) ? 4.0 : 0.0) << ' '
+        << kShift.y() + 0.5 + ((corner & 2) ? 3.0 : 0.0) << ' ' << ((corner & 4) ? 2.5 : 0.0)
+        << '\n';
+  }
+  // Corner index = x + 2 y + 4 z, OBJ counts from 1.
+  obj << "f 1 2 4\nf 1 4 3\nf 5 7 8\nf 5 8 6\n"   // floor, ceiling
+      << "f 1 5 6\nf 1 6 2\nf 3 4 8\nf 3 8 7\n"   // y = 0, y = 3
+      << "f 1 3 7\nf 1 7 5\nf 2 6 8\nf 2 8 4\n";  // x = 0, x = 4
+}
+
 class FileFrame : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     server_ = new TestServer();
     write_cloud(server_->files().file("utm_room.ply"), utm_room());
+    write_utm_room_mesh(server_->files().file("utm_room.obj"));
   }
   static void TearDownTestSuite() {
     delete server_;
@@ -142,6 +160,34 @@ TEST_F(FileFrame, ExtractPolygonsStreamsItsMeshInTheLocalFrame) {
     EXPECT_GT(vertices[v + 1], -0.5f);
     EXPECT_LT(vertices[v + 1], 3.5f);
   }
+}
+
+// A mesh is read in double, but drawn in float32 as a cloud is: in UTM
+// coordinates it is streamed relative to the shift a cloud there would get
+// (float32 is 0.5 m coarse at 5.4e6), and the live station on it takes
+// file-frame positions as every job does.
+TEST_F(FileFrame, AMeshFarOutIsStreamedRelativeToAShift) {
+  const Reply reply = client_->request(6, "load", params(R"({"path": "utm_room.obj"})"));
+  ASSERT_TRUE(reply.ok()) << reply.final;
+  const Json::Value& result = reply.final["result"];
+  for (int axis = 0; axis < 3; ++axis) {
+    EXPECT_EQ(result["shift"][axis].asDouble(), kShift[axis]) << result;
+  }
+  EXPECT_EQ(result["bounds"]["min"][0].asDouble(), 500000.25);
+  EXPECT_EQ(result["bounds"]["max"][1].asDouble(), 5400003.5);
+  const auto vertices = frame_values<float>(*find_frame(reply, "positions"));
+  ASSERT_EQ(vertices.size(), 24u);
+  for (int corner = 0; corner < 8; ++corner) {
+    const auto c = static_cast<std::size_t>(corner);
+    EXPECT_EQ(vertices[3 * c], (corner & 1) ? 4.25f : 0.25f);
+    EXPECT_EQ(vertices[3 * c + 1], (corner & 2) ? 3.5f : 0.5f);
+    EXPECT_EQ(vertices[3 * c + 2], (corner & 4) ? 2.5f : 0.0f);
+  }
+  // From a file-frame position inside the closed box, all of it is seen.
+  const Reply inside = client_->request(
+      7, "station_view", params(R"({"path": "utm_room.obj", "position": [500002, 5400002, 1.2]})"));
+  ASSERT_TRUE(inside.ok()) << inside.final;
+  EXPECT_NEAR(inside.final["result"]["visible_fraction"].asDouble(), 1.0, 1e-9) << inside.final;
 }
 
 }  // namespace
