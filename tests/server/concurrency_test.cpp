@@ -201,7 +201,8 @@ TEST(Concurrency, ClientThatLeavesMidJobHasItsJobsCancelled) {
     ASSERT_TRUE(leaving->receive(kHangGuard).has_value());  // it runs
   }
   // The only worker is free again once the job noticed; had it run on, the
-  // load would wait for minutes behind it, past the guard.
+  // load would wait behind minutes of tracing (on a 2-core machine, past the
+  // guard).
   auto next = server.connect();
   const Reply reply =
       next->request(1, "load", params(R"({"path": "sample_room.obj"})"), kHangGuard);
