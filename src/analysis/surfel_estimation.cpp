@@ -187,8 +187,9 @@ class PixelGrid {
            c <= std::min(width - 1, column + kReach); ++c) {
         const std::uint32_t t = point_[static_cast<std::size_t>(r * width + c)];
         if (t == kNone || t == s) continue;
-        if ((sorted[t] - sorted[s]).cast<double>().norm() > reach) continue;
-        found.emplace_back((sorted[t] - sorted[s]).squaredNorm(), t);
+        const Eigen::Vector3f offset = sorted[t] - sorted[s];
+        if (offset.cast<double>().norm() > reach) continue;
+        found.emplace_back(offset.squaredNorm(), t);
       }
     }
     std::sort(found.begin(), found.end());
