@@ -111,7 +111,7 @@ TEST(OrganisedFrameSurfels, PixelsThatDoNotFitTheGridAreRefused) {
   EXPECT_THROW(estimate_surfels(frame, {}), std::invalid_argument);
 }
 
-// The real Kinect frame (../shared/data/README.mOSD.md), 640 x 480, its
+// The real Kinect frame (files/pcl/README.mOSD.md), 640 x 480, its
 // camera at the origin with a 525-pixel focal length and the principal point
 // at (319.5, 239.5): both directions of the truth a frame holds. Every point
 // it measured is seen from its camera, and a ray through a measured pixel
@@ -119,7 +119,7 @@ TEST(OrganisedFrameSurfels, PixelsThatDoNotFitTheGridAreRefused) {
 // surface lets its pixels' rays through).
 TEST(OrganisedFrameSurfels, RealKinectFrameKeepsItsPointsAndClosesWhatItSaw) {
   const PointCloud frame =
-      read_cloud(std::string(OCCLUSION_SOURCE_DIR) + "/../shared/data/mosd_learn25.pcd");
+      read_cloud(std::string(OCCLUSION_SOURCE_DIR) + "/files/pcl/mosd_learn25.pcd");
   ASSERT_EQ(frame.size(), 195021u);
   ASSERT_EQ(frame.pixels.size(), frame.size());
   constexpr float kKinectFocal = 525.0f, kCentreU = 319.5f, kCentreV = 239.5f;

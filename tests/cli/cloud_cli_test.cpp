@@ -21,7 +21,7 @@ const std::string kSource = OCCLUSION_SOURCE_DIR;
 const std::string kRoom = "'" + kSource + "/files/s3dis_synthetic/Area_1/office_1'";
 const std::string kArea = "'" + kSource + "/files/s3dis_synthetic/Area_1'";
 const std::string kOpenings = "'" + kSource + "/files/s3dis_synthetic/openings.txt'";
-const std::string kRealScan = "'" + kSource + "/../shared/data/room_scan1.pcd'";
+const std::string kRealScan = "'" + kSource + "/files/pcl/room_scan1.pcd'";
 // The sample office's surfaces are closed by the default model (discs sized
 // from their neighbours); spheres needed --point-radius 0.06 for it.
 const std::string kClosedSurfaces = "";
@@ -131,7 +131,7 @@ TEST(CloudCli, ExampleConfigRunsEveryCloudJob) {
 // the default (automatic) radius, the scan keeps every point, and occlusion
 // is taken over the sensor's field of view.
 TEST(CloudCli, KinectFrameFromItsSensor) {
-  const std::string frame = "'" + kSource + "/../shared/data/mosd_learn25.pcd' --viewpoint 0,0,0";
+  const std::string frame = "'" + kSource + "/files/pcl/mosd_learn25.pcd' --viewpoint 0,0,0";
   const Json::Value scan = run_json("-fscan " + frame);
   EXPECT_EQ(scan["points"].asUInt64(), 195021u);
   // Discs fitted to the frame's pixel grid: 99.3 % (the nearest points in

@@ -20,7 +20,7 @@ using testing::run_json;
 using testing::TempDir;
 
 const std::string kSource = OCCLUSION_SOURCE_DIR;
-const std::string kRealScan = "'" + kSource + "/../shared/data/room_scan1.pcd'";
+const std::string kRealScan = "'" + kSource + "/files/pcl/room_scan1.pcd'";
 
 // A deterministic jitter in [-0.5, 0.5) (splitmix64), so that the synthetic
 // scan is not a perfect grid, whose symmetric neighbourhoods real scans lack.

@@ -12,7 +12,7 @@
 namespace occlusion {
 namespace {
 
-const std::string kRoomScan = std::string(OCCLUSION_SOURCE_DIR) + "/../shared/data/room_scan1.pcd";
+const std::string kRoomScan = std::string(OCCLUSION_SOURCE_DIR) + "/files/pcl/room_scan1.pcd";
 
 std::string pcd_header(const std::string& fields, const std::string& sizes,
                        const std::string& types, std::size_t width, std::size_t height,

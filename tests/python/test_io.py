@@ -1,5 +1,5 @@
 """Readers and writers: round trips through every format, dtypes and shapes,
-real files from the shared data, and the error classification."""
+real public files the repository carries (files/), and the error classification."""
 
 import pathlib
 
@@ -9,7 +9,7 @@ import pytest
 import occlusion
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
-SHARED = ROOT.parent / "shared" / "data"
+PCL_DATA = ROOT / "files" / "pcl"
 
 
 def sample_cloud(rng, count=50):
@@ -85,9 +85,8 @@ def test_skip_bad_lines(tmp_path):
     assert len(cloud) == 2 and cloud.skipped_lines == 1
 
 
-@pytest.mark.skipif(not (SHARED / "room_scan1.pcd").exists(), reason="shared data absent")
 def test_real_scan_reads():
-    cloud = occlusion.read_cloud(str(SHARED / "room_scan1.pcd"))
+    cloud = occlusion.read_cloud(str(PCL_DATA / "room_scan1.pcd"))
     assert cloud.positions.shape[1] == 3 and len(cloud) > 1000
     assert np.isfinite(cloud.positions).all()
 

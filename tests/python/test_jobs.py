@@ -100,7 +100,7 @@ def test_scan_equals_cli_and_arrays_match_files(tmp_path):
     assert occlusion.scan(cloud.positions, pattern=1).visible_fraction == result.visible_fraction
 
 
-KINECT = str(ROOT.parent / "shared" / "data" / "mosd_learn25.pcd")
+KINECT = str(ROOT / "files" / "pcl" / "mosd_learn25.pcd")
 
 
 def test_a_depth_frame_read_into_python_keeps_its_camera_and_grid():
