@@ -10,6 +10,7 @@
 #include "occlusion/app/reconstruct_job.hpp"
 #include "occlusion/app/region_growing_job.hpp"
 #include "occlusion/app/scan_job.hpp"
+#include "occlusion/app/simulate_job.hpp"
 #include "occlusion/app/study_job.hpp"
 
 namespace occlusion {
@@ -164,6 +165,24 @@ std::vector<JobInfo> make_jobs() {
                   {},
                   {}},
           &plan_keys, &run_plan),
+      entry(JobInfo{"simulate",
+                    {"simulate"},
+                    "simulate",
+                    "sim",
+                    "path",
+                    "MESH [options]",
+                    "a virtual laser scanner or depth camera scanning a mesh",
+                    "Scan a mesh as a real sensor would: a terrestrial laser scanner (an angular\n"
+                    "grid in azimuth and elevation, range noise, range limits, returns lost at\n"
+                    "grazing incidence, and optionally a divergent beam whose echoes mix at depth\n"
+                    "edges) or a depth camera (a pinhole, depth noise growing with depth, and\n"
+                    "disparity steps). Each beam is a closest-hit ray through the mesh's octree;\n"
+                    "noise is seeded per beam. The cloud keeps its stations, each point's\n"
+                    "station, and labels and instances from the mesh's groups; with truth, each\n"
+                    "point's true surface point, normal and face. docs/simulate.md has the models.",
+                    {},
+                    {}},
+            &simulate_keys, &run_simulate),
       entry(
           JobInfo{"study",
                   {"study"},

@@ -116,6 +116,20 @@ MemoryEstimate scan_memory(std::size_t points, std::size_t viewpoints, bool disc
           ""};
 }
 
+MemoryEstimate simulate_memory(const TriangleMesh& mesh, std::uint64_t beams_per_station,
+                               std::size_t stations, bool truth) {
+  // Per beam at most one point: position, label, instance, station, the
+  // truth kept beside it (point, normal, face, cell: 36 bytes), and a written
+  // copy; the rays and hits of one block are small beside it.
+  const std::uint64_t beams = times(beams_per_station, stations);
+  std::uint64_t bytes = times(beams, 24 + 36 + 24 + (truth ? 28 : 0));
+  bytes = plus(bytes, times(mesh.face_count(), kTriangleOctreeBytes + 48));
+  return {bytes,
+          at_least(beams) + " beams (" + at_least(beams_per_station) + " a station x " +
+              count(stations) + " stations)",
+          "azimuth_step and elevation_step, or width and height"};
+}
+
 MemoryEstimate plan_memory(MemoryEstimate model, std::size_t targets, std::size_t candidates) {
   // One bit per (candidate, target), each row padded to whole 64-bit words.
   const std::uint64_t row_bytes = times((static_cast<std::uint64_t>(targets) + 63) / 64, 8);

@@ -115,28 +115,9 @@ const Keys<PlanRequest>& plan_keys() {
            .metavar("FILE")
            .doc("candidate positions from a cloud file instead of the grid (x y z per line in a "
                 ".txt/.xyz, or any cloud format), in the scene's frame; filtered as the grid is"),
-       custom_key<R>(
-           "placed", ValueType::kPointList,
-           [](R& r, const Json::Value& v) {
-             r.placed.clear();
-             for (const auto& p : v)
-               r.placed.emplace_back(p[0].asDouble(), p[1].asDouble(), p[2].asDouble());
-           },
-           [](const R& r) {
-             if (r.placed.empty()) return Json::Value();
-             Json::Value list(Json::arrayValue);
-             for (const auto& p : r.placed) {
-               Json::Value point(Json::arrayValue);
-               for (int axis = 0; axis < 3; ++axis) point.append(p[axis]);
-               list.append(point);
-             }
-             return list;
-           })
+       point_list_key("placed", &R::placed)
            .cli("--placed")
-           .metavar("X,Y,Z")
-           .repeatable()
            .max_items(10000)
-           .unit("scene units")
            .doc("a station already there, repeatable: kept and counted first"),
        key("existing_stations", &R::existing_stations)
            .doc("a cloud's own stations (E57 scans, a PCD sensor) count as placed")},

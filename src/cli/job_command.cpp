@@ -36,6 +36,7 @@ const std::map<std::string, JobFace>& job_faces() {
       {"extract_polygons", {&print_extract_polygons}},
       {"study", {&print_study, &study_exit_status}},
       {"plan", {&print_plan}},
+      {"simulate", {&print_simulate}},
   };
   return table;
 }

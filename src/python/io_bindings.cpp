@@ -61,15 +61,9 @@ py::object optional_array(py::array array, bool present) {
   return present ? py::object(std::move(array)) : py::object(py::none());
 }
 
-CloudArrays read_cloud_arrays(const std::string& path, bool skip_bad_lines) {
-  CloudReadOptions options;
-  options.skip_bad_lines = skip_bad_lines;
-  CloudReadReport report;
-  PointCloud cloud;
-  {
-    py::gil_scoped_release release;
-    cloud = read_cloud(path, options, &report);
-  }
+// A cloud in memory as Python's Cloud; `report` adds what reading said
+// (extra fields, dropped points, rooms).
+CloudArrays make_cloud_arrays(PointCloud cloud, CloudReadReport report) {
   CloudArrays out;
   out.shift = {cloud.shift.x(), cloud.shift.y(), cloud.shift.z()};
   out.positions = to_numpy<float>(std::move(cloud.positions));
@@ -99,6 +93,18 @@ CloudArrays read_cloud_arrays(const std::string& path, bool skip_bad_lines) {
   out.skipped_lines = report.skipped_lines;
   out.rooms = std::move(report.rooms);
   return out;
+}
+
+CloudArrays read_cloud_arrays(const std::string& path, bool skip_bad_lines) {
+  CloudReadOptions options;
+  options.skip_bad_lines = skip_bad_lines;
+  CloudReadReport report;
+  PointCloud cloud;
+  {
+    py::gil_scoped_release release;
+    cloud = read_cloud(path, options, &report);
+  }
+  return make_cloud_arrays(std::move(cloud), std::move(report));
 }
 
 std::optional<CloudFormat> cloud_format(const std::optional<std::string>& name) {
@@ -197,6 +203,12 @@ std::vector<std::vector<Eigen::Vector3d>> polygons_from_list(const py::list& pol
 }
 
 }  // namespace
+
+py::object cloud_object(PointCloud cloud, std::vector<ScalarField> fields) {
+  CloudReadReport report;
+  report.extra_fields = std::move(fields);
+  return py::cast(make_cloud_arrays(std::move(cloud), std::move(report)));
+}
 
 void bind_io(py::module_& m) {
   py::class_<CloudArrays>(m, "Cloud", "A point cloud read by read_cloud.")

@@ -32,6 +32,7 @@
 #include "occlusion/app/reconstruct_job.hpp"
 #include "occlusion/app/region_growing_job.hpp"
 #include "occlusion/app/scan_job.hpp"
+#include "occlusion/app/simulate_job.hpp"
 #include "occlusion/app/study_job.hpp"
 #include "station_values.hpp"
 
@@ -125,6 +126,17 @@ JobResult result_of(const Report& report) {
   return result;
 }
 
+// A mesh given as (vertices, faces) or (vertices, faces, face_group, group_names).
+TriangleMesh mesh_from_tuple(const py::handle& source) {
+  const py::tuple parts = py::reinterpret_borrow<py::object>(source).cast<py::tuple>();
+  if (parts.size() != 2 && parts.size() != 4) {
+    throw py::value_error(
+        "source: a path, (vertices, faces) or (vertices, faces, face_group, group_names)");
+  }
+  return parts.size() == 2 ? mesh_from_arrays(parts[0], parts[1], py::none(), py::none())
+                           : mesh_from_arrays(parts[0], parts[1], parts[2], parts[3]);
+}
+
 JobResult mesh_occlusion(const py::handle& source, const py::object& progress,
                          const py::kwargs& keys) {
   const std::string path = source_path(source);
@@ -134,9 +146,7 @@ JobResult mesh_occlusion(const py::handle& source, const py::object& progress,
   if (!path.empty()) {
     report = watch.run([&](const Progress& p) { return run_mesh_occlusion(request, p); });
   } else {
-    const py::tuple pair = py::reinterpret_borrow<py::object>(source).cast<py::tuple>();
-    if (pair.size() != 2) throw py::value_error("source: a path or (vertices, faces)");
-    const TriangleMesh mesh = mesh_from_arrays(pair[0], pair[1], py::none(), py::none());
+    const TriangleMesh mesh = mesh_from_tuple(source);
     request.path = "<arrays>";
     report =
         watch.run([&](const Progress& p) { return mesh_occlusion_in_memory(mesh, request, p); });
@@ -144,6 +154,25 @@ JobResult mesh_occlusion(const py::handle& source, const py::object& progress,
   JobResult result = result_of(report);
   result.arrays["face_visible_fraction"] =
       to_numpy<float>(std::vector<float>(report.result.face_visible_fraction));
+  return result;
+}
+
+JobResult simulate(const py::handle& source, const py::object& progress, const py::kwargs& keys) {
+  const std::string path = source_path(source);
+  SimulateRequest request = request_from(simulate_keys(), "simulate", keys, path);
+  PythonProgress watch(progress);
+  SimulateReport report;
+  if (!path.empty()) {
+    report = watch.run([&](const Progress& p) { return run_simulate(request, p); });
+  } else {
+    const TriangleMesh mesh = mesh_from_tuple(source);
+    request.path = "<arrays>";
+    report = watch.run([&](const Progress& p) { return run_simulate_on(mesh, request, p); });
+  }
+  JobResult result = result_of(report);
+  std::vector<ScalarField> truth;
+  if (request.truth) truth = truth_fields(report.scan);
+  result.arrays["cloud"] = cloud_object(std::move(report.scan.cloud), std::move(truth));
   return result;
 }
 
@@ -208,10 +237,7 @@ JobResult plan(const py::handle& source, const py::object& labels, const py::obj
   if (!path.empty()) {
     report = watch.run([&](const Progress& p) { return run_plan(request, p); });
   } else if (py::isinstance<py::tuple>(source)) {
-    const py::tuple pair = py::reinterpret_borrow<py::object>(source).cast<py::tuple>();
-    if (pair.size() != 2)
-      throw py::value_error("source: a path, (vertices, faces), points or a Cloud");
-    const TriangleMesh mesh = mesh_from_arrays(pair[0], pair[1], py::none(), py::none());
+    const TriangleMesh mesh = mesh_from_tuple(source);
     request.path = "<arrays>";
     report = watch.run([&](const Progress& p) { return plan_mesh(mesh, request, p); });
   } else {
@@ -392,6 +418,15 @@ result.occlusion_level, result.face_visible_fraction.)doc")
                      "mesh's sample) the rank of the first station that sees it, -1 none; "
                      "candidates float64 (n, 3) and gain_left float64 (n,).") +
          keys_doc("plan"))
+            .c_str());
+  m.def("simulate", &simulate, source, py::kw_only(), progress,
+        (std::string("A virtual laser scanner or depth camera scanning a mesh (simulate): a path, "
+                     "(vertices, faces) or (vertices, faces, face_group, group_names).\n"
+                     "arrays: cloud, an occlusion.Cloud (labels and instances from the groups, "
+                     "stations, station_ids; a single camera's sensor and pixels; with "
+                     "truth=True, fields true_x .. true_nz and face), which scan() and "
+                     "cloud_occlusion() take as it is.") +
+         keys_doc("simulate"))
             .c_str());
   m.def(
       "region_growing_occlusion", &region_growing_occlusion, source, py::kw_only(), progress,

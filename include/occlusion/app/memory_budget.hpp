@@ -39,6 +39,9 @@ MemoryEstimate cloud_occlusion_memory(std::size_t points, std::size_t viewpoints
                                       bool discs);
 // -fscan: the point octree and the per-point counts.
 MemoryEstimate scan_memory(std::size_t points, std::size_t viewpoints, bool discs);
+// simulate: a point per beam at most, with its truth, and the mesh's octree.
+MemoryEstimate simulate_memory(const TriangleMesh& mesh, std::uint64_t beams_per_station,
+                               std::size_t stations, bool truth);
 // plan: the scene's model (scan_memory or mesh_occlusion_memory with one
 // viewpoint) and the coverage matrix of `candidates` rows over `targets`.
 MemoryEstimate plan_memory(MemoryEstimate model, std::size_t targets, std::size_t candidates);

@@ -31,6 +31,32 @@ KeyBuilder<R> seed_key(std::uint64_t R::*field) {
       .doc("random seed: the same seed gives the same result, whatever the thread count");
 }
 
+// A list of points ([[x, y, z], ...]; on the command line X,Y,Z, repeatable):
+// a plan's placed stations, a simulated scan's stations.
+template <class R>
+KeyBuilder<R> point_list_key(std::string name, std::vector<Eigen::Vector3d> R::*field) {
+  return custom_key<R>(
+             std::move(name), ValueType::kPointList,
+             [field](R& r, const Json::Value& v) {
+               (r.*field).clear();
+               for (const auto& p : v)
+                 (r.*field).emplace_back(p[0].asDouble(), p[1].asDouble(), p[2].asDouble());
+             },
+             [field](const R& r) {
+               if ((r.*field).empty()) return Json::Value();
+               Json::Value list(Json::arrayValue);
+               for (const auto& p : r.*field) {
+                 Json::Value point(Json::arrayValue);
+                 for (int axis = 0; axis < 3; ++axis) point.append(p[axis]);
+                 list.append(point);
+               }
+               return list;
+             })
+      .metavar("X,Y,Z")
+      .repeatable()
+      .unit("scene units");
+}
+
 template <class R>
 KeyBuilder<R> threads_key(unsigned R::*field) {
   return key("threads", field).range(0, 1024).metavar("N").doc("worker threads; 0 = all cores");
