@@ -1,6 +1,7 @@
 #include "session.hpp"
 
 #include <algorithm>
+#include <optional>
 
 #include "command_params.hpp"
 #include "error_reply.hpp"
@@ -218,32 +219,43 @@ void Session::announce_upload(const Request& request) {
 void Session::on_binary(std::string message) {
   Json::Value id;
   try {
-    const FrameHeader header = decode_frame_header(message);
-    id = header.request_id;
+    // The header's id is trusted before the rest of the message: a malformed
+    // upload ends its own request, answered under its id, and frees the id.
+    const std::optional<std::uint32_t> named = header_request_id(message);
     Upload upload;
     Flag flag;
     {
       const std::lock_guard<std::mutex> lock(mutex_);
-      if (refused_uploads_.erase(header.request_id) > 0) return;
-      const auto it = uploads_.find(header.request_id);
-      if (it == uploads_.end()) {
-        throw ProtocolError("unexpected_binary",
-                            "no upload was announced with id " + std::to_string(header.request_id));
+      if (named && refused_uploads_.erase(*named) > 0) return;
+      const auto it = named ? uploads_.find(*named) : uploads_.end();
+      if (it != uploads_.end()) {
+        upload = it->second;
+        flag = running_.at(it->first);
+        uploads_.erase(it);
       }
-      upload = it->second;
-      uploads_.erase(it);
-      flag = running_.at(header.request_id);
     }
-    if (header.kind != FrameKind::kUpload || header.type != ElementType::kUint8 ||
-        header.components != 1 || header.count != upload.size) {
-      finish(header.request_id);
-      throw ProtocolError("unexpected_binary", "the upload frame must be kind 'upload', uint8, " +
-                                                   std::to_string(upload.size) +
-                                                   " bytes as announced");
+    if (!flag) {
+      const FrameHeader header = decode_frame_header(message);
+      id = header.request_id;
+      throw ProtocolError("unexpected_binary",
+                          "no upload was announced with id " + std::to_string(header.request_id));
+    }
+    id = *named;
+    try {
+      const FrameHeader header = decode_frame_header(message);
+      if (header.kind != FrameKind::kUpload || header.type != ElementType::kUint8 ||
+          header.components != 1 || header.count != upload.size) {
+        throw ProtocolError("unexpected_binary", "the upload frame must be kind 'upload', uint8, " +
+                                                     std::to_string(upload.size) +
+                                                     " bytes as announced");
+      }
+    } catch (...) {
+      finish(*named);
+      throw;
     }
     auto bytes = std::make_shared<std::string>(std::move(message));
     submit(
-        "upload", header.request_id, Json::Value(Json::objectValue),
+        "upload", *named, Json::Value(Json::objectValue),
         [name = upload.name, bytes](CommandContext& context) {
           return store_upload(context, name, std::string_view(*bytes).substr(kFrameHeaderSize));
         },
