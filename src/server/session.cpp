@@ -48,6 +48,7 @@ std::string hello_message(const Limits& limits) {
   limit["max_memory_mb"] = Json::UInt64(limits.max_memory_mb);
   limit["max_work"] = limits.max_work;
   limit["max_running_per_client"] = Json::UInt64(limits.max_running_per_client);
+  limit["max_queued_per_client"] = Json::UInt64(limits.max_queued_per_client);
   json["limits"] = limit;
   Json::Value suffixes(Json::arrayValue);
   for (const auto& suffix : upload_suffixes()) suffixes.append(suffix);
@@ -128,18 +129,22 @@ void Session::submit(const std::string& command, std::uint32_t id, Json::Value p
   auto self = shared_from_this();
   // Jobs share the workers fairly between clients; loads, uploads and the
   // live station, which a client waits on to go on working, are not held back
-  // behind its own jobs.
+  // behind its own jobs. All of them wait in this connection's share of the queue.
   const Command* entry = find_command(command);
   const bool is_job = entry == nullptr || !entry->waited_on;
   const bool queued = server_.pool.submit(
-      is_job ? this : nullptr,
+      this,
       [self, command, id, params = std::move(params), run = std::move(run), flag](Lane lane) {
         self->execute(command, id, params, run, flag, lane);
       },
-      position_reporter(id), may_use_reserve);
+      position_reporter(id), WorkerPool::Kind{is_job, may_use_reserve});
   if (!queued) {
     finish(id);
-    send_error(Json::Value(id), command, "busy", "too many jobs are waiting; try again later");
+    send_error(Json::Value(id), command, "busy",
+               "too many requests are waiting (" +
+                   std::to_string(server_.limits.max_queued_per_client) + " of a connection, " +
+                   std::to_string(server_.limits.max_queued_jobs) +
+                   " in all); try again once some are answered");
   }
 }
 
