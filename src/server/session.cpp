@@ -7,6 +7,7 @@
 #include "error_reply.hpp"
 #include "occlusion/app/job_registry.hpp"
 #include "occlusion/app/work_budget.hpp"
+#include "occlusion/io/named_paths.hpp"
 #include "occlusion/server/protocol_error.hpp"
 #include "upload.hpp"
 
@@ -156,6 +157,10 @@ void Session::execute(const std::string& command, std::uint32_t id, const Json::
       on_reserve && (limits.max_work <= 0 || limits.reserve_max_work < limits.max_work)
           ? limits.reserve_max_work
           : limits.max_work;
+  // A file of the data directory, or an upload, names files inside it only.
+  const NamedPathScope inside_data([this](const std::string& file, const std::string& named) {
+    return server_.root.resolve_named(file, named).string();
+  });
   std::string final_reply;
   try {
     CommandContext context(server_, *outbox_, id, params, flag.get(), max_work);
