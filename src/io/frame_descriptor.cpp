@@ -9,6 +9,7 @@
 
 #include "occlusion/io/file_bytes.hpp"
 #include "occlusion/io/input_error.hpp"
+#include "occlusion/io/named_paths.hpp"
 
 namespace occlusion::detail {
 namespace {
@@ -108,9 +109,7 @@ class DescriptorParser {
     if (!value.isString() || value.asString().empty()) {
       fail(value, std::string("'") + key + "' is a non-empty string: a PNG file's path");
     }
-    const std::filesystem::path given(value.asString());
-    if (given.is_absolute()) return given.string();
-    return (std::filesystem::path(path_).parent_path() / given).string();
+    return resolve_named_path(path_, value.asString());
   }
 
   double number(const Json::Value& value, const std::string& name) const {

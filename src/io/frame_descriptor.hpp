@@ -15,7 +15,7 @@ inline constexpr const char* kFrameDescriptorSuffix = ".frame.json";
 
 struct FrameDescriptor {
   std::string name;        // the station's name: `name`, else the file name before the suffix
-  std::string depth_path;  // resolved from the descriptor's folder
+  std::string depth_path;  // as resolve_named_path resolves it (named_paths.hpp)
   std::optional<std::string> colour_path;
   double fx = 0, fy = 0, cx = 0, cy = 0;  // pixels
   double depth_scale = 0;                 // depth values per metre

@@ -142,7 +142,7 @@ FrameHeader decode_frame_header(std::string_view message) {
   if (!known_type(type)) fail("unknown element type " + std::to_string(type));
   FrameHeader header;
   header.kind = static_cast<FrameKind>(get<std::uint16_t>(message, 6));
-  header.request_id = get<std::uint32_t>(message, 8);
+  header.request_id = *header_request_id(message);
   header.type = static_cast<ElementType>(type);
   header.components = get<std::uint8_t>(message, 13);
   header.count = get<std::uint64_t>(message, 16);
@@ -154,6 +154,11 @@ FrameHeader decode_frame_header(std::string_view message) {
     fail("payload of " + std::to_string(payload) + " bytes disagrees with the header");
   }
   return header;
+}
+
+std::optional<std::uint32_t> header_request_id(std::string_view message) {
+  if (message.size() < kFrameHeaderSize) return std::nullopt;
+  return get<std::uint32_t>(message, 8);
 }
 
 void set_request_id(std::string& message, std::uint32_t request_id) {

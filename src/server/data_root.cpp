@@ -73,6 +73,17 @@ fs::path DataRoot::resolve(const std::string& relative, bool must_exist) const {
   return resolved;
 }
 
+fs::path DataRoot::resolve_named(const std::string& file, const std::string& named) const {
+  // A file outside (it cannot be one) keeps its absolute folder: refused below.
+  const fs::path folder = relative(fs::path(file).parent_path().string());
+  const fs::path given(named);
+  try {
+    return resolve(given.is_absolute() ? named : (folder / given).string(), false);
+  } catch (const ProtocolError& e) {
+    throw ProtocolError(e.code, "'" + relative(file) + "' names '" + named + "': " + e.what());
+  }
+}
+
 void DataRoot::check_nested(const fs::path& dir, const std::string& relative, int depth,
                             std::size_t& seen) const {
   std::error_code error;

@@ -15,6 +15,7 @@
 #include "occlusion/io/cloud_io.hpp"
 #include "occlusion/io/input_error.hpp"
 #include "occlusion/io/mesh_reader.hpp"
+#include "occlusion/io/named_paths.hpp"
 #include "occlusion/io/obj_reader.hpp"
 #include "occlusion/server/protocol_error.hpp"
 #include "upload.hpp"
@@ -147,6 +148,11 @@ Json::Value store_upload(CommandContext& context, const std::string& name, std::
   }
   context.progress()("reading", 0.0);
   const std::string relative = root.relative(target.string());
+  // What the upload names is resolved, and refused, as the file it becomes:
+  // the temporary lies in the same folder, but the client knows only that name.
+  const NamedPathScope as_stored([&](const std::string& file, const std::string& named) {
+    return root.resolve_named(file == temporary.string() ? target.string() : file, named).string();
+  });
   const auto scene = read_scene(temporary, relative, false);
   context.progress().check_cancel();
   std::error_code error;

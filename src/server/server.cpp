@@ -158,6 +158,7 @@ Limits limits_of(const ServerOptions& options) {
   limits.max_text_bytes = options.max_text_bytes;
   limits.max_upload_bytes = options.max_upload_bytes;
   limits.max_queued_jobs = options.max_queued_jobs;
+  limits.max_queued_per_client = options.max_queued_per_client;
   limits.max_running_per_client = options.max_running_per_client;
   limits.max_memory_mb = options.max_memory_mb != 0 ? options.max_memory_mb : half_of_memory_mb();
   limits.max_work = options.max_work;

@@ -14,6 +14,9 @@ struct Limits {
   std::size_t max_text_bytes = std::size_t{1} << 20;
   std::size_t max_upload_bytes = std::size_t{256} << 20;
   std::size_t max_queued_jobs = 64;
+  // Requests of one connection waiting at once: a flood is refused `busy`
+  // for its own connection, and leaves the rest of the queue to others.
+  std::size_t max_queued_per_client = 16;
   // Jobs and loads of one connection running at once; the rest of its
   // requests wait while other clients' start (fairness).
   std::size_t max_running_per_client = 1;
@@ -34,7 +37,8 @@ struct ServerContext {
       : root(data),
         limits(server_limits),
         cache(cache_bytes),
-        pool(workers, server_limits.max_queued_jobs, server_limits.max_running_per_client) {}
+        pool(workers, server_limits.max_queued_jobs, server_limits.max_running_per_client,
+             server_limits.max_queued_per_client) {}
 
   DataRoot root;
   Limits limits;

@@ -1,11 +1,13 @@
 #include "session.hpp"
 
 #include <algorithm>
+#include <optional>
 
 #include "command_params.hpp"
 #include "error_reply.hpp"
 #include "occlusion/app/job_registry.hpp"
 #include "occlusion/app/work_budget.hpp"
+#include "occlusion/io/named_paths.hpp"
 #include "occlusion/server/protocol_error.hpp"
 #include "upload.hpp"
 
@@ -47,6 +49,7 @@ std::string hello_message(const Limits& limits) {
   limit["max_memory_mb"] = Json::UInt64(limits.max_memory_mb);
   limit["max_work"] = limits.max_work;
   limit["max_running_per_client"] = Json::UInt64(limits.max_running_per_client);
+  limit["max_queued_per_client"] = Json::UInt64(limits.max_queued_per_client);
   json["limits"] = limit;
   Json::Value suffixes(Json::arrayValue);
   for (const auto& suffix : upload_suffixes()) suffixes.append(suffix);
@@ -127,18 +130,22 @@ void Session::submit(const std::string& command, std::uint32_t id, Json::Value p
   auto self = shared_from_this();
   // Jobs share the workers fairly between clients; loads, uploads and the
   // live station, which a client waits on to go on working, are not held back
-  // behind its own jobs.
+  // behind its own jobs. All of them wait in this connection's share of the queue.
   const Command* entry = find_command(command);
   const bool is_job = entry == nullptr || !entry->waited_on;
   const bool queued = server_.pool.submit(
-      is_job ? this : nullptr,
+      this,
       [self, command, id, params = std::move(params), run = std::move(run), flag](Lane lane) {
         self->execute(command, id, params, run, flag, lane);
       },
-      position_reporter(id), may_use_reserve);
+      position_reporter(id), WorkerPool::Kind{is_job, may_use_reserve});
   if (!queued) {
     finish(id);
-    send_error(Json::Value(id), command, "busy", "too many jobs are waiting; try again later");
+    send_error(Json::Value(id), command, "busy",
+               "too many requests are waiting (" +
+                   std::to_string(server_.limits.max_queued_per_client) + " of a connection, " +
+                   std::to_string(server_.limits.max_queued_jobs) +
+                   " in all); try again once some are answered");
   }
 }
 
@@ -150,6 +157,10 @@ void Session::execute(const std::string& command, std::uint32_t id, const Json::
       on_reserve && (limits.max_work <= 0 || limits.reserve_max_work < limits.max_work)
           ? limits.reserve_max_work
           : limits.max_work;
+  // A file of the data directory, or an upload, names files inside it only.
+  const NamedPathScope inside_data([this](const std::string& file, const std::string& named) {
+    return server_.root.resolve_named(file, named).string();
+  });
   std::string final_reply;
   try {
     CommandContext context(server_, *outbox_, id, params, flag.get(), max_work);
@@ -218,32 +229,43 @@ void Session::announce_upload(const Request& request) {
 void Session::on_binary(std::string message) {
   Json::Value id;
   try {
-    const FrameHeader header = decode_frame_header(message);
-    id = header.request_id;
+    // The header's id is trusted before the rest of the message: a malformed
+    // upload ends its own request, answered under its id, and frees the id.
+    const std::optional<std::uint32_t> named = header_request_id(message);
     Upload upload;
     Flag flag;
     {
       const std::lock_guard<std::mutex> lock(mutex_);
-      if (refused_uploads_.erase(header.request_id) > 0) return;
-      const auto it = uploads_.find(header.request_id);
-      if (it == uploads_.end()) {
-        throw ProtocolError("unexpected_binary",
-                            "no upload was announced with id " + std::to_string(header.request_id));
+      if (named && refused_uploads_.erase(*named) > 0) return;
+      const auto it = named ? uploads_.find(*named) : uploads_.end();
+      if (it != uploads_.end()) {
+        upload = it->second;
+        flag = running_.at(it->first);
+        uploads_.erase(it);
       }
-      upload = it->second;
-      uploads_.erase(it);
-      flag = running_.at(header.request_id);
     }
-    if (header.kind != FrameKind::kUpload || header.type != ElementType::kUint8 ||
-        header.components != 1 || header.count != upload.size) {
-      finish(header.request_id);
-      throw ProtocolError("unexpected_binary", "the upload frame must be kind 'upload', uint8, " +
-                                                   std::to_string(upload.size) +
-                                                   " bytes as announced");
+    if (!flag) {
+      const FrameHeader header = decode_frame_header(message);
+      id = header.request_id;
+      throw ProtocolError("unexpected_binary",
+                          "no upload was announced with id " + std::to_string(header.request_id));
+    }
+    id = *named;
+    try {
+      const FrameHeader header = decode_frame_header(message);
+      if (header.kind != FrameKind::kUpload || header.type != ElementType::kUint8 ||
+          header.components != 1 || header.count != upload.size) {
+        throw ProtocolError("unexpected_binary", "the upload frame must be kind 'upload', uint8, " +
+                                                     std::to_string(upload.size) +
+                                                     " bytes as announced");
+      }
+    } catch (...) {
+      finish(*named);
+      throw;
     }
     auto bytes = std::make_shared<std::string>(std::move(message));
     submit(
-        "upload", header.request_id, Json::Value(Json::objectValue),
+        "upload", *named, Json::Value(Json::objectValue),
         [name = upload.name, bytes](CommandContext& context) {
           return store_upload(context, name, std::string_view(*bytes).substr(kFrameHeaderSize));
         },

@@ -5,9 +5,11 @@
 
 namespace occlusion::server {
 
-WorkerPool::WorkerPool(unsigned threads, std::size_t max_queued, std::size_t per_owner)
+WorkerPool::WorkerPool(unsigned threads, std::size_t max_queued, std::size_t per_owner,
+                       std::size_t per_owner_queued)
     : max_queued_(max_queued),
       per_owner_(std::max<std::size_t>(per_owner, 1)),
+      per_owner_queued_(std::max<std::size_t>(per_owner_queued, 1)),
       workers_(std::max(threads, 1u)) {
   threads_.reserve(workers_ + 1);
   for (std::size_t t = 0; t < workers_; ++t) threads_.emplace_back([this] { work(Lane::kWorker); });
@@ -18,12 +20,16 @@ WorkerPool::~WorkerPool() {
   stop();
 }
 
-bool WorkerPool::submit(Owner owner, Task task, OnPosition on_position, bool may_use_reserve) {
+bool WorkerPool::submit(Owner owner, Task task, OnPosition on_position, Kind kind) {
   Notices notices;
   {
     const std::lock_guard<std::mutex> lock(mutex_);
     if (stopping_ || queue_.size() >= max_queued_) return false;
-    queue_.push_back(Queued{owner, std::move(task), std::move(on_position), may_use_reserve});
+    const auto owned = std::count_if(queue_.begin(), queue_.end(), [owner](const Queued& queued) {
+      return queued.owner == owner;
+    });
+    if (static_cast<std::size_t>(owned) >= per_owner_queued_) return false;
+    queue_.push_back(Queued{owner, std::move(task), std::move(on_position), kind});
     notices = positions();
   }
   wake_.notify_all();
@@ -36,7 +42,8 @@ bool WorkerPool::requeue(Owner owner, Task task, OnPosition on_position) {
   {
     const std::lock_guard<std::mutex> lock(mutex_);
     if (stopping_) return false;
-    queue_.push_front(Queued{owner, std::move(task), std::move(on_position), false});
+    queue_.push_front(Queued{owner, std::move(task), std::move(on_position),
+                             Kind{/*limited=*/true, /*may_use_reserve=*/false}});
     notices = positions();
   }
   wake_.notify_all();
@@ -82,8 +89,8 @@ std::optional<std::size_t> WorkerPool::next_runnable(Lane lane) const {
   // The reserve is for when every worker is taken.
   if (lane == Lane::kReserve && busy_workers_ < workers_) return std::nullopt;
   for (std::size_t i = 0; i < queue_.size(); ++i) {
-    if (lane == Lane::kReserve && !queue_[i].may_use_reserve) continue;
-    if (queue_[i].owner == nullptr) return i;
+    if (lane == Lane::kReserve && !queue_[i].kind.may_use_reserve) continue;
+    if (!queue_[i].kind.limited) return i;
     const auto it = running_.find(queue_[i].owner);
     if (it == running_.end() || it->second < per_owner_) return i;
   }
@@ -100,11 +107,12 @@ WorkerPool::Notices WorkerPool::positions() {
   std::map<Owner, std::size_t> waiting;
   std::size_t runnable_ahead = 0;
   for (auto& queued : queue_) {
-    const auto running = running_.find(queued.owner);
+    const Owner held_back_by = queued.held_back_by();
+    const auto running = running_.find(held_back_by);
     const std::size_t busy = running == running_.end() ? 0 : running->second;
-    std::size_t& own_ahead = waiting[queued.owner];
+    std::size_t& own_ahead = waiting[held_back_by];
     const std::size_t position = runnable_ahead + own_ahead;
-    const bool blocked = queued.owner != nullptr && busy + own_ahead >= per_owner_;
+    const bool blocked = queued.kind.limited && busy + own_ahead >= per_owner_;
     const bool waits = blocked || position >= idle || queued.reported != SIZE_MAX;
     if (queued.on_position && waits && position != queued.reported) {
       queued.reported = position;
@@ -131,7 +139,7 @@ void WorkerPool::work(Lane lane) {
       if (stopping_) return;
       next = std::move(queue_[*index]);
       queue_.erase(queue_.begin() + static_cast<std::ptrdiff_t>(*index));
-      ++running_[next.owner];
+      if (next.kind.limited) ++running_[next.owner];
       if (lane == Lane::kWorker) ++busy_workers_;
       notices = positions();
     }
@@ -139,11 +147,12 @@ void WorkerPool::work(Lane lane) {
     if (lane == Lane::kWorker) wake_.notify_all();
     tell(notices);
     const Owner owner = next.owner;
+    const bool limited = next.kind.limited;
     next.task(lane);
     next = Queued{};  // the task's captures go before its owner's slot frees
     {
       const std::lock_guard<std::mutex> lock(mutex_);
-      if (--running_[owner] == 0) running_.erase(owner);
+      if (limited && --running_[owner] == 0) running_.erase(owner);
       if (lane == Lane::kWorker) --busy_workers_;
       notices = positions();
     }

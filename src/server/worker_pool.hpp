@@ -5,6 +5,8 @@
 // owner (a connection), and an owner with `per_owner` tasks running waits
 // while others' tasks start, so one client's long jobs cannot hold every
 // worker. A waiting task hears its place in the queue whenever it changes.
+// Admission is fair too: an owner may have `per_owner_queued` tasks waiting,
+// so one client's flood is refused for itself while others still get in.
 //
 // Owners that each hold a worker with long work would still make every other
 // client wait, so one more thread, the reserve, is kept for short work: it
@@ -34,15 +36,29 @@ class WorkerPool {
   // next), from the thread that changed the queue, never under the pool's lock.
   using OnPosition = std::function<void(std::size_t ahead)>;
 
-  // `threads` workers, and the reserve beside them.
-  WorkerPool(unsigned threads, std::size_t max_queued, std::size_t per_owner = 1);
+  // What a task is to the pool's fairness.
+  struct Kind {
+    // Counts against its owner's running limit (a job). Work its client waits
+    // on to go on (loads, the live station) is not held back behind its
+    // owner's jobs, though it waits in its owner's share of the queue.
+    bool limited = true;
+    // May start on the reserve: short, or able to tell from its estimate
+    // that it is not.
+    bool may_use_reserve = false;
+  };
+
+  // `threads` workers, and the reserve beside them. At most `max_queued`
+  // tasks wait, `per_owner_queued` of them of one owner; an owner runs at
+  // most `per_owner` limited tasks at once.
+  WorkerPool(unsigned threads, std::size_t max_queued, std::size_t per_owner,
+             std::size_t per_owner_queued);
   ~WorkerPool();
   WorkerPool(const WorkerPool&) = delete;
   WorkerPool& operator=(const WorkerPool&) = delete;
 
-  // False when the queue is full or the pool is stopping. A task must not throw.
-  // A null owner is not limited (short work the client waits on, like loads).
-  bool submit(Owner owner, Task task, OnPosition on_position = {}, bool may_use_reserve = false);
+  // False when the owner's share of the queue or the whole queue is full, or
+  // the pool is stopping. A task must not throw.
+  bool submit(Owner owner, Task task, OnPosition on_position, Kind kind);
   // A task that started on the reserve and turned out long goes back to the
   // head of the queue, for a worker only; the queue's limit does not apply to
   // it (it was admitted already). False when the pool is stopping.
@@ -57,8 +73,11 @@ class WorkerPool {
     Owner owner;
     Task task;
     OnPosition on_position;
-    bool may_use_reserve = false;
+    Kind kind;
     std::size_t reported = SIZE_MAX;  // the position last told
+
+    // Whose running tasks hold this one back: its owner's, for a limited task.
+    Owner held_back_by() const { return kind.limited ? owner : nullptr; }
   };
   using Notices = std::vector<std::pair<OnPosition, std::size_t>>;
 
@@ -74,9 +93,10 @@ class WorkerPool {
   std::mutex mutex_;
   std::condition_variable wake_;
   std::deque<Queued> queue_;
-  std::map<Owner, std::size_t> running_;  // tasks running per owner
+  std::map<Owner, std::size_t> running_;  // limited tasks running per owner
   std::size_t max_queued_;
   std::size_t per_owner_;
+  std::size_t per_owner_queued_;
   std::size_t workers_;           // threads of Lane::kWorker
   std::size_t busy_workers_ = 0;  // of them, running a task
   bool stopping_ = false;

@@ -5,11 +5,15 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
+#include <stdexcept>
 
 #include "io/cloud_test_support.hpp"
 #include "io/scratch_directory.hpp"
 #include "occlusion/io/cloud_io.hpp"
+#include "occlusion/io/input_error.hpp"
+#include "occlusion/io/named_paths.hpp"
 #include "support/png_writer.hpp"
 
 namespace occlusion {
@@ -138,6 +142,45 @@ TEST_F(DepthFrame, PoseMovesPointsAndSensorAlike) {
                     .isApprox(Eigen::Vector3d::UnitY(), 1e-6));
     EXPECT_EQ(cloud.stations[0].frame.origin, cloud.sensor.origin);
   }
+}
+
+// Without a rule in force (the command line, Python) the images are where the
+// descriptor names them: from its folder, out of it, or absolute.
+TEST_F(DepthFrame, ImagesAreReadWhereTheDescriptorNamesThem) {
+  std::filesystem::create_directories(scratch.file("frames"));
+  const std::string path = scratch.file("frames/named.frame.json");
+  for (const std::string& depth : {std::string("../depth.png"), scratch.file("depth.png")}) {
+    write_text(path, "{\"depth\": \"" + depth + "\", " + kIntrinsics + ", \"depth_scale\": 1000}");
+    EXPECT_EQ(read_cloud(path).size(), kWidth * kHeight - 1) << depth;
+  }
+}
+
+struct Refused : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// A rule in force (the server's) decides what a descriptor's names open,
+// and its refusal is the read's.
+TEST_F(DepthFrame, ARuleInForceDecidesWhatTheImagePathsOpen) {
+  const std::string path = scratch.file("elsewhere.frame.json");
+  write_text(path, std::string("{\"depth\": \"elsewhere.png\", \"colour\": \"rgb.png\", ") +
+                       kIntrinsics + ", \"depth_scale\": 1000}");
+  std::vector<std::string> asked;
+  {
+    const NamedPathScope rule([&](const std::string& file, const std::string& named) {
+      EXPECT_EQ(file, path);
+      asked.push_back(named);
+      return scratch.file(named == "elsewhere.png" ? "depth.png" : named);
+    });
+    EXPECT_EQ(read_cloud(path).size(), kWidth * kHeight - 1);
+    EXPECT_EQ(asked, (std::vector<std::string>{"elsewhere.png", "rgb.png"}));
+    const NamedPathScope refusing([](const std::string&, const std::string& named) -> std::string {
+      throw Refused("refused " + named);
+    });
+    EXPECT_THROW(read_cloud(path), Refused);
+  }
+  // Out of scope, the names are the file's again: elsewhere.png does not exist.
+  EXPECT_THROW(read_cloud(path), InputError);
 }
 
 TEST_F(DepthFrame, FarPosesKeepPrecisionThroughTheGlobalShift) {

@@ -199,6 +199,26 @@ TEST_F(BadInput, UnexpectedOrMalformedBinary) {
   expect_still_serving();
 }
 
+// A header whose count disagrees with the bytes after it still names its
+// upload: that request gets its answer, under its own id, and the id is free
+// again (it was answered with id null, and stayed `duplicate_id`).
+TEST_F(BadInput, AnUploadWhoseFrameDisagreesWithItsBytesIsAnsweredUnderItsId) {
+  client_->send_request(80, "upload", params(R"({"name": "a.ply", "size": 10})"));
+  server::FrameHeader header;
+  header.kind = server::FrameKind::kUpload;
+  header.request_id = 80;
+  header.count = 10;  // as announced
+  std::string message = server::encode_frame(header, std::string(10, 'x').data(), 10).message;
+  message.resize(message.size() - 6);  // 4 bytes follow
+  client_->send_binary(message);
+  const Json::Value error = expect_error("unexpected_binary");
+  EXPECT_EQ(error["id"].asUInt(), 80u) << error;  // not null
+  EXPECT_EQ(error["command"].asString(), "upload") << error;
+  const Reply reuse = client_->request(80, "ping");
+  EXPECT_TRUE(reuse.ok()) << reuse.final;
+  expect_still_serving();
+}
+
 TEST_F(BadInput, CorruptUploadIsRefusedAndNotStored) {
   const std::string bytes =
       "ply\nformat ascii 1.0\nelement vertex 1000\nproperty float x\nproperty float y\n"

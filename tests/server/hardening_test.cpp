@@ -225,6 +225,75 @@ TEST(Hardening, AThirdClientsSmallJobRunsWhileTwoHeavyOnesHoldBothWorkers) {
   }
 }
 
+// One connection's flood waits in its own share of the queue: past the
+// hello's max_queued_per_client its requests are refused `busy`, and another
+// connection's still get in (they were refused once the flood had filled
+// the whole queue).
+TEST(Hardening, AFloodOfJobsIsRefusedBusyForItsOwnConnectionOnly) {
+  TestServer server;  // two workers
+  auto flood = server.connect();
+  flood->send_request(1, "cloud_occlusion", long_job());
+  ASSERT_TRUE(wait_running(*flood, 1));
+  // The rest wait for it (a connection runs one job at a time): more of them
+  // than the whole queue holds.
+  constexpr std::uint32_t kFlood = 100;
+  for (std::uint32_t id = 2; id <= kFlood; ++id) {
+    flood->send_request(id, "cloud_occlusion", long_job());
+  }
+  // A connection's messages are taken in order: once the ping is answered,
+  // every job of the flood was queued or refused, and the refusals came first.
+  ASSERT_TRUE(flood->request(1000, "ping", Json::Value(Json::objectValue), kHangGuard).ok());
+  std::size_t busy = 0;
+  while (const auto message = flood->receive(Millis(0))) {
+    const Json::Value json = params(message->data);
+    if (json["type"].asString() != "error") continue;
+    EXPECT_EQ(json["code"].asString(), "busy") << json;
+    ++busy;
+  }
+  const std::size_t share = flood->hello()["limits"]["max_queued_per_client"].asUInt64();
+  EXPECT_GT(share, 0u);
+  EXPECT_EQ(busy, kFlood - 1 - share);
+
+  auto other = server.connect();
+  const Reply view = other->request(
+      1, "station_view",
+      params(R"({"path": "s3dis_synthetic/Area_1/office_1", "position": [1, 1, 1.5]})"),
+      kHangGuard);
+  EXPECT_TRUE(view.ok()) << view.final;
+  const Reply job = other->request(
+      2, "mesh_occlusion",
+      params(R"({"path": "sample_room.obj", "samples_per_unit_area": 5, "out": ""})"), kHangGuard);
+  EXPECT_TRUE(job.ok()) << job.final;
+  // Closing the flood's connection cancels its job and drops those waiting.
+}
+
+// The case found: a client keeping 200 `station_view` requests in flight
+// filled the queue, and another client's small jobs were refused `busy`.
+TEST(Hardening, AFloodOfLiveStationViewsLeavesRoomForAnotherConnectionsJobs) {
+  TestServer server;
+  auto flood = server.connect();
+  const Json::Value view =
+      params(R"({"path": "s3dis_synthetic/Area_1/office_1", "position": [1, 1, 1.5]})");
+  constexpr std::uint32_t kFlood = 200;
+  for (std::uint32_t id = 1; id <= kFlood; ++id) flood->send_request(id, "station_view", view);
+  // Every view was queued, started or refused once the ping is answered.
+  ASSERT_TRUE(flood->request(1000, "ping", Json::Value(Json::objectValue), kHangGuard).ok());
+
+  auto other = server.connect();
+  const Json::Value small =
+      params(R"({"path": "sample_room.obj", "samples_per_unit_area": 5, "out": ""})");
+  for (std::uint32_t id = 1; id <= 3; ++id) other->send_request(id, "mesh_occlusion", small);
+  for (std::uint32_t id = 1; id <= 3; ++id) {
+    const Reply job = other->collect(id, kHangGuard);
+    EXPECT_TRUE(job.ok()) << job.final;
+  }
+  // Each view is answered: seen, or refused for its own connection.
+  for (std::uint32_t id = 1; id <= kFlood; ++id) {
+    const Reply reply = flood->collect(id, kHangGuard);
+    EXPECT_TRUE(reply.ok() || reply.error_code() == "busy") << id << ": " << reply.final;
+  }
+}
+
 // Cancel is noticed while the mesh is sampled, not only once rays are
 // traced: the job ends cancelled before it reports any later stage. (That it
 // stops within a block of samples, even inside one large face, is

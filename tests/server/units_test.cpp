@@ -92,6 +92,25 @@ TEST(DataRoot, ConfinesPathsToTheDataDirectory) {
   EXPECT_THROW(server::DataRoot(files.file("sample_room.obj")), std::invalid_argument);
 }
 
+// A path a file names (a depth frame's image) is taken from that file's
+// folder and held to the same rule as a client's.
+TEST(DataRoot, ConfinesThePathsAFileNames) {
+  const TestData files;
+  const server::DataRoot root(files.data());
+  const std::string file = root.resolve("s3dis_synthetic/openings.txt", true).string();
+  EXPECT_EQ(root.resolve_named(file, "Area_1"), root.resolve("s3dis_synthetic/Area_1", true));
+  EXPECT_EQ(root.resolve_named(file, "../sample_room.obj"), root.resolve("sample_room.obj", true));
+  EXPECT_EQ(root.resolve_named(file, "not/yet.png"),
+            fs::canonical(files.data()) / "s3dis_synthetic/not/yet.png");
+  for (const std::string& outside :
+       {std::string("../../outside/secret.txt"), std::string("../escape/secret.txt"),
+        files.root() + "/outside/secret.txt", files.file("sample_room.obj"),
+        std::string("../../outside/missing.png")}) {
+    EXPECT_EQ(error_code_of([&] { root.resolve_named(file, outside); }), "path_outside_data")
+        << outside;
+  }
+}
+
 TEST(StaticFiles, ServesTheViewerAndNothingElse) {
   const TestData files;
   const std::string web = files.root() + "/web";

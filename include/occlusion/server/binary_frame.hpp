@@ -6,6 +6,7 @@
 #include <json/value.h>
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -70,6 +71,11 @@ Frame encode_frame(const FrameHeader& header, const void* payload, std::size_t b
 // element type and that the payload is exactly as long as it says. Throws
 // ProtocolError("unexpected_binary").
 FrameHeader decode_frame_header(std::string_view message);
+
+// The request id a message's header names, read even when the rest of the
+// header or the payload is wrong, so that a malformed upload is answered under
+// its own id; nullopt for a message shorter than a header.
+std::optional<std::uint32_t> header_request_id(std::string_view message);
 
 // The request id lives in the header, so a cached frame is re-addressed in place.
 void set_request_id(std::string& message, std::uint32_t request_id);

@@ -27,6 +27,12 @@ class DataRoot {
   // it (four levels down, as deep as an S3DIS Area's files) leads out.
   std::filesystem::path resolve(const std::string& relative, bool must_exist) const;
 
+  // A path that the file `file` (of the data directory, as resolve gives it)
+  // names inside it, such as a depth frame's image: by resolve's rule, from
+  // that file's folder, so an absolute path is refused as a client's is.
+  // Throws ProtocolError naming `file`. Whether it exists is for its reader to say.
+  std::filesystem::path resolve_named(const std::string& file, const std::string& named) const;
+
   // `path` relative to the data directory with '/' separators, "" for the
   // directory itself; paths outside are returned unchanged.
   std::string relative(const std::string& path) const;

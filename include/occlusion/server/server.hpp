@@ -22,6 +22,7 @@ struct ServerOptions {
   std::size_t max_upload_bytes = std::size_t{256} << 20;
   std::size_t max_text_bytes = std::size_t{1} << 20;
   std::size_t max_queued_jobs = 64;
+  std::size_t max_queued_per_client = 16;  // a connection's requests waiting at once
   std::size_t max_running_per_client = 1;  // a connection's jobs running at once
   // A job estimated to need more memory is refused; 0: half the machine's memory.
   std::uint64_t max_memory_mb = 0;
