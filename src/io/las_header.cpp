@@ -6,6 +6,7 @@
 
 #include "little_endian.hpp"
 #include "occlusion/io/input_error.hpp"
+#include "occlusion/io/shell_quote.hpp"
 
 namespace occlusion::detail {
 namespace {
@@ -49,17 +50,38 @@ bool laszip_vlr(std::string_view bytes, std::size_t header_size, std::uint32_t v
   return false;
 }
 
+// A name for the decompressed file beside `path`: X.las, else
+// X-decompressed.las, X-decompressed-2.las, ...; never the input (a LAZ file
+// named .las) nor a file that exists, so pasting the advice loses nothing.
+std::string decompressed_name(const std::string& path) {
+  const std::filesystem::path input(path);
+  std::filesystem::path name = std::filesystem::path(input).replace_extension(".las");
+  const std::filesystem::path stem = input.parent_path() / input.stem();
+  std::error_code status;
+  for (int k = 1; name == input || std::filesystem::exists(name, status); ++k) {
+    name = stem.string() + "-decompressed" + (k == 1 ? "" : "-" + std::to_string(k)) + ".las";
+  }
+  return name.string();
+}
+
+// A file name as a tool's argument: quoted for the shell, and after ./ when
+// it starts with - so that no tool takes it for an option.
+std::string argument(const std::string& path) {
+  return shell_quote(path.rfind('-', 0) == 0 ? "./" + path : path);
+}
+
 [[noreturn]] void refuse_laz(const std::string& path) {
-  const std::string las = std::filesystem::path(path).replace_extension(".las").string();
+  const std::string in = argument(path);
+  const std::string out = argument(decompressed_name(path));
   throw InputError(
       path, 0,
       "the points are LASzip-compressed (LAZ); this build reads uncompressed LAS only, and "
       "Debian 12 packages no LAZ decompressor. Decompress it first, then give the .las: with "
-      "PDAL, `pdal translate '" +
-          path + "' '" + las + "'`; with LAStools, `laszip -i '" + path + "' -o '" + las +
-          "'`; or with Python, `pip install 'laspy[lazrs]'` then `python3 -c \"import laspy; "
-          "laspy.read('" +
-          path + "').write('" + las + "')\"`");
+      "PDAL, `pdal translate " +
+          in + " " + out + "`; with LAStools, `laszip -i " + in + " -o " + out +
+          "`; or with Python, `pip install 'laspy[lazrs]'` then `python3 -c 'import sys, laspy; "
+          "laspy.read(sys.argv[1]).write(sys.argv[2])' " +
+          in + " " + out + "`");
 }
 
 }  // namespace

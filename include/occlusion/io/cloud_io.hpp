@@ -17,8 +17,9 @@
 //                       are comments
 //   .las                LAS 1.0-1.4, point formats 0-10: coordinates (scale and
 //                       offset), intensity, RGB, classification as labels named
-//                       by the ASPRS classes; .laz is refused with how to
-//                       decompress it
+//                       by the ASPRS classes; a LASzip-compressed file
+//                       (.laz) is refused with how to decompress it, an
+//                       uncompressed one named .laz read
 //   NAME.frame.json     a depth frame: a 16-bit depth PNG with its intrinsics,
 //                       depth unit, optional colour PNG and camera pose; an
 //                       organised cloud whose camera is its sensor and station
