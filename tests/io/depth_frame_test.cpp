@@ -6,6 +6,8 @@
 
 #include <cmath>
 #include <fstream>
+#include <string>
+#include <vector>
 
 #include "io/cloud_test_support.hpp"
 #include "io/scratch_directory.hpp"
@@ -218,6 +220,31 @@ TEST_F(DepthFrame, RefusesBadDescriptorFieldsNamingTheirLine) {
   write_text(scratch.file("broken.frame.json"), "{\"depth\": ");
   testing::expect_input_error([&] { read_cloud(scratch.file("broken.frame.json")); },
                               "broken.frame.json", 0, "not a valid frame descriptor (JSON)");
+}
+
+// JSON as RFC 8259 writes it and nothing more (issue 44): JsonCpp's defaults
+// read each of these with something ignored, or a path cut at its NUL.
+TEST_F(DepthFrame, RefusesJsonBeyondTheStandard) {
+  const std::string fields = std::string(kIntrinsics) + ", \"depth_scale\": 1000";
+  const std::string good = "{\"depth\": \"depth.png\", " + fields + "}";
+  const std::string path = scratch.file("strict.frame.json");
+  write_text(path, good);
+  ASSERT_EQ(read_cloud(path).size(), kWidth * kHeight - 1);
+  const std::vector<std::string> refused = {
+      good + "\n{\"depth\": \"other.png\"}",
+      "// TUM freiburg1\n" + good,
+      "{\"depth\": \"depth.png\", /* \"colour\": \"rgb.png\", */ " + fields + "}",
+      "{\"depth\": \"depth.png\", " + fields + ",}",
+      "{\"depth\": \"depth.png\", " + fields + ", \"pose_tum\": [0, 0, 0, 0, 0, 0, 1,]}",
+      // depth.png\0.gz: the system would open depth.png.
+      "{\"depth\": \"depth.png\\u0000.gz\", " + fields + "}",
+  };
+  for (const std::string& text : refused) {
+    SCOPED_TRACE(text);
+    write_text(path, text);
+    testing::expect_input_error([&] { read_cloud(path); }, "strict.frame.json", 0,
+                                "not a valid frame descriptor (JSON)");
+  }
 }
 
 }  // namespace
