@@ -328,6 +328,51 @@ TEST(E57Errors, MoreRecordsThanTheSectionHolds) {
                               "holds 24 bytes of cartesianX but its 1000000000000 records");
 }
 
+// A file whose X values are 32-bit integers in 0..4294967295, its XML then
+// made to declare `range` (the same length, padded with spaces), so that the
+// bytestream holds 32 bits a record where the prototype declares fewer.
+std::string narrowed_bytes(const std::string& range) {
+  E57FileSpec spec = many_points(100);
+  std::vector<std::int64_t> raw;
+  for (std::int64_t i = 0; i < 100; ++i) raw.push_back(4000000000 - 1000 * i);
+  spec.scans[0].fields[0] = test::e57_integer("cartesianX", 0, 4294967295, raw);
+  std::string bytes = test::e57_bytes(spec);
+  const std::string declared = "minimum=\"0\" maximum=\"4294967295\"";
+  const std::size_t at = bytes.find(declared);
+  EXPECT_NE(at, std::string::npos);
+  if (at == std::string::npos) return bytes;
+  bytes.replace(at, declared.size(), range + std::string(declared.size() - range.size(), ' '));
+  test::fix_e57_checksums(bytes);
+  return bytes;
+}
+
+// Issue 44: read as 0 or 1 for every point, with no error.
+TEST(E57Errors, ABitWidthNarrowerThanTheBytestreamIsRefused) {
+  const testing::ScratchDirectory dir;
+  const std::string path = dir.file("narrow.e57");
+  write_bytes(path, narrowed_bytes("minimum=\"0\" maximum=\"4294967295\""));
+  ASSERT_EQ(read_cloud(path).size(), 100u);  // as written, it reads
+  write_bytes(path, narrowed_bytes("minimum=\"0\" maximum=\"1\""));
+  testing::expect_input_error([&] { read_cloud(path); }, "narrow.e57", 0,
+                              "holds 400 bytes of cartesianX, room for 3200 records of its 1 bits");
+  write_bytes(path, narrowed_bytes("minimum=\"0\" maximum=\"0\""));
+  testing::expect_input_error([&] { read_cloud(path); }, "narrow.e57", 0,
+                              "cartesianX takes 0 bits a record");
+}
+
+// Issue 44: the first 40 points were read and the other 60 dropped silently.
+TEST(E57Errors, FewerRecordsThanTheSectionHoldsAreRefused) {
+  const testing::ScratchDirectory dir;
+  E57FileSpec spec = many_points(100);
+  spec.scans[0].record_count = 40;
+  testing::expect_input_error(
+      [&] { read_spec(dir, spec); }, "scan.e57", 0,
+      "holds 800 bytes of cartesianX, room for 100 records of its 64 bits, but recordCount is 40");
+  spec.scans[0].record_count = 99;
+  testing::expect_input_error([&] { read_spec(dir, spec); }, "scan.e57", 0,
+                              "but recordCount is 99");
+}
+
 TEST(E57Errors, ACodecOtherThanBitPackIsRefused) {
   const testing::ScratchDirectory dir;
   E57FileSpec spec = many_points(3);
