@@ -222,6 +222,22 @@ TEST_F(DepthFrame, RefusesBadDescriptorFieldsNamingTheirLine) {
                               "broken.frame.json", 0, "not a valid frame descriptor (JSON)");
 }
 
+// Issue 44: a small PNG of a constant depth decodes to millions of points;
+// max_memory_mb refuses it from its header, before decoding.
+TEST_F(DepthFrame, MaxMemoryRefusesALargeImageBeforeDecodingIt) {
+  CloudReadOptions options;
+  options.max_memory_mb = 1;
+  EXPECT_EQ(read_cloud(valid(), options).size(), kWidth * kHeight - 1);
+  // 256 x 256 pixels: up to 65,536 points of 22 bytes, 1.4 MiB.
+  testing::write_depth_png(scratch.file("depth.png"), 256, 256,
+                           std::vector<std::uint16_t>(256 * 256, 1000));
+  testing::expect_input_error([&] { read_cloud(valid(), options); }, "frame_a.frame.json", 0,
+                              "depth.png is 256 x 256 pixels: read, its up to 65536 points would "
+                              "take about 2 MiB, more than max_memory_mb = 1");
+  options.max_memory_mb = 2;
+  EXPECT_EQ(read_cloud(valid(), options).size(), 256u * 256u);
+}
+
 // JSON as RFC 8259 writes it and nothing more (issue 44): JsonCpp's defaults
 // read each of these with something ignored, or a path cut at its NUL.
 TEST_F(DepthFrame, RefusesJsonBeyondTheStandard) {

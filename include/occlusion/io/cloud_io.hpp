@@ -48,6 +48,7 @@
 // unknown S3DIS class, and a file with no points at all.
 
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -74,6 +75,11 @@ struct CloudReadOptions {
   // clouds only). A second cloud compared point by point with a first one
   // (a prediction with its ground truth) is read with the first one's shift.
   std::optional<Eigen::Vector3d> shift;
+  // The memory, in MiB (0: no limit), a reader may take for points it
+  // decodes from far fewer bytes: a depth frame's PNG (deflate packs a
+  // constant image about 1000-fold, so 39 KB can hold 16.7 million pixels)
+  // is refused from its header's width x height, before it is decoded.
+  std::uint64_t max_memory_mb = 0;
 };
 
 struct CloudReadReport {
