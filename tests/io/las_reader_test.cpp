@@ -390,5 +390,28 @@ TEST(LasReader, RefusesCorruptOrLyingHeadersNamingTheByte) {
                  "truncated: the header declares 3 points");
 }
 
+// Issue 44: both were read, the first with every x within 1e-298 of the
+// offset (only the up-axis check warned), the second with its first point
+// taken from the bytes of a VLR.
+TEST(LasReader, RefusesAScaleTooSmallForTheDataAndPointsInsideTheVlrs) {
+  expect_corrupt(
+      [](std::string& b) {
+        const double tiny = 1e-308;
+        std::memcpy(b.data() + testing::kLasScaleAt, &tiny, 8);
+      },
+      "byte 131: x scale factor 1e-308 is too small for the data: the header's bounds (bytes "
+      "179, 187) span 17.001");
+  expect_corrupt(
+      [](std::string& b) {
+        const double small = 1e-9;  // 2^32 steps span 4.3, not the 17 of the bounds
+        std::memcpy(b.data() + testing::kLasScaleAt + 8, &small, 8);
+      },
+      "byte 139: y scale factor 1e-09 is too small for the data");
+  // One VLR said to be there, and none: its 54 bytes would be the points'.
+  expect_corrupt([](std::string& b) { put_u32(b, testing::kLasVlrCountAt, 1); },
+                 "byte 96: the points are said to start at byte 227, inside the header's 1 VLRs "
+                 "(byte 100): VLR 0 runs from byte 227 to 281");
+}
+
 }  // namespace
 }  // namespace occlusion
