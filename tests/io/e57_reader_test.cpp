@@ -278,6 +278,29 @@ TEST(E57Reader, FuzzSeedReads) {
   expect_near(cloud.positions[4], {-3 - 10.0, 0.03, 0.5}, 1e-5);
 }
 
+// The fuzz seeds of bit widths (tests/fuzz/corpus/e57/SOURCES.md): fields of
+// 32, 12, 1, 2 and 0 bits over 2 packets read; the same with X declared 1
+// bit, or recordCount 4 of the 6 records written, are refused.
+TEST(E57Reader, BitWidthFuzzSeeds) {
+  const std::string seeds = std::string(OCCLUSION_SOURCE_DIR) + "/tests/fuzz/corpus/e57/";
+  CloudReadReport report;
+  const PointCloud cloud = read_cloud(seeds + "bit_widths.e57", {}, &report);
+  ASSERT_EQ(cloud.size(), 5u);  // record 3 is invalid
+  EXPECT_EQ(report.dropped_invalid, 1u);
+  // Record 1: X (4e9 - 1000) * 1e-6 - 2000, Y 107 * 0.001, Z 1; intensity 5.
+  const Eigen::Vector3d second = cloud.to_original(cloud.positions[1].cast<double>());
+  EXPECT_NEAR(second.x(), 1999.999, 1e-3);
+  EXPECT_NEAR(second.y(), 0.107, 1e-6);
+  EXPECT_NEAR(second.z(), 1.0, 1e-6);
+  ASSERT_TRUE(cloud.has_intensities());
+  EXPECT_EQ(cloud.intensities[4], 5.0f);
+  testing::expect_input_error([&] { read_cloud(seeds + "narrow_width.e57"); }, "narrow_width.e57",
+                              0,
+                              "holds 24 bytes of cartesianX, room for 192 records of its 1 bits");
+  testing::expect_input_error([&] { read_cloud(seeds + "fewer_records.e57"); }, "fewer_records.e57",
+                              0, "room for 6 records of its 32 bits, but recordCount is 4");
+}
+
 // --- errors ----------------------------------------------------------------
 
 E57FileSpec many_points(std::size_t count) {
