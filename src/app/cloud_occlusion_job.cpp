@@ -246,7 +246,8 @@ CloudOcclusionReport run_cloud_occlusion(const CloudOcclusionRequest& request,
   validate(request);
   const auto start = job::Clock::now();
   progress("loading", 0.0);
-  job::LoadedCloud loaded = job::load_cloud(request.path, request.skip_bad_lines);
+  job::LoadedCloud loaded =
+      job::load_cloud(request.path, request.skip_bad_lines, std::nullopt, request.max_memory_mb);
   const StationFilterReport filtered =
       apply_station_filter(loaded.cloud, station_filter(request), request.path);
   job::name_classes(loaded.cloud, request.path, request.class_names_path);

@@ -8,6 +8,7 @@
 #include "occlusion/analysis/inside_solid.hpp"
 #include "occlusion/app/errors.hpp"
 #include "occlusion/app/json_output.hpp"
+#include "occlusion/app/memory_budget.hpp"
 #include "occlusion/io/atomic_file.hpp"
 #include "occlusion/io/class_names_file.hpp"
 #include "occlusion/io/cloud_io.hpp"
@@ -245,10 +246,11 @@ void write_json_report(const std::string& path, const Json::Value& json) {
 }
 
 LoadedCloud load_cloud(const std::string& path, bool skip_bad_lines,
-                       const std::optional<Eigen::Vector3d>& shift) {
+                       const std::optional<Eigen::Vector3d>& shift, std::uint64_t max_memory_mb) {
   CloudReadOptions options;
   options.skip_bad_lines = skip_bad_lines;
   options.shift = shift;
+  options.max_memory_mb = max_memory_mb != 0 ? max_memory_mb : machine_memory_mb();
   CloudReadReport report;
   LoadedCloud loaded;
   loaded.cloud = read_cloud(path, options, &report);

@@ -163,9 +163,12 @@ struct LoadedCloud {
   std::vector<std::size_t> annotation_order;  // CloudReadReport::annotation_order
 };
 // `shift` fixes the global shift (CloudReadOptions::shift); unset, the
-// reader chooses it.
+// reader chooses it. `max_memory_mb` (0: the machine's memory) bounds what
+// a depth frame may decode to, checked before it is decoded
+// (CloudReadOptions::max_memory_mb); the job's own estimate follows the load.
 LoadedCloud load_cloud(const std::string& path, bool skip_bad_lines,
-                       const std::optional<Eigen::Vector3d>& shift = std::nullopt);
+                       const std::optional<Eigen::Vector3d>& shift = std::nullopt,
+                       std::uint64_t max_memory_mb = 0);
 // Names the labels of `cloud` (read from `path`) from the class_names file
 // `class_names_path` (io/class_names_file.hpp); nothing when it is empty.
 void name_classes(PointCloud& cloud, const std::string& path, const std::string& class_names_path);

@@ -417,7 +417,8 @@ PlanReport run_plan(const PlanRequest& request, const Progress& progress) {
     report = as_usage_errors([&] { return plan_mesh_impl(mesh, request, progress); });
     report.load_seconds = load_seconds;
   } else {
-    job::LoadedCloud loaded = job::load_cloud(request.path, request.skip_bad_lines);
+    job::LoadedCloud loaded =
+        job::load_cloud(request.path, request.skip_bad_lines, std::nullopt, request.max_memory_mb);
     job::name_classes(loaded.cloud, request.path, request.class_names_path);
     cloud = std::move(loaded.cloud);
     const double load_seconds = job::seconds_since(start);

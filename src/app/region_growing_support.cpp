@@ -56,7 +56,7 @@ CloudEstimate load_and_estimate(const std::string& path, bool skip_bad_lines,
   const auto start = Clock::now();
   progress("loading", 0.0);
   CloudEstimate input;
-  input.loaded = load_cloud(path, skip_bad_lines);
+  input.loaded = load_cloud(path, skip_bad_lines, std::nullopt, max_memory_mb);
   input.load_seconds = seconds_since(start);
   progress.check_cancel();
 

@@ -40,18 +40,6 @@ void forward_output(int fd, std::string& tail) {
   }
 }
 
-std::string shell_quote(const std::string& text) {
-  std::string quoted = "'";
-  for (const char c : text) {
-    if (c == '\'') {
-      quoted += "'\\''";
-    } else {
-      quoted += c;
-    }
-  }
-  return quoted + "'";
-}
-
 ShellResult run_shell_command(const std::string& command, const Progress& progress,
                               double timeout_seconds) {
   progress.check_cancel();

@@ -10,9 +10,6 @@ namespace occlusion::job {
 
 inline constexpr std::size_t kShellOutputTail = 2000;
 
-// `text` as one shell word: 'it'\''s' for it's.
-std::string shell_quote(const std::string& text);
-
 // Forwards what a child wrote on `fd` since the last call to our stderr and
 // keeps its last kShellOutputTail bytes in `tail`. `fd` must be non-blocking:
 // returns when it is empty.

@@ -378,7 +378,8 @@ StudyReport run_study(const StudyRequest& request, const Progress& progress) {
           own_openings == openings.end() ? context.openings : own_openings->second,
           context.runs_dir, scene_parameters[s], context.worker});
       run_steps("loading the scene", 0.0);
-      scene = job::load_cloud(request.scenes[s].path, request.tracing.skip_bad_lines);
+      scene = job::load_cloud(request.scenes[s].path, request.tracing.skip_bad_lines, std::nullopt,
+                              request.max_memory_mb);
       job::name_classes(scene->cloud, request.scenes[s].path, request.tracing.class_names_path);
       loaded = s;
       const StationFilterReport filtered = apply_station_filter(

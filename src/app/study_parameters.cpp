@@ -1,7 +1,6 @@
 // The study's parameters: what study.json lists, what a row's fingerprint
 // hashes, and the file (study.parameters.json) a resume and a merge compare.
 
-#include <json/reader.h>
 #include <json/writer.h>
 
 #include <cstdint>
@@ -15,6 +14,7 @@
 #include "occlusion/app/json_output.hpp"
 #include "occlusion/app/study_job.hpp"
 #include "occlusion/io/input_error.hpp"
+#include "occlusion/io/strict_json.hpp"
 #include "region_growing_support.hpp"
 #include "study_support.hpp"
 
@@ -177,10 +177,10 @@ std::string parameters_path(const std::string& out) {
 std::optional<Json::Value> read_parameters(const std::string& path) {
   std::ifstream in(path);
   if (!in) return std::nullopt;
-  Json::CharReaderBuilder builder;
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   Json::Value json;
   std::string errors;
-  if (!Json::parseFromStream(builder, in, &json, &errors) || !json.isObject()) {
+  if (!parse_strict_json(text, StrictJson{}, json, errors) || !json.isObject()) {
     throw InputError(path, 0,
                      "not a study's parameters (" + errors + "); remove it, or give another --out");
   }

@@ -10,6 +10,7 @@
 #include "occlusion/core/exact_match.hpp"
 #include "occlusion/io/input_error.hpp"
 #include "occlusion/io/label_file.hpp"
+#include "occlusion/io/shell_quote.hpp"
 #include "report_format.hpp"
 #include "shell_command.hpp"
 #include "study_support.hpp"

@@ -64,7 +64,8 @@ PointCloud read_by_kind(const std::string& path, const CloudReadOptions& options
   // Files no reader reads that users give anyway: each is refused saying
   // why and what to do (they are not in the table, so not offered either).
   const std::string extension = detail::lower_extension(path);
-  // A LAZ file: the LAS reader refuses it, saying how to decompress it.
+  // A LAZ file: the LAS reader refuses it, saying how to decompress it, and
+  // reads it when it holds uncompressed LAS (the content decides, not the name).
   if (extension == ".laz") return detail::read_las(path, options, report);
   if (extension == ".png") {
     throw InputError(path, 0,

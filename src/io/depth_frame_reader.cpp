@@ -1,6 +1,7 @@
 // A depth frame (descriptor + 16-bit depth PNG + optional colour PNG) as an
 // organised cloud seen from its camera, the cloud's sensor and one station.
 
+#include <cstdint>
 #include <string>
 
 #include "cloud_formats.hpp"
@@ -10,22 +11,49 @@
 
 namespace occlusion::detail {
 
+namespace {
+
+// The bytes a frame of `pixels` takes as it is read, at most one point a
+// pixel: the decoded depth (2), and each point's position (12), pixel (4) and
+// station (4); with colour, the decoded image and the points' colours (3 + 3).
+std::uint64_t frame_bytes(std::uint64_t pixels, bool colour) {
+  return pixels * (2 + 12 + 4 + 4 + (colour ? 3 + 3 : 0));
+}
+
+}  // namespace
+
 PointCloud read_depth_frame(const std::string& path, const CloudReadOptions& options,
                             CloudReadReport& /*report*/) {
   const FrameDescriptor frame = read_frame_descriptor(path);
-  const DepthImage depth = read_depth_png(frame.depth_path);
+  const auto within_budget = [&](std::size_t width, std::size_t height) {
+    const std::uint64_t pixels = std::uint64_t{width} * height;
+    const std::uint64_t bytes = frame_bytes(pixels, frame.colour_path.has_value());
+    const std::uint64_t budget = options.max_memory_mb;
+    if (budget == 0 || budget > (bytes >> 20) || bytes <= (budget << 20)) return;
+    throw InputError(
+        path, 0,
+        "the depth image " + frame.depth_path + " is " + std::to_string(width) + " x " +
+            std::to_string(height) + " pixels: read, its up to " + std::to_string(pixels) +
+            " points would take about " + std::to_string((bytes + (1u << 20) - 1) >> 20) +
+            " MiB, more than max_memory_mb = " + std::to_string(options.max_memory_mb) +
+            " (refused before decoding it); raise max_memory_mb where the machine "
+            "has the memory, or give a smaller image");
+  };
+  const DepthImage depth = read_depth_png(frame.depth_path, within_budget);
   ColourImage colour;
   if (frame.colour_path) {
-    colour = read_colour_png(*frame.colour_path);
-    if (colour.width != depth.width || colour.height != depth.height) {
+    // Compared before decoding: a colour image of another size is refused
+    // without allocating for it.
+    colour = read_colour_png(*frame.colour_path, [&](std::size_t width, std::size_t height) {
+      if (width == depth.width && height == depth.height) return;
       throw InputError(path, 0,
-                       "the colour image " + *frame.colour_path + " is " +
-                           std::to_string(colour.width) + " x " + std::to_string(colour.height) +
-                           " pixels, the depth image " + frame.depth_path + " " +
-                           std::to_string(depth.width) + " x " + std::to_string(depth.height) +
+                       "the colour image " + *frame.colour_path + " is " + std::to_string(width) +
+                           " x " + std::to_string(height) + " pixels, the depth image " +
+                           frame.depth_path + " " + std::to_string(depth.width) + " x " +
+                           std::to_string(depth.height) +
                            ": a pixel's colour must be its depth's (register the colour to "
                            "the depth camera, or leave 'colour' out)");
-    }
+    });
   }
 
   PointCloud cloud;

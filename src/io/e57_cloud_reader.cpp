@@ -138,6 +138,39 @@ class E57CloudReader {
     return static_cast<std::size_t>(size);
   }
 
+  // A bytestream holding more than its records need says the XML lies: a bit
+  // width narrower than the values written (each read as a few of their low
+  // bits: 0 or 1 for every point) or a recordCount below the records written
+  // (the rest dropped). A writer pads each buffer it flushes to its register
+  // word at most (libE57Format: 1, 2, 4 or 8 bytes by the width; a Float
+  // none, a 0-bit field writes nothing), so more than that is refused.
+  void refuse_surplus(const E57Scan& scan, const E57Field& field, const E57Stream& stream,
+                      std::uint64_t needed_bits) const {
+    const std::uint64_t surplus = stream.bytes - (needed_bits + 7) / 8;
+    if (surplus == 0) return;
+    const std::uint64_t word = field.kind == E57Field::Kind::kFloat ? 0
+                               : field.bits == 0                    ? 0
+                               : field.bits <= 8                    ? 1
+                               : field.bits <= 16                   ? 2
+                               : field.bits <= 32                   ? 4
+                                                                    : 8;
+    if (surplus < word * std::max<std::uint64_t>(stream.buffers, 1)) return;
+    if (field.bits == 0) {
+      fail(scan, field.name +
+                     " takes 0 bits a record (its minimum equals its maximum) but its "
+                     "bytestream holds " +
+                     std::to_string(stream.bytes) +
+                     " bytes: the values written are not the one value the prototype declares");
+    }
+    fail(scan, "its section holds " + std::to_string(stream.bytes) + " bytes of " + field.name +
+                   ", room for " + std::to_string(stream.bytes * 8 / field.bits) +
+                   " records of its " + std::to_string(field.bits) + " bits, but recordCount is " +
+                   std::to_string(scan.record_count) + " (" +
+                   std::to_string((needed_bits + 7) / 8) +
+                   " bytes): a recordCount below the records written, or a bit width (minimum.."
+                   "maximum) narrower than the values written, would drop or misread points");
+  }
+
   void read_scan(const E57Pages& pages, const E57Scan& scan, std::int32_t index, bool colours,
                  bool intensities) {
     const Roles roles(scan);
@@ -174,6 +207,7 @@ class E57CloudReader {
                        " but its " + std::to_string(scan.record_count) +
                        " records (recordCount) need " + std::to_string((needed + 7) / 8));
       }
+      refuse_surplus(scan, field, streams[static_cast<std::size_t>(f)], needed);
       bits_per_record += field.bits;
     }
     // Fields of one value (minimum == maximum) take no bytes, so nothing in

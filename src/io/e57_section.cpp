@@ -98,6 +98,7 @@ E57Section read_compressed_vector(const E57Pages& pages, std::uint64_t physical_
         streams[s].runs.push_back({data, run});
       });
       streams[s].bytes += size;
+      if (size > 0) ++streams[s].buffers;
       buffer += size;
     }
     at += packet_length;

@@ -22,6 +22,7 @@ struct E57Run {
 struct E57Stream {
   std::vector<E57Run> runs;
   std::uint64_t bytes = 0;
+  std::uint64_t buffers = 0;  // data packets that carry some of its bytes
 };
 
 // A section's bytestreams and where it lies (logical offsets, [start, end)).

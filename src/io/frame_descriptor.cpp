@@ -1,15 +1,13 @@
 #include "frame_descriptor.hpp"
 
-#include <json/reader.h>
-
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <memory>
 
 #include "occlusion/io/file_bytes.hpp"
 #include "occlusion/io/input_error.hpp"
 #include "occlusion/io/named_paths.hpp"
+#include "occlusion/io/strict_json.hpp"
 
 namespace occlusion::detail {
 namespace {
@@ -57,23 +55,10 @@ class DescriptorParser {
 
  private:
   Json::Value parse_json() const {
-    Json::CharReaderBuilder builder;
-    builder["collectComments"] = false;
-    builder["rejectDupKeys"] = true;
-    builder["stackLimit"] = 16;
-    // -Infinity parses, so that a lost pose copied in is named as such below.
-    builder["allowSpecialFloats"] = true;
-    const std::unique_ptr<Json::CharReader> reader(builder.newCharReader());
     Json::Value root;
     std::string errors;
-    bool parsed = false;
-    try {
-      parsed = reader->parse(text_.data(), text_.data() + text_.size(), &root, &errors);
-    } catch (const Json::Exception& e) {  // JsonCpp throws on the stack limit
-      errors = e.what();
-    }
-    if (!parsed) {
-      while (!errors.empty() && (errors.back() == '\n' || errors.back() == ' ')) errors.pop_back();
+    // -Infinity parses, so that a lost pose copied in is named as such below.
+    if (!parse_strict_json(text_, StrictJson{16, true}, root, errors)) {
       throw InputError(path_, 0, "not a valid frame descriptor (JSON): " + errors);
     }
     return root;

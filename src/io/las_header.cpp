@@ -5,7 +5,9 @@
 #include <filesystem>
 
 #include "little_endian.hpp"
+#include "number_text.hpp"
 #include "occlusion/io/input_error.hpp"
+#include "occlusion/io/shell_quote.hpp"
 
 namespace occlusion::detail {
 namespace {
@@ -22,44 +24,88 @@ constexpr std::size_t kRecordLengthAt = 105;
 constexpr std::size_t kLegacyCountAt = 107;
 constexpr std::size_t kScaleAt = 131;
 constexpr std::size_t kOffsetAt = 155;
+constexpr std::size_t kMaxAt = 179;  // max x, then min x, max y, min y, max z, min z
+constexpr std::size_t kMinAt = 187;
 constexpr std::size_t kCountAt = 247;  // LAS 1.4: the 64-bit point count
 // The header's size in each version: 1.0 to 1.2, 1.3 (waveform start), 1.4.
 constexpr std::size_t kHeaderSize12 = 227;
 constexpr std::size_t kHeaderSize13 = 235;
 constexpr std::size_t kHeaderSize14 = 375;
 constexpr std::size_t kVlrHeaderSize = 54;
+// The steps a 32-bit integer coordinate spans (2^32), and one for rounding.
+constexpr double kInt32Steps = 4294967296.0 + 1.0;
 
 std::string at_byte(std::size_t offset) {
   return "byte " + std::to_string(offset) + ": ";
 }
 
-// The LASzip compressor marks its files by setting bit 7 (and, for some
-// versions, bit 6) of the point format and by a "laszip encoded" VLR.
-bool laszip_vlr(std::string_view bytes, std::size_t header_size, std::uint32_t vlr_count,
-                std::uint64_t point_offset) {
+std::string six_digits(double value) {
+  std::string text;
+  append_significant(text, value, 6);
+  return text;
+}
+
+// Walks the VLRs from the header's end: InputError when they run into the
+// points (the offset to the points lies inside them, so the first records
+// would be read from VLR bytes); whether one is LASzip's ("laszip encoded"),
+// by which, with bit 7 (and for some versions bit 6) of the point format,
+// the LASzip compressor marks its files. Each VLR is at least 54 bytes, so
+// a vast count stops at the points.
+bool walk_vlrs(const std::string& path, std::string_view bytes, std::size_t header_size,
+               std::uint32_t vlr_count, std::uint64_t point_offset) {
   const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
-  std::size_t at = header_size;
+  std::uint64_t at = header_size;
+  bool laszip = false;
   for (std::uint32_t k = 0; k < vlr_count; ++k) {
-    // The VLRs only serve to recognise LAZ here: one that runs past the
-    // points is no reason to refuse a file whose points are intact.
-    if (at + kVlrHeaderSize > point_offset) return false;
-    if (std::memcmp(data + at + 2, "laszip encoded", 14) == 0) return true;
-    at += kVlrHeaderSize + le_u16(data + at + 20);
+    const std::uint64_t end = at + kVlrHeaderSize > point_offset
+                                  ? at + kVlrHeaderSize
+                                  : at + kVlrHeaderSize + le_u16(data + at + 20);
+    if (end > point_offset) {
+      throw InputError(path, 0,
+                       at_byte(kPointOffsetAt) + "the points are said to start at byte " +
+                           std::to_string(point_offset) + ", inside the header's " +
+                           std::to_string(vlr_count) + " VLRs (byte " +
+                           std::to_string(kVlrCountAt) + "): VLR " + std::to_string(k) +
+                           " runs from byte " + std::to_string(at) + " to " + std::to_string(end));
+    }
+    laszip = laszip || std::memcmp(data + at + 2, "laszip encoded", 14) == 0;
+    at = end;
   }
-  return false;
+  return laszip;
+}
+
+// A name for the decompressed file beside `path`: X.las, else
+// X-decompressed.las, X-decompressed-2.las, ...; never the input (a LAZ file
+// named .las) nor a file that exists, so pasting the advice loses nothing.
+std::string decompressed_name(const std::string& path) {
+  const std::filesystem::path input(path);
+  std::filesystem::path name = std::filesystem::path(input).replace_extension(".las");
+  const std::filesystem::path stem = input.parent_path() / input.stem();
+  std::error_code status;
+  for (int k = 1; name == input || std::filesystem::exists(name, status); ++k) {
+    name = stem.string() + "-decompressed" + (k == 1 ? "" : "-" + std::to_string(k)) + ".las";
+  }
+  return name.string();
+}
+
+// A file name as a tool's argument: quoted for the shell, and after ./ when
+// it starts with - so that no tool takes it for an option.
+std::string argument(const std::string& path) {
+  return shell_quote(path.rfind('-', 0) == 0 ? "./" + path : path);
 }
 
 [[noreturn]] void refuse_laz(const std::string& path) {
-  const std::string las = std::filesystem::path(path).replace_extension(".las").string();
+  const std::string in = argument(path);
+  const std::string out = argument(decompressed_name(path));
   throw InputError(
       path, 0,
       "the points are LASzip-compressed (LAZ); this build reads uncompressed LAS only, and "
       "Debian 12 packages no LAZ decompressor. Decompress it first, then give the .las: with "
-      "PDAL, `pdal translate '" +
-          path + "' '" + las + "'`; with LAStools, `laszip -i '" + path + "' -o '" + las +
-          "'`; or with Python, `pip install 'laspy[lazrs]'` then `python3 -c \"import laspy; "
-          "laspy.read('" +
-          path + "').write('" + las + "')\"`");
+      "PDAL, `pdal translate " +
+          in + " " + out + "`; with LAStools, `laszip -i " + in + " -o " + out +
+          "`; or with Python, `pip install 'laspy[lazrs]'` then `python3 -c 'import sys, laspy; "
+          "laspy.read(sys.argv[1]).write(sys.argv[2])' " +
+          in + " " + out + "`");
 }
 
 }  // namespace
@@ -118,7 +164,7 @@ LasHeader read_las_header(const std::string& path, std::string_view bytes) {
   }
   const int raw_format = data[kPointFormatAt];
   if ((raw_format & 0xC0) != 0 ||
-      laszip_vlr(bytes, header_size, le_u32(data + kVlrCountAt), header.point_offset)) {
+      walk_vlrs(path, bytes, header_size, le_u32(data + kVlrCountAt), header.point_offset)) {
     refuse_laz(path);
   }
   if (raw_format > 10) {
@@ -167,6 +213,21 @@ LasHeader read_las_header(const std::string& path, std::string_view bytes) {
       throw InputError(path, 0,
                        at_byte(kScaleAt + 8 * axis) + std::string(1, char('x' + axis)) +
                            " scale factor is zero or not finite");
+    }
+    // A scale too small for the data collapses the axis (at 1e-308 every
+    // coordinate lies within 1e-298 of the offset): 2^32 steps of it must
+    // span the header's bounds. (Bounds left 0 span nothing.)
+    const double span =
+        std::fabs(le_f64(data + kMaxAt + 16 * axis) - le_f64(data + kMinAt + 16 * axis));
+    if (std::isfinite(span) && !(span / std::fabs(header.scale[axis]) <= kInt32Steps)) {
+      throw InputError(path, 0,
+                       at_byte(kScaleAt + 8 * axis) + std::string(1, char('x' + axis)) +
+                           " scale factor " + six_digits(header.scale[axis]) +
+                           " is too small for the data: the header's bounds (bytes " +
+                           std::to_string(kMaxAt + 16 * axis) + ", " +
+                           std::to_string(kMinAt + 16 * axis) + ") span " + six_digits(span) +
+                           ", and 32-bit integers at that scale span at most " +
+                           six_digits(std::fabs(header.scale[axis]) * kInt32Steps));
     }
     // Every stored integer must give a finite coordinate.
     if (!std::isfinite(std::fabs(header.scale[axis]) * 2147483648.0 +

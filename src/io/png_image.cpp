@@ -149,7 +149,7 @@ class PngReader {
 
 }  // namespace
 
-DepthImage read_depth_png(const std::string& path) {
+DepthImage read_depth_png(const std::string& path, const PngSizeCheck& check_size) {
   PngReader reader(path);
   const PngLayout& layout = reader.layout();
   if (layout.colour_type != PNG_COLOR_TYPE_GRAY || layout.bit_depth != 16) {
@@ -159,6 +159,7 @@ DepthImage read_depth_png(const std::string& path) {
                          std::to_string(layout.bit_depth) + "-bit samples and PNG colour type " +
                          std::to_string(layout.colour_type));
   }
+  check_size(layout.width, layout.height);
   std::vector<unsigned char> pixels;
   reader.read(false, std::size_t{layout.width} * 2, pixels);
   DepthImage image;
@@ -172,8 +173,9 @@ DepthImage read_depth_png(const std::string& path) {
   return image;
 }
 
-ColourImage read_colour_png(const std::string& path) {
+ColourImage read_colour_png(const std::string& path, const PngSizeCheck& check_size) {
   PngReader reader(path);
+  check_size(reader.layout().width, reader.layout().height);
   ColourImage image;
   image.width = reader.layout().width;
   image.height = reader.layout().height;

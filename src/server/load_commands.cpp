@@ -32,8 +32,10 @@ std::string lower_case(std::string text) {
 }
 
 // `display` is how errors name the file (the client's path, not ours).
+// `max_memory_mb`: the server's budget, which bounds what a depth frame may
+// decode to (CloudReadOptions::max_memory_mb).
 std::shared_ptr<LoadedScene> read_scene(const fs::path& path, const std::string& display,
-                                        bool skip_bad_lines) {
+                                        bool skip_bad_lines, std::uint64_t max_memory_mb) {
   try {
     if (lower_case(fs::path(path).extension().string()) == ".obj" && !fs::is_directory(path)) {
       auto mesh = std::make_shared<const TriangleMesh>(read_obj(path.string()));
@@ -47,6 +49,7 @@ std::shared_ptr<LoadedScene> read_scene(const fs::path& path, const std::string&
     }
     CloudReadOptions options;
     options.skip_bad_lines = skip_bad_lines;
+    options.max_memory_mb = max_memory_mb;
     CloudReadReport report;
     auto cloud = std::make_shared<const PointCloud>(read_cloud(path.string(), options, &report));
     auto scene = cloud_scene(*cloud);
@@ -89,7 +92,8 @@ SceneLookup find_scene(CommandContext& context, const std::string& path, bool sk
   found.cached = found.scene != nullptr;
   if (!found.cached) {
     context.progress()("loading", 0.0);
-    found.scene = read_scene(resolved, found.relative, skip_bad_lines);
+    found.scene =
+        read_scene(resolved, found.relative, skip_bad_lines, context.server.limits.max_memory_mb);
     context.server.cache.insert(key, found.scene);
   }
   return found;
@@ -153,7 +157,7 @@ Json::Value store_upload(CommandContext& context, const std::string& name, std::
   const NamedPathScope as_stored([&](const std::string& file, const std::string& named) {
     return root.resolve_named(file == temporary.string() ? target.string() : file, named).string();
   });
-  const auto scene = read_scene(temporary, relative, false);
+  const auto scene = read_scene(temporary, relative, false, context.server.limits.max_memory_mb);
   context.progress().check_cancel();
   std::error_code error;
   fs::rename(temporary, target, error);

@@ -1,13 +1,12 @@
 #include "messages.hpp"
 
-#include <json/reader.h>
 #include <json/writer.h>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <memory>
 
+#include "occlusion/io/strict_json.hpp"
 #include "occlusion/server/protocol_error.hpp"
 
 namespace occlusion::server {
@@ -22,22 +21,10 @@ bool valid_id(const Json::Value& id) {
 }  // namespace
 
 Json::Value parse_json(std::string_view text) {
-  Json::CharReaderBuilder builder;
-  builder["collectComments"] = false;
-  builder["rejectDupKeys"] = true;
-  builder["failIfExtra"] = true;
-  builder["stackLimit"] = 256;  // deep nesting is refused, not recursed into
-  const std::unique_ptr<Json::CharReader> reader(builder.newCharReader());
   Json::Value value;
   std::string errors;
-  bool parsed = false;
-  try {
-    parsed = reader->parse(text.data(), text.data() + text.size(), &value, &errors);
-  } catch (const std::exception& e) {  // JsonCpp throws on the stack limit
-    errors = e.what();
-  }
-  if (!parsed) {
-    while (!errors.empty() && (errors.back() == '\n' || errors.back() == ' ')) errors.pop_back();
+  // Deep nesting is refused, not recursed into.
+  if (!parse_strict_json(text, StrictJson{256, false}, value, errors)) {
     throw ProtocolError("invalid_json", "message is not valid JSON: " + errors);
   }
   return value;

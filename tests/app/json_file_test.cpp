@@ -11,6 +11,7 @@
 #include <fstream>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "occlusion/app/config.hpp"
 #include "occlusion/app/errors.hpp"
@@ -44,12 +45,31 @@ std::string usage_error(const std::function<void()>& body) {
   return "(no UsageError)";
 }
 
-TEST_F(JsonFile, ReadsCommentsAndRefusesDuplicateKeys) {
-  const std::string good = write("good.json", "// a comment\n{\"a\": [1, 2]}\n");
+TEST_F(JsonFile, ReadsJsonAndRefusesWhatJsonDoesNotAllow) {
+  const std::string good = write("good.json", "{\"a\": [1, 2]}\n");
   EXPECT_EQ(read_json_file(good, "config file")["a"][1].asInt(), 2);
-  const std::string twice = write("twice.json", "{\"a\": 1, \"a\": 2}");
-  EXPECT_NE(usage_error([&] { read_json_file(twice, "config file"); }).find("not valid JSON"),
-            std::string::npos);
+  // Each would be read with something ignored or cut (issue 44): the second
+  // object, the commented-out key, a path short of its NUL.
+  const std::vector<std::string> refused = {
+      "{\"a\": 1, \"a\": 2}",
+      "{\"a\": 1}\n{\"a\": 2}\n",
+      "{\"a\": 1} x",
+      "// a comment\n{\"a\": 1}",
+      "{\"a\": 1 /* \"b\": 2 */}",
+      "{\"a\": [1, 2,]}",
+      "{\"a\": 1,}",
+      "{\"out\": \"results\\u0000/elsewhere\"}",
+      "{\"a\\u0000b\": 1}",
+  };
+  for (const std::string& text : refused) {
+    SCOPED_TRACE(text);
+    const std::string path = write("refused.json", text);
+    const std::string message = usage_error([&] { read_json_file(path, "config file"); });
+    EXPECT_NE(message.find("refused.json: not valid JSON"), std::string::npos) << message;
+  }
+  const std::string twice = write("two_objects.json", "{}\n{\"occlusion\": 1}\n");
+  const std::string message = usage_error([&] { load_config(twice); });
+  EXPECT_NE(message.find("two_objects.json: not valid JSON"), std::string::npos) << message;
 }
 
 TEST_F(JsonFile, DeepNestingIsAUsageErrorNotAnInternalOne) {

@@ -8,6 +8,8 @@
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "io/cloud_test_support.hpp"
 #include "io/scratch_directory.hpp"
@@ -261,6 +263,47 @@ TEST_F(DepthFrame, RefusesBadDescriptorFieldsNamingTheirLine) {
   write_text(scratch.file("broken.frame.json"), "{\"depth\": ");
   testing::expect_input_error([&] { read_cloud(scratch.file("broken.frame.json")); },
                               "broken.frame.json", 0, "not a valid frame descriptor (JSON)");
+}
+
+// Issue 44: a small PNG of a constant depth decodes to millions of points;
+// max_memory_mb refuses it from its header, before decoding.
+TEST_F(DepthFrame, MaxMemoryRefusesALargeImageBeforeDecodingIt) {
+  CloudReadOptions options;
+  options.max_memory_mb = 1;
+  EXPECT_EQ(read_cloud(valid(), options).size(), kWidth * kHeight - 1);
+  // 256 x 256 pixels: up to 65,536 points of 22 bytes, 1.4 MiB.
+  testing::write_depth_png(scratch.file("depth.png"), 256, 256,
+                           std::vector<std::uint16_t>(256 * 256, 1000));
+  testing::expect_input_error([&] { read_cloud(valid(), options); }, "frame_a.frame.json", 0,
+                              "depth.png is 256 x 256 pixels: read, its up to 65536 points would "
+                              "take about 2 MiB, more than max_memory_mb = 1");
+  options.max_memory_mb = 2;
+  EXPECT_EQ(read_cloud(valid(), options).size(), 256u * 256u);
+}
+
+// JSON as RFC 8259 writes it and nothing more (issue 44): JsonCpp's defaults
+// read each of these with something ignored, or a path cut at its NUL.
+TEST_F(DepthFrame, RefusesJsonBeyondTheStandard) {
+  const std::string fields = std::string(kIntrinsics) + ", \"depth_scale\": 1000";
+  const std::string good = "{\"depth\": \"depth.png\", " + fields + "}";
+  const std::string path = scratch.file("strict.frame.json");
+  write_text(path, good);
+  ASSERT_EQ(read_cloud(path).size(), kWidth * kHeight - 1);
+  const std::vector<std::string> refused = {
+      good + "\n{\"depth\": \"other.png\"}",
+      "// TUM freiburg1\n" + good,
+      "{\"depth\": \"depth.png\", /* \"colour\": \"rgb.png\", */ " + fields + "}",
+      "{\"depth\": \"depth.png\", " + fields + ",}",
+      "{\"depth\": \"depth.png\", " + fields + ", \"pose_tum\": [0, 0, 0, 0, 0, 0, 1,]}",
+      // depth.png\0.gz: the system would open depth.png.
+      "{\"depth\": \"depth.png\\u0000.gz\", " + fields + "}",
+  };
+  for (const std::string& text : refused) {
+    SCOPED_TRACE(text);
+    write_text(path, text);
+    testing::expect_input_error([&] { read_cloud(path); }, "strict.frame.json", 0,
+                                "not a valid frame descriptor (JSON)");
+  }
 }
 
 }  // namespace

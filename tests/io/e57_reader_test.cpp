@@ -278,6 +278,29 @@ TEST(E57Reader, FuzzSeedReads) {
   expect_near(cloud.positions[4], {-3 - 10.0, 0.03, 0.5}, 1e-5);
 }
 
+// The fuzz seeds of bit widths (tests/fuzz/corpus/e57/SOURCES.md): fields of
+// 32, 12, 1, 2 and 0 bits over 2 packets read; the same with X declared 1
+// bit, or recordCount 4 of the 6 records written, are refused.
+TEST(E57Reader, BitWidthFuzzSeeds) {
+  const std::string seeds = std::string(OCCLUSION_SOURCE_DIR) + "/tests/fuzz/corpus/e57/";
+  CloudReadReport report;
+  const PointCloud cloud = read_cloud(seeds + "bit_widths.e57", {}, &report);
+  ASSERT_EQ(cloud.size(), 5u);  // record 3 is invalid
+  EXPECT_EQ(report.dropped_invalid, 1u);
+  // Record 1: X (4e9 - 1000) * 1e-6 - 2000, Y 107 * 0.001, Z 1; intensity 5.
+  const Eigen::Vector3d second = cloud.to_original(cloud.positions[1].cast<double>());
+  EXPECT_NEAR(second.x(), 1999.999, 1e-3);
+  EXPECT_NEAR(second.y(), 0.107, 1e-6);
+  EXPECT_NEAR(second.z(), 1.0, 1e-6);
+  ASSERT_TRUE(cloud.has_intensities());
+  EXPECT_EQ(cloud.intensities[4], 5.0f);
+  testing::expect_input_error([&] { read_cloud(seeds + "narrow_width.e57"); }, "narrow_width.e57",
+                              0,
+                              "holds 24 bytes of cartesianX, room for 192 records of its 1 bits");
+  testing::expect_input_error([&] { read_cloud(seeds + "fewer_records.e57"); }, "fewer_records.e57",
+                              0, "room for 6 records of its 32 bits, but recordCount is 4");
+}
+
 // --- errors ----------------------------------------------------------------
 
 E57FileSpec many_points(std::size_t count) {
@@ -326,6 +349,51 @@ TEST(E57Errors, MoreRecordsThanTheSectionHolds) {
   spec.scans[0].record_count = 1'000'000'000'000;
   testing::expect_input_error([&] { read_spec(dir, spec); }, "scan.e57", 0,
                               "holds 24 bytes of cartesianX but its 1000000000000 records");
+}
+
+// A file whose X values are 32-bit integers in 0..4294967295, its XML then
+// made to declare `range` (the same length, padded with spaces), so that the
+// bytestream holds 32 bits a record where the prototype declares fewer.
+std::string narrowed_bytes(const std::string& range) {
+  E57FileSpec spec = many_points(100);
+  std::vector<std::int64_t> raw;
+  for (std::int64_t i = 0; i < 100; ++i) raw.push_back(4000000000 - 1000 * i);
+  spec.scans[0].fields[0] = test::e57_integer("cartesianX", 0, 4294967295, raw);
+  std::string bytes = test::e57_bytes(spec);
+  const std::string declared = "minimum=\"0\" maximum=\"4294967295\"";
+  const std::size_t at = bytes.find(declared);
+  EXPECT_NE(at, std::string::npos);
+  if (at == std::string::npos) return bytes;
+  bytes.replace(at, declared.size(), range + std::string(declared.size() - range.size(), ' '));
+  test::fix_e57_checksums(bytes);
+  return bytes;
+}
+
+// Issue 44: read as 0 or 1 for every point, with no error.
+TEST(E57Errors, ABitWidthNarrowerThanTheBytestreamIsRefused) {
+  const testing::ScratchDirectory dir;
+  const std::string path = dir.file("narrow.e57");
+  write_bytes(path, narrowed_bytes("minimum=\"0\" maximum=\"4294967295\""));
+  ASSERT_EQ(read_cloud(path).size(), 100u);  // as written, it reads
+  write_bytes(path, narrowed_bytes("minimum=\"0\" maximum=\"1\""));
+  testing::expect_input_error([&] { read_cloud(path); }, "narrow.e57", 0,
+                              "holds 400 bytes of cartesianX, room for 3200 records of its 1 bits");
+  write_bytes(path, narrowed_bytes("minimum=\"0\" maximum=\"0\""));
+  testing::expect_input_error([&] { read_cloud(path); }, "narrow.e57", 0,
+                              "cartesianX takes 0 bits a record");
+}
+
+// Issue 44: the first 40 points were read and the other 60 dropped silently.
+TEST(E57Errors, FewerRecordsThanTheSectionHoldsAreRefused) {
+  const testing::ScratchDirectory dir;
+  E57FileSpec spec = many_points(100);
+  spec.scans[0].record_count = 40;
+  testing::expect_input_error(
+      [&] { read_spec(dir, spec); }, "scan.e57", 0,
+      "holds 800 bytes of cartesianX, room for 100 records of its 64 bits, but recordCount is 40");
+  spec.scans[0].record_count = 99;
+  testing::expect_input_error([&] { read_spec(dir, spec); }, "scan.e57", 0,
+                              "but recordCount is 99");
 }
 
 TEST(E57Errors, ACodecOtherThanBitPackIsRefused) {

@@ -4,10 +4,15 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <map>
+#include <sstream>
+#include <string>
+#include <vector>
 
 #include "io/cloud_test_support.hpp"
 #include "io/scratch_directory.hpp"
@@ -217,7 +222,8 @@ TEST(LasReader, RefusesLazSayingHowToDecompressIt) {
     const std::string message = error.what();
     EXPECT_NE(message.find("pdal translate"), std::string::npos) << message;
     EXPECT_NE(message.find("laszip -i"), std::string::npos) << message;
-    EXPECT_NE(message.find("simple.las"), std::string::npos) << message;
+    // files/las/simple.las is beside it: the advice must not write over it.
+    EXPECT_NE(message.find("simple-decompressed.las"), std::string::npos) << message;
   }
   // A LAS file marked as compressed either way is refused the same.
   testing::ScratchDirectory scratch;
@@ -233,6 +239,106 @@ TEST(LasReader, RefusesLazSayingHowToDecompressIt) {
   write_bytes(scratch.file("bit.las"), bytes);
   testing::expect_input_error([&] { read_cloud(scratch.file("bit.las")); }, "bit.las", 0,
                               "LASzip-compressed");
+}
+
+// The message of reading `path`, which must be refused.
+std::string refusal(const std::string& path) {
+  try {
+    read_cloud(path);
+  } catch (const InputError& error) {
+    return error.what();
+  }
+  ADD_FAILURE() << path << " was read";
+  return {};
+}
+
+// The words the shell gives `tool` in the command the message advises
+// (from "`tool " to its closing backtick), run with `tool` replaced by printf
+// in `directory`: what the user's paste would run, without the tool.
+std::vector<std::string> advised_words(const std::string& message, const std::string& tool,
+                                       const std::string& directory) {
+  const std::size_t start = message.find("`" + tool + " ");
+  const std::size_t end = message.find("`", start + 1);
+  if (start == std::string::npos || end == std::string::npos) {
+    ADD_FAILURE() << "no `" << tool << " ...` in: " << message;
+    return {};
+  }
+  const std::string arguments =
+      message.substr(start + 2 + tool.size(), end - start - 2 - tool.size());
+  const std::string command = "cd " + directory + " && printf '%s\\n' " + arguments;
+  FILE* shell = ::popen(command.c_str(), "r");
+  if (shell == nullptr) return {};
+  std::string output;
+  char buffer[4096];
+  for (std::size_t got; (got = std::fread(buffer, 1, sizeof buffer, shell)) > 0;) {
+    output.append(buffer, got);
+  }
+  ::pclose(shell);
+  std::vector<std::string> words;
+  std::istringstream lines(output);
+  for (std::string line; std::getline(lines, line);) words.push_back(line);
+  return words;
+}
+
+// A LAS file whose point format marks it LASzip-compressed.
+std::string laz_marked_bytes() {
+  LasTestFile file;
+  file.points = three_points(false);
+  std::string bytes = testing::las_bytes(file);
+  bytes[testing::kLasPointFormatAt] = static_cast<char>(3 | 0x80);
+  return bytes;
+}
+
+TEST(LasReader, LazAdviceQuotesTheNameForTheShell) {
+  testing::ScratchDirectory scratch;
+  // Pasted unquoted, or quoted without escaping its ', the name runs touch.
+  const std::string path = scratch.file("it's $(touch pwned).laz");
+  write_bytes(path, laz_marked_bytes());
+  const std::string message = refusal(path);
+  const std::string directory = scratch.path().string();
+  const std::vector<std::string> pdal = advised_words(message, "pdal", directory);
+  ASSERT_EQ(pdal.size(), 3u) << message;
+  EXPECT_EQ(pdal[0], "translate");
+  EXPECT_EQ(pdal[1], path);
+  EXPECT_EQ(pdal[2], scratch.file("it's $(touch pwned).las"));
+  EXPECT_EQ(advised_words(message, "laszip", directory),
+            (std::vector<std::string>{"-i", path, "-o", pdal[2]}));
+  const std::vector<std::string> python = advised_words(message, "python3", directory);
+  ASSERT_EQ(python.size(), 4u) << message;
+  EXPECT_EQ(python[2], path);
+  EXPECT_EQ(python[3], pdal[2]);
+  EXPECT_FALSE(std::filesystem::exists(scratch.file("pwned"))) << message;
+}
+
+TEST(LasReader, LazAdviceNeverWritesOverTheInputNorAnExistingFile) {
+  testing::ScratchDirectory scratch;
+  const std::string directory = scratch.path().string();
+  // A LAZ file named .las: X.las would be the input itself.
+  const std::string named_las = scratch.file("named.las");
+  write_bytes(named_las, laz_marked_bytes());
+  // A LAZ file beside a LAS of its name: X.las exists.
+  const std::string beside = scratch.file("beside.laz");
+  write_bytes(beside, laz_marked_bytes());
+  write_bytes(scratch.file("beside.las"), "the user's own file");
+  for (const std::string& path : {named_las, beside}) {
+    const std::string message = refusal(path);
+    const std::vector<std::string> pdal = advised_words(message, "pdal", directory);
+    ASSERT_EQ(pdal.size(), 3u) << message;
+    EXPECT_EQ(pdal[1], path);
+    EXPECT_NE(pdal[2], path) << message;
+    EXPECT_FALSE(std::filesystem::exists(pdal[2])) << message;
+    EXPECT_EQ(std::filesystem::path(pdal[2]).extension(), ".las") << message;
+  }
+}
+
+// docs/formats.md: the content decides, not the name; an uncompressed LAS
+// named .laz is read (a LASzip-compressed one is refused whatever its name).
+TEST(LasReader, UncompressedLasNamedLazIsRead) {
+  testing::ScratchDirectory scratch;
+  LasTestFile file;
+  file.points = three_points(false);
+  write_bytes(scratch.file("plain.laz"), testing::las_bytes(file));
+  EXPECT_EQ(read_cloud(scratch.file("plain.laz")).size(), 3u);
 }
 
 // A valid file's bytes after `corrupt`, and the error it must give.
@@ -282,6 +388,29 @@ TEST(LasReader, RefusesCorruptOrLyingHeadersNamingTheByte) {
                  "byte 131: x scale factor is zero");
   expect_corrupt([](std::string& b) { b.resize(b.size() - 1); },
                  "truncated: the header declares 3 points");
+}
+
+// Issue 44: both were read, the first with every x within 1e-298 of the
+// offset (only the up-axis check warned), the second with its first point
+// taken from the bytes of a VLR.
+TEST(LasReader, RefusesAScaleTooSmallForTheDataAndPointsInsideTheVlrs) {
+  expect_corrupt(
+      [](std::string& b) {
+        const double tiny = 1e-308;
+        std::memcpy(b.data() + testing::kLasScaleAt, &tiny, 8);
+      },
+      "byte 131: x scale factor 1e-308 is too small for the data: the header's bounds (bytes "
+      "179, 187) span 17.001");
+  expect_corrupt(
+      [](std::string& b) {
+        const double small = 1e-9;  // 2^32 steps span 4.3, not the 17 of the bounds
+        std::memcpy(b.data() + testing::kLasScaleAt + 8, &small, 8);
+      },
+      "byte 139: y scale factor 1e-09 is too small for the data");
+  // One VLR said to be there, and none: its 54 bytes would be the points'.
+  expect_corrupt([](std::string& b) { put_u32(b, testing::kLasVlrCountAt, 1); },
+                 "byte 96: the points are said to start at byte 227, inside the header's 1 VLRs "
+                 "(byte 100): VLR 0 runs from byte 227 to 281");
 }
 
 }  // namespace

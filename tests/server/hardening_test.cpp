@@ -7,8 +7,10 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 #include "server_fixture.hpp"
+#include "support/png_writer.hpp"
 
 namespace occlusion::testing {
 namespace {
@@ -127,6 +129,28 @@ TEST(Hardening, StudyRunsAreInTheMemoryBudget) {
   EXPECT_EQ(reply.error_code(), "invalid_request") << reply.final;
   const std::string message = reply.final["message"].asString();
   EXPECT_NE(message.find("max_memory_mb = 1"), std::string::npos) << message;
+  expect_serving(server);
+}
+
+// A few KB of PNG hold a 2048 x 2048 constant depth, 4.2 million points
+// (issue 44): `load` decoded it whatever the server's budget. It is refused
+// from the header, and the same frame loads under a budget that holds it.
+TEST(Hardening, ADepthFrameBeyondTheMemoryBudgetIsRefusedBeforeDecoding) {
+  server::ServerOptions options = TestServer::quiet_options();
+  options.max_memory_mb = 16;
+  TestServer server(options);
+  write_depth_png(server.files().file("flat.png"), 2048, 2048,
+                  std::vector<std::uint16_t>(2048 * 2048, 1500));
+  std::ofstream(server.files().file("flat.frame.json"))
+      << R"({"depth": "flat.png", "depth_scale": 1000,
+             "intrinsics": {"fx": 1000, "fy": 1000, "cx": 1023.5, "cy": 1023.5}})";
+  auto client = server.connect();
+  const Reply reply =
+      client->request(1, "load", params(R"({"path": "flat.frame.json"})"), kHangGuard);
+  EXPECT_EQ(reply.error_code(), "input_error") << reply.final;
+  const std::string message = reply.final["message"].asString();
+  EXPECT_NE(message.find("flat.png is 2048 x 2048 pixels"), std::string::npos) << message;
+  EXPECT_NE(message.find("max_memory_mb = 16"), std::string::npos) << message;
   expect_serving(server);
 }
 

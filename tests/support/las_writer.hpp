@@ -38,6 +38,7 @@ std::string las_bytes(const LasTestFile& file);
 // Byte offsets of header fields the tests corrupt.
 inline constexpr std::size_t kLasHeaderSizeAt = 94;
 inline constexpr std::size_t kLasPointOffsetAt = 96;
+inline constexpr std::size_t kLasVlrCountAt = 100;
 inline constexpr std::size_t kLasPointFormatAt = 104;
 inline constexpr std::size_t kLasRecordLengthAt = 105;
 inline constexpr std::size_t kLasLegacyCountAt = 107;

@@ -7,8 +7,9 @@
 
 namespace occlusion {
 
-// The file's one JSON value: comments allowed, duplicate keys refused,
-// nesting deeper than 64 refused rather than recursed into. UsageError
+// The file's one JSON value, as io/strict_json.hpp reads it (nothing after
+// it, no comments, no trailing commas, no duplicate keys, no NUL in a
+// string), nesting deeper than 64 refused rather than recursed into. UsageError
 // "<path>: cannot read <what>: ..." or "<path>: not valid JSON: ...", as a
 // file given on the command line is part of the usage (exit 2).
 Json::Value read_json_file(const std::string& path, const std::string& what);

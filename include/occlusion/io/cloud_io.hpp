@@ -17,8 +17,9 @@
 //                       are comments
 //   .las                LAS 1.0-1.4, point formats 0-10: coordinates (scale and
 //                       offset), intensity, RGB, classification as labels named
-//                       by the ASPRS classes; .laz is refused with how to
-//                       decompress it
+//                       by the ASPRS classes; a LASzip-compressed file
+//                       (.laz) is refused with how to decompress it, an
+//                       uncompressed one named .laz read
 //   NAME.frame.json     a depth frame: a 16-bit depth PNG with its intrinsics,
 //                       depth unit, optional colour PNG and camera pose; an
 //                       organised cloud whose camera is its sensor and station
@@ -47,6 +48,7 @@
 // unknown S3DIS class, and a file with no points at all.
 
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -73,6 +75,11 @@ struct CloudReadOptions {
   // clouds only). A second cloud compared point by point with a first one
   // (a prediction with its ground truth) is read with the first one's shift.
   std::optional<Eigen::Vector3d> shift;
+  // The memory, in MiB (0: no limit), a reader may take for points it
+  // decodes from far fewer bytes: a depth frame's PNG (deflate packs a
+  // constant image about 1000-fold, so 39 KB can hold 16.7 million pixels)
+  // is refused from its header's width x height, before it is decoded.
+  std::uint64_t max_memory_mb = 0;
 };
 
 struct CloudReadReport {
