@@ -23,4 +23,10 @@ double EmbreeScene::build(const TriangleMesh& mesh) {
   });
 }
 
+void EmbreeScene::intersect(const Ray* rays, std::size_t count, std::optional<Hit>* hits,
+                            unsigned threads) const {
+  intersect_with_ids(rays, count, hits, threads,
+                     [](unsigned, unsigned primitive) { return PrimitiveId{primitive}; });
+}
+
 }  // namespace occlusion::bench

@@ -19,6 +19,10 @@ class EmbreeScene : public EmbreeTracer {
   // (Re)builds the scene as one triangle geometry, vertices rounded to float
   // as our octree rounds them. Returns the seconds from empty scene to committed BVH.
   double build(const TriangleMesh& mesh);
+
+  // hits[i] = rtcIntersect1's closest hit on rays[i] (t and face index), or none.
+  void intersect(const Ray* rays, std::size_t count, std::optional<Hit>* hits,
+                 unsigned threads) const;
 };
 
 }  // namespace occlusion::bench

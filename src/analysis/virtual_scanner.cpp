@@ -26,7 +26,9 @@ double seconds_since(Clock::time_point start) {
 constexpr double kDegree = 3.14159265358979323846 / 180.0;
 // Beams traced at a time: bounds the rays and hits held (a full-dome station
 // of 0.2 degree steps is 1.35 M beams, times the sub-rays of a wide beam).
-constexpr std::size_t kBeamsPerBlock = 1 << 15;
+constexpr std::size_t kRaysPerBlock = 1 << 18;
+// Beams made and turned into returns at a time by one thread.
+constexpr std::size_t kGrain = 1024;
 
 // A standard normal deviate from two uniforms (Box-Muller): fully specified,
 // as Rng is, so a seed gives the same noise everywhere.
@@ -63,8 +65,11 @@ struct BeamGeometry {
   std::vector<std::uint32_t> cells;
 };
 
+// What became of a beam.
+enum class Outcome : std::uint8_t { kPoint, kNoHit, kOutOfRange, kGrazing };
+
 struct Return {
-  bool kept = false;
+  Outcome outcome = Outcome::kNoHit;
   Eigen::Vector3d position;
   Eigen::Vector3f true_point, true_normal;
   std::uint32_t face = 0;
@@ -101,85 +106,88 @@ class StationTracer {
 // The laser's returns for one block of beams.
 void laser_returns(const LaserScannerModel& model, const StationTracer& tracer,
                    const Eigen::Vector3d& origin, std::size_t station, const BeamGeometry& beams,
-                   const std::vector<Eigen::Vector2d>& footprint, std::vector<Return>& out,
-                   BeamCounts& counts) {
+                   const std::vector<Eigen::Vector2d>& footprint, std::vector<Return>& out) {
   const std::size_t subs = footprint.size();
   const double half_angle = 0.5e-3 * model.beam_divergence_mrad;
   const Eigen::Vector3f origin_f = origin.cast<float>();
   std::vector<Ray> rays(beams.directions.size() * subs);
-  for (std::size_t b = 0; b < beams.directions.size(); ++b) {
-    const Eigen::Vector3d& d = beams.directions[b];
-    const Eigen::Vector3d u = d.unitOrthogonal();
-    const Eigen::Vector3d v = d.cross(u);
-    for (std::size_t s = 0; s < subs; ++s) {
-      const Eigen::Vector2d& o = footprint[s];
-      Eigen::Vector3d dir = d;
-      const double radius = o.norm();
-      if (radius > 0.0) dir += std::tan(half_angle * radius) / radius * (o.x() * u + o.y() * v);
-      dir.normalize();
-      Ray& ray = rays[b * subs + s];
-      ray.origin = origin_f;
-      ray.direction = dir.cast<float>();
-      ray.t_min = 0.0f;
-      ray.t_max = static_cast<float>(model.max_range);
+  const unsigned threads = tracer.options().threads;
+  parallel_for(beams.directions.size(), kGrain, threads, [&](std::size_t first, std::size_t last) {
+    for (std::size_t b = first; b < last; ++b) {
+      const Eigen::Vector3d& d = beams.directions[b];
+      const Eigen::Vector3d u = d.unitOrthogonal();
+      const Eigen::Vector3d v = d.cross(u);
+      for (std::size_t s = 0; s < subs; ++s) {
+        const Eigen::Vector2d& o = footprint[s];
+        Eigen::Vector3d dir = d;
+        const double radius = o.norm();
+        if (radius > 0.0) dir += std::tan(half_angle * radius) / radius * (o.x() * u + o.y() * v);
+        dir.normalize();
+        Ray& ray = rays[b * subs + s];
+        ray.origin = origin_f;
+        ray.direction = dir.cast<float>();
+        ray.t_min = 0.0f;
+        ray.t_max = static_cast<float>(model.max_range);
+      }
     }
-  }
+  });
   const std::vector<std::optional<Hit>> hits = tracer.trace(rays);
   const double cos_limit = std::cos(tracer.options().max_incidence_deg * kDegree);
   out.assign(beams.directions.size(), Return{});
-  for (std::size_t b = 0; b < beams.directions.size(); ++b) {
-    ++counts.beams;
-    // The first echo, and the echoes a pulse could not tell from it.
-    std::size_t nearest = subs;
-    for (std::size_t s = 0; s < subs; ++s) {
-      const auto& hit = hits[b * subs + s];
-      if (hit && (nearest == subs || hit->t_hit < hits[b * subs + nearest]->t_hit)) nearest = s;
-    }
-    if (nearest == subs) {
-      ++counts.no_hit;
-      continue;
-    }
-    const Hit& first = *hits[b * subs + nearest];
-    double range_sum = 0.0;
-    std::size_t merged = 0;
-    for (std::size_t s = 0; s < subs; ++s) {
-      const auto& hit = hits[b * subs + s];
-      if (hit && hit->t_hit <= first.t_hit + model.echo_window) {
-        range_sum += hit->t_hit;
-        ++merged;
-      }
-    }
-    const double range = range_sum / static_cast<double>(merged);
-    const Ray& ray = rays[b * subs + nearest];
-    const PackedTriangle& tri = tracer.face(first.primitive_id);
-    const Eigen::Vector3f normal = facing_normal(tri, ray.direction);
-    if (-normal.dot(ray.direction) < cos_limit) {
-      ++counts.grazing;
-      continue;
-    }
-    if (range < model.min_range) {
-      ++counts.out_of_range;
-      continue;
-    }
-    Rng rng = beam_rng(tracer.options().seed, station, beams.cells[b]);
-    const double measured =
-        tracer.options().noise ? range + model.range_sigma(range) * standard_normal(rng) : range;
-    Return& r = out[b];
-    r.kept = true;
-    r.position = origin + measured * beams.directions[b];
-    r.true_point = ray.at(first.t_hit);
-    r.true_normal = normal;
-    r.face = first.primitive_id;
-    ++counts.returns;
-  }
+  parallel_for(
+      beams.directions.size(), kGrain, threads, [&](std::size_t first_beam, std::size_t last_beam) {
+        for (std::size_t b = first_beam; b < last_beam; ++b) {
+          // The first echo, and the echoes a pulse could not tell from it.
+          std::size_t nearest = subs;
+          for (std::size_t s = 0; s < subs; ++s) {
+            const auto& hit = hits[b * subs + s];
+            if (hit && (nearest == subs || hit->t_hit < hits[b * subs + nearest]->t_hit))
+              nearest = s;
+          }
+          if (nearest == subs) continue;  // no hit
+          const Hit& first = *hits[b * subs + nearest];
+          double range_sum = 0.0;
+          std::size_t merged = 0;
+          for (std::size_t s = 0; s < subs; ++s) {
+            const auto& hit = hits[b * subs + s];
+            if (hit && hit->t_hit <= first.t_hit + model.echo_window) {
+              range_sum += hit->t_hit;
+              ++merged;
+            }
+          }
+          const double range = range_sum / static_cast<double>(merged);
+          const Ray& ray = rays[b * subs + nearest];
+          const PackedTriangle& tri = tracer.face(first.primitive_id);
+          const Eigen::Vector3f normal = facing_normal(tri, ray.direction);
+          if (-normal.dot(ray.direction) < cos_limit) {
+            out[b].outcome = Outcome::kGrazing;
+            continue;
+          }
+          if (range < model.min_range) {
+            out[b].outcome = Outcome::kOutOfRange;
+            continue;
+          }
+          Rng rng = beam_rng(tracer.options().seed, station, beams.cells[b]);
+          const double measured = tracer.options().noise
+                                      ? range + model.range_sigma(range) * standard_normal(rng)
+                                      : range;
+          Return& r = out[b];
+          r.outcome = Outcome::kPoint;
+          r.position = origin + measured * beams.directions[b];
+          r.true_point = ray.at(first.t_hit);
+          r.true_normal = normal;
+          r.face = first.primitive_id;
+        }
+      });
 }
 
 // The camera's returns for one block of pixels.
 void camera_returns(const DepthCameraModel& model, const StationTracer& tracer,
                     const Eigen::Vector3d& origin, std::size_t station, const BeamGeometry& beams,
-                    std::vector<Return>& out, BeamCounts& counts) {
+                    std::vector<Return>& out) {
   const Eigen::Vector3f origin_f = origin.cast<float>();
   std::vector<Ray> rays(beams.directions.size());
+  const unsigned threads = tracer.options().threads;
   for (std::size_t b = 0; b < rays.size(); ++b) {
     rays[b].origin = origin_f;
     rays[b].direction = beams.directions[b].cast<float>();  // z = 1 in the camera: t is depth
@@ -189,37 +197,34 @@ void camera_returns(const DepthCameraModel& model, const StationTracer& tracer,
   const std::vector<std::optional<Hit>> hits = tracer.trace(rays);
   const double cos_limit = std::cos(tracer.options().max_incidence_deg * kDegree);
   out.assign(rays.size(), Return{});
-  for (std::size_t b = 0; b < rays.size(); ++b) {
-    ++counts.beams;
-    if (!hits[b]) {
-      ++counts.no_hit;
-      continue;
+  parallel_for(rays.size(), kGrain, threads, [&](std::size_t first, std::size_t last) {
+    for (std::size_t b = first; b < last; ++b) {
+      if (!hits[b]) continue;
+      const double depth = hits[b]->t_hit;
+      const PackedTriangle& tri = tracer.face(hits[b]->primitive_id);
+      const Eigen::Vector3f unit = rays[b].direction.normalized();
+      const Eigen::Vector3f normal = facing_normal(tri, unit);
+      if (-normal.dot(unit) < cos_limit) {
+        out[b].outcome = Outcome::kGrazing;
+        continue;
+      }
+      double measured = depth;
+      if (tracer.options().noise) {
+        Rng rng = beam_rng(tracer.options().seed, station, beams.cells[b]);
+        measured = model.quantised_depth(depth + model.depth_sigma(depth) * standard_normal(rng));
+      }
+      if (depth < model.min_depth || measured < model.min_depth || measured > model.max_depth) {
+        out[b].outcome = Outcome::kOutOfRange;
+        continue;
+      }
+      Return& r = out[b];
+      r.outcome = Outcome::kPoint;
+      r.position = origin + measured * beams.directions[b];
+      r.true_point = rays[b].at(hits[b]->t_hit);
+      r.true_normal = normal;
+      r.face = hits[b]->primitive_id;
     }
-    const double depth = hits[b]->t_hit;
-    const PackedTriangle& tri = tracer.face(hits[b]->primitive_id);
-    const Eigen::Vector3f unit = rays[b].direction.normalized();
-    const Eigen::Vector3f normal = facing_normal(tri, unit);
-    if (-normal.dot(unit) < cos_limit) {
-      ++counts.grazing;
-      continue;
-    }
-    double measured = depth;
-    if (tracer.options().noise) {
-      Rng rng = beam_rng(tracer.options().seed, station, beams.cells[b]);
-      measured = model.quantised_depth(depth + model.depth_sigma(depth) * standard_normal(rng));
-    }
-    if (depth < model.min_depth || measured < model.min_depth || measured > model.max_depth) {
-      ++counts.out_of_range;
-      continue;
-    }
-    Return& r = out[b];
-    r.kept = true;
-    r.position = origin + measured * beams.directions[b];
-    r.true_point = rays[b].at(hits[b]->t_hit);
-    r.true_normal = normal;
-    r.face = hits[b]->primitive_id;
-    ++counts.returns;
-  }
+  });
 }
 
 void check_finite(const ScannerStation& station) {
@@ -307,6 +312,18 @@ SimulatedScan simulate_scan(const TriangleMesh& mesh, const std::vector<ScannerS
   if (cells > std::size_t{1} << 32) {
     throw std::invalid_argument("virtual scanner: more than 2^32 beams a station");
   }
+  // The laser's angles, once: a full dome at 0.1 degrees is 5.4 M beams.
+  std::vector<double> cos_azimuth, sin_azimuth, cos_elevation, sin_elevation;
+  if (laser) {
+    for (std::size_t column = 0; column < columns; ++column) {
+      cos_azimuth.push_back(std::cos(laser->azimuth_deg(column) * kDegree));
+      sin_azimuth.push_back(std::sin(laser->azimuth_deg(column) * kDegree));
+    }
+    for (std::size_t row = 0; row < rows; ++row) {
+      cos_elevation.push_back(std::cos(laser->elevation_deg(row) * kDegree));
+      sin_elevation.push_back(std::sin(laser->elevation_deg(row) * kDegree));
+    }
+  }
   start = Clock::now();
   scan.per_station.resize(stations.size());
   for (std::size_t s = 0; s < stations.size(); ++s) {
@@ -324,38 +341,46 @@ SimulatedScan simulate_scan(const TriangleMesh& mesh, const std::vector<ScannerS
     cloud.stations.push_back(recorded);
 
     BeamCounts& counts = scan.per_station[s];
-    for (std::size_t first = 0; first < cells; first += kBeamsPerBlock) {
+    const std::size_t block = std::max<std::size_t>(kGrain, kRaysPerBlock / footprint.size());
+    for (std::size_t first = 0; first < cells; first += block) {
       progress.check_cancel();
       progress("scanning",
                (static_cast<double>(s) + static_cast<double>(first) / static_cast<double>(cells)) /
                    static_cast<double>(stations.size()));
-      const std::size_t last = std::min(cells, first + kBeamsPerBlock);
+      const std::size_t last = std::min(cells, first + block);
       BeamGeometry beams;
-      beams.directions.reserve(last - first);
-      for (std::size_t cell = first; cell < last; ++cell) {
-        const std::size_t row = cell / columns, column = cell % columns;
-        Eigen::Vector3d local;
-        if (laser) {
-          const double azimuth = laser->azimuth_deg(column) * kDegree;
-          const double elevation = laser->elevation_deg(row) * kDegree;
-          local = {std::cos(elevation) * std::cos(azimuth), std::cos(elevation) * std::sin(azimuth),
-                   std::sin(elevation)};
-        } else {
-          local = {(static_cast<double>(column) - camera->principal_x()) / camera->fx,
-                   (static_cast<double>(row) - camera->principal_y()) / camera->fy, 1.0};
+      beams.directions.resize(last - first);
+      beams.cells.resize(last - first);
+      parallel_for(last - first, kGrain, options.threads, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t b = begin; b < end; ++b) {
+          const std::size_t cell = first + b;
+          const std::size_t row = cell / columns, column = cell % columns;
+          Eigen::Vector3d local;
+          if (laser) {
+            local = {cos_elevation[row] * cos_azimuth[column],
+                     cos_elevation[row] * sin_azimuth[column], sin_elevation[row]};
+          } else {
+            local = {(static_cast<double>(column) - camera->principal_x()) / camera->fx,
+                     (static_cast<double>(row) - camera->principal_y()) / camera->fy, 1.0};
+          }
+          beams.directions[b] = rotation * local;
+          beams.cells[b] = static_cast<std::uint32_t>(cell);
         }
-        beams.directions.push_back(rotation * local);
-        beams.cells.push_back(static_cast<std::uint32_t>(cell));
-      }
+      });
       std::vector<Return> returns;
       if (laser) {
-        laser_returns(*laser, tracer, origin, s, beams, footprint, returns, counts);
+        laser_returns(*laser, tracer, origin, s, beams, footprint, returns);
       } else {
-        camera_returns(*camera, tracer, origin, s, beams, returns, counts);
+        camera_returns(*camera, tracer, origin, s, beams, returns);
       }
       for (std::size_t b = 0; b < returns.size(); ++b) {
         const Return& r = returns[b];
-        if (!r.kept) continue;
+        ++counts.beams;
+        if (r.outcome == Outcome::kNoHit) ++counts.no_hit;
+        if (r.outcome == Outcome::kOutOfRange) ++counts.out_of_range;
+        if (r.outcome == Outcome::kGrazing) ++counts.grazing;
+        if (r.outcome != Outcome::kPoint) continue;
+        ++counts.returns;
         cloud.positions.push_back(r.position.cast<float>());
         const std::uint32_t group = mesh.face_group[r.face];
         cloud.labels.push_back(group_label[group]);
