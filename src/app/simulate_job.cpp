@@ -1,5 +1,8 @@
 #include "occlusion/app/simulate_job.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
 #include <limits>
 
 #include "job_support.hpp"
@@ -9,6 +12,7 @@
 #include "occlusion/app/sensor_model_keys.hpp"
 #include "occlusion/io/atomic_file.hpp"
 #include "occlusion/io/mesh_reader.hpp"
+#include "occlusion/io/png_writer.hpp"
 
 namespace occlusion {
 
@@ -74,6 +78,54 @@ Json::Value counts_json(const BeamCounts& counts) {
   json["out_of_range"] = Json::UInt64(counts.out_of_range);
   json["beyond_max_incidence"] = Json::UInt64(counts.grazing);
   return json;
+}
+
+// Depth values a metre: TUM's 5000 (0.2 mm) while the farthest depth fits
+// 16 bits, else millimetres.
+double depth_scale_for(const DepthCameraModel& camera) {
+  return camera.max_depth * 5000.0 <= 65535.0 ? 5000.0 : 1000.0;
+}
+
+// One camera's scan as the camera writes it: a 16-bit depth PNG (0 where
+// nothing returned) and the descriptor the depth-frame reader reads
+// (docs/formats.md), its pose the station's, in the mesh's frame.
+void write_camera_frame(OutputSet& outputs, const std::string& descriptor_path,
+                        const std::string& png_path, const SimulateReport& report) {
+  const DepthCameraModel& camera = report.request.camera;
+  const PointCloud& cloud = report.scan.cloud;
+  const Station& station = cloud.stations.front();
+  const Eigen::Matrix3d rotation = station.frame.orientation.toRotationMatrix();
+  const Eigen::Vector3d forward = rotation.col(2);
+  const double scale = depth_scale_for(camera);
+  std::vector<std::uint16_t> depth(camera.width * camera.height, 0);
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    const double z = (cloud.positions[i].cast<double>() - station.frame.origin).dot(forward);
+    depth[cloud.pixels[i]] =
+        static_cast<std::uint16_t>(std::clamp(std::round(z * scale), 1.0, 65535.0));
+  }
+  write_depth_png(outputs.add(png_path), camera.width, camera.height, depth);
+
+  Json::Value descriptor(Json::objectValue);
+  descriptor["depth"] = std::filesystem::path(png_path).filename().string();
+  Json::Value intrinsics(Json::objectValue);
+  intrinsics["fx"] = camera.fx;
+  intrinsics["fy"] = camera.fy;
+  intrinsics["cx"] = camera.principal_x();
+  intrinsics["cy"] = camera.principal_y();
+  descriptor["intrinsics"] = intrinsics;
+  descriptor["depth_scale"] = scale;
+  Eigen::Matrix4d pose = Eigen::Matrix4d::Identity();
+  pose.topLeftCorner<3, 3>() = rotation;
+  pose.topRightCorner<3, 1>() = cloud.to_original(station.frame.origin);
+  Json::Value rows(Json::arrayValue);
+  for (int r = 0; r < 4; ++r) {
+    Json::Value row(Json::arrayValue);
+    for (int c = 0; c < 4; ++c) row.append(pose(r, c));
+    rows.append(row);
+  }
+  descriptor["camera_to_world"] = rows;
+  descriptor["name"] = station.name;
+  job::write_json_report(outputs.add(descriptor_path), descriptor);
 }
 
 }  // namespace
@@ -158,7 +210,15 @@ SimulateReport run_simulate(const SimulateRequest& request, const Progress& prog
     OutputSet outputs;
     write_cloud(outputs.add(cloud_path), report.scan.cloud,
                 request.truth ? truth_fields(report.scan) : std::vector<ScalarField>{});
-    job::commit_outputs(outputs, report, json_path, {json_path, cloud_path}, start);
+    std::vector<std::string> paths{json_path, cloud_path};
+    if (report.scan.cloud.sensor.organised()) {
+      const std::string frame_path = job::output_path(request.out, request.path, ".sim.frame.json");
+      const std::string png_path = job::output_path(request.out, request.path, ".sim.depth.png");
+      write_camera_frame(outputs, frame_path, png_path, report);
+      paths.push_back(frame_path);
+      paths.push_back(png_path);
+    }
+    job::commit_outputs(outputs, report, json_path, paths, start);
   }
   report.total_seconds = job::seconds_since(start);
   return report;

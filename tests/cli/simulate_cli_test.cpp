@@ -90,6 +90,31 @@ TEST(SimulateCli, ADepthCameraLooksWhereItIsTold) {
   EXPECT_FALSE(report["parameters"].isMember("azimuth_step"));    // the laser's keys did nothing
 }
 
+TEST(SimulateCli, ACameraWritesTheDepthFrameItsReaderReadsBack) {
+  const TempDir dir;
+  const Json::Value report =
+      run_json("simulate " + kRoom +
+               " --sensor camera --width 160 --height 120 --fx 145 --fy 145 --station 1,1,1.2 "
+               "--look-at 5,4,1 --out '" +
+               dir.path() + "'");
+  ASSERT_EQ(report["outputs"].size(), 4u);
+  const PointCloud scan = read_cloud(dir.file("sample_room.sim.ply"));
+  const PointCloud frame = read_cloud(dir.file("sample_room.sim.frame.json"));
+  ASSERT_EQ(frame.size(), scan.size());
+  ASSERT_TRUE(frame.sensor.organised());
+  EXPECT_EQ(frame.sensor.width, 160u);
+  EXPECT_NEAR(frame.sensor.origin.z(), 1.2, 1e-9);
+  // The frame's points are the scan's, pixel by pixel, to the PNG's 0.2 mm.
+  double worst = 0.0;
+  for (std::size_t i = 0; i < frame.size(); ++i) {
+    worst = std::max(worst, (frame.positions[i] - scan.positions[i]).cast<double>().norm());
+  }
+  EXPECT_LT(worst, 2.5e-4);
+  // Seen from its own camera by default, as any depth frame.
+  const Json::Value seen = run_json("-fscan '" + dir.file("sample_room.sim.frame.json") + "'");
+  EXPECT_EQ(seen["viewpoints"][0]["name"].asString(), "station_1");
+}
+
 TEST(SimulateCli, RequestsNoSensorCanMakeAreRefusedNamingTheKey) {
   const auto camera = run_cli("simulate " + kRoom + " --sensor camera --station 1,1,1");
   EXPECT_EQ(camera.exit_code, 2);

@@ -1,5 +1,7 @@
 #include "support/png_writer.hpp"
 
+#include "occlusion/io/png_writer.hpp"
+
 #include <png.h>
 
 #include <stdexcept>
@@ -24,8 +26,7 @@ void write_png(const std::string& path, std::size_t width, std::size_t height, p
 
 void write_depth_png(const std::string& path, std::size_t width, std::size_t height,
                      const std::vector<std::uint16_t>& values) {
-  if (values.size() != width * height) throw std::invalid_argument("write_depth_png: size");
-  write_png(path, width, height, PNG_FORMAT_LINEAR_Y, values.data());
+  occlusion::write_depth_png(path, width, height, values);
 }
 
 void write_8bit_png(const std::string& path, std::size_t width, std::size_t height, int channels,
