@@ -10,6 +10,7 @@
 #include "occlusion/core/nyu40_classes.hpp"
 #include "occlusion/io/input_error.hpp"
 #include "occlusion/io/mesh_reader.hpp"
+#include "occlusion/io/named_paths.hpp"
 
 namespace occlusion::detail {
 namespace {
@@ -25,6 +26,13 @@ bool ends_with(std::string_view text, std::string_view suffix) {
 std::string existing_file(const fs::path& path) {
   std::error_code status;
   return fs::is_regular_file(path, status) ? path.string() : "";
+}
+
+// The scene's other file, beside the one given: a file the user did not name,
+// opened by the rule in force for paths a file names (named_paths.hpp), so
+// the server refuses one that leads out of its data directory.
+std::string sibling(const fs::path& given, const std::string& scene, std::string_view suffix) {
+  return existing_file(resolve_named_path(given.string(), scene + std::string(suffix)));
 }
 
 std::string point_text(const Eigen::Vector3d& p) {
@@ -67,13 +75,11 @@ std::optional<ScanNetScene> scannet_scene(const std::string& path) {
   const std::string name = given.filename().string();
   if (ends_with(name, kLabelsSuffix)) {
     const std::string scene = name.substr(0, name.size() - kLabelsSuffix.size());
-    return ScanNetScene{existing_file(given.parent_path() / (scene + std::string(kMeshSuffix))),
-                        path};
+    return ScanNetScene{sibling(given, scene, kMeshSuffix), path};
   }
   if (ends_with(name, kMeshSuffix)) {
     const std::string scene = name.substr(0, name.size() - kMeshSuffix.size());
-    const std::string labels =
-        existing_file(given.parent_path() / (scene + std::string(kLabelsSuffix)));
+    const std::string labels = sibling(given, scene, kLabelsSuffix);
     if (labels.empty()) return std::nullopt;
     return ScanNetScene{path, labels};
   }
