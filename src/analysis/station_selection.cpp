@@ -15,6 +15,7 @@ using Bits = std::vector<std::uint64_t>;
 // Sums of weights are formed in different orders by different moves; this
 // much (relative to the total) is rounding, not coverage.
 constexpr double kRelativeTolerance = 1e-12;
+static_assert(kLeastTargetCoverage > 2 * kRelativeTolerance, "a target must exceed rounding");
 
 void add_row(Bits& covered, const CoverageMatrix& matrix, std::size_t candidate) {
   const std::uint64_t* row = matrix.row(candidate);
@@ -525,8 +526,10 @@ StationSelection select_stations(const CoverageMatrix& matrix, const SelectionOp
     throw std::invalid_argument(
         "station selection: give either a number of stations or a target coverage");
   }
-  if (target_mode && !(options.target_coverage <= 1.0)) {
-    throw std::invalid_argument("station selection: the target coverage must lie in (0, 1]");
+  if (target_mode &&
+      !(options.target_coverage >= kLeastTargetCoverage && options.target_coverage <= 1.0)) {
+    throw std::invalid_argument(
+        "station selection: the target coverage must lie in [1e-9, 1] (kLeastTargetCoverage)");
   }
   if (!(matrix.total_weight() > 0.0)) {
     throw std::invalid_argument("station selection: the targets weigh nothing");

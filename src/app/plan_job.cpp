@@ -395,12 +395,16 @@ StationLimits station_limits(const PlanRequest& request) {
 PlanReport plan_cloud(const PointCloud& cloud, const PlanRequest& request,
                       const Progress& progress) {
   check_not_writing(request);
+  // Empty data in memory is the caller's argument, as for the other jobs in
+  // memory: not a file, nor one that does not exist.
+  if (cloud.size() == 0) throw UsageError("the cloud given has no points");
   return as_usage_errors([&] { return plan_cloud_impl(cloud, request, progress); });
 }
 
 PlanReport plan_mesh(const TriangleMesh& mesh, const PlanRequest& request,
                      const Progress& progress) {
   check_not_writing(request);
+  if (mesh.face_count() == 0) throw UsageError("the mesh given has no faces");
   return as_usage_errors([&] { return plan_mesh_impl(mesh, request, progress); });
 }
 

@@ -1,5 +1,6 @@
 // The keys of `plan` (config section occlusion.plan).
 
+#include "occlusion/analysis/station_selection.hpp"
 #include "occlusion/app/plan_job.hpp"
 #include "occlusion/app/shared_keys.hpp"
 
@@ -37,11 +38,11 @@ Keys<R> question_keys() {
           [](const R& r) {
             return r.target_coverage > 0.0 ? Json::Value(r.target_coverage) : Json::Value();
           })
-          .positive_up_to(1.0)
+          .range(kLeastTargetCoverage, 1.0)
           .metavar("C")
           .exclusive("question")
           .doc("the fewest new stations that cover this share of the targets' area (instead of "
-               "stations)"),
+               "stations); a smaller share than 1e-9 cannot be told from rounding"),
   };
 }
 

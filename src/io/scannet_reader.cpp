@@ -10,6 +10,7 @@
 #include "occlusion/core/nyu40_classes.hpp"
 #include "occlusion/io/input_error.hpp"
 #include "occlusion/io/mesh_reader.hpp"
+#include "occlusion/io/named_paths.hpp"
 
 namespace occlusion::detail {
 namespace {
@@ -25,6 +26,13 @@ bool ends_with(std::string_view text, std::string_view suffix) {
 std::string existing_file(const fs::path& path) {
   std::error_code status;
   return fs::is_regular_file(path, status) ? path.string() : "";
+}
+
+// The scene's other file, beside the one given: a file the user did not name,
+// opened by the rule in force for paths a file names (named_paths.hpp), so
+// the server refuses one that leads out of its data directory.
+std::string sibling(const fs::path& given, const std::string& scene, std::string_view suffix) {
+  return existing_file(resolve_named_path(given.string(), scene + std::string(suffix)));
 }
 
 std::string point_text(const Eigen::Vector3d& p) {
@@ -67,13 +75,11 @@ std::optional<ScanNetScene> scannet_scene(const std::string& path) {
   const std::string name = given.filename().string();
   if (ends_with(name, kLabelsSuffix)) {
     const std::string scene = name.substr(0, name.size() - kLabelsSuffix.size());
-    return ScanNetScene{existing_file(given.parent_path() / (scene + std::string(kMeshSuffix))),
-                        path};
+    return ScanNetScene{sibling(given, scene, kMeshSuffix), path};
   }
   if (ends_with(name, kMeshSuffix)) {
     const std::string scene = name.substr(0, name.size() - kMeshSuffix.size());
-    const std::string labels =
-        existing_file(given.parent_path() / (scene + std::string(kLabelsSuffix)));
+    const std::string labels = sibling(given, scene, kLabelsSuffix);
     if (labels.empty()) return std::nullopt;
     return ScanNetScene{path, labels};
   }
@@ -90,8 +96,10 @@ PointCloud read_scannet(const ScanNetScene& scene, const CloudReadOptions& optio
     name_nyu40(cloud, scene.labels);
     return cloud;
   }
+  const std::size_t dropped_before = report.dropped_nan;
   PointCloud cloud = read_ply(scene.mesh, options, report);
   if (scene.labels.empty()) return cloud;  // a scene not annotated (ScanNet's test split)
+  const std::size_t mesh_dropped = report.dropped_nan - dropped_before;
   CloudReadOptions same_frame = options;
   same_frame.shift = cloud.shift;
   CloudReadReport labels_report;  // its alpha and other properties are the mesh's again
@@ -99,14 +107,27 @@ PointCloud read_scannet(const ScanNetScene& scene, const CloudReadOptions& optio
   if (!labelled.has_labels()) {
     throw InputError(scene.labels, 0, "has no label property, as a ScanNet labels file has");
   }
-  if (labelled.size() != cloud.size() || labels_report.dropped_nan != 0) {
+  // Both files' counts are of all their vertices: the readers drop those
+  // with a non-finite coordinate, so the files' counts are the kept plus the dropped.
+  const std::size_t labels_vertices = labelled.size() + labels_report.dropped_nan;
+  const std::size_t mesh_vertices = cloud.size() + mesh_dropped;
+  if (labels_vertices != mesh_vertices) {
     throw InputError(scene.labels, 0,
-                     "has " + std::to_string(labelled.size() + labels_report.dropped_nan) +
-                         " vertices and the mesh " + scene.mesh + " has " +
-                         std::to_string(cloud.size()) +
-                         " (with finite coordinates): a labels file must hold the mesh's "
-                         "vertices, one label each, in the mesh's order");
+                     "has " + std::to_string(labels_vertices) + " vertices and the mesh " +
+                         scene.mesh + " has " + std::to_string(mesh_vertices) +
+                         ": a labels file must hold the mesh's vertices, one label each, in the "
+                         "mesh's order");
   }
+  if (labels_report.dropped_nan != mesh_dropped) {
+    throw InputError(scene.labels, 0,
+                     "has " + std::to_string(labels_vertices) + " vertices, as the mesh " +
+                         scene.mesh + " has, but " + std::to_string(labels_report.dropped_nan) +
+                         " of them with a non-finite coordinate where the mesh has " +
+                         std::to_string(mesh_dropped) +
+                         ": the labels are not for this mesh's vertices");
+  }
+  // The same count dropped from each: the vertices kept must then be the same,
+  // one by one, which the loop below checks.
   for (std::size_t i = 0; i < cloud.size(); ++i) {
     if (labelled.positions[i] != cloud.positions[i]) {
       throw InputError(scene.labels, 0,

@@ -2,6 +2,8 @@
 
 #include <pybind11/numpy.h>
 
+#include <limits>
+
 #include "occlusion/app/errors.hpp"
 
 namespace py = pybind11;
@@ -42,10 +44,16 @@ Json::Value from_python(const py::handle& object, const std::string& key) {
   // bool before int: Python's bool is an int.
   if (py::isinstance<py::bool_>(object)) return Json::Value(object.cast<bool>());
   if (py::isinstance<py::int_>(object)) {
+    // Python's int has no bound; a config value holds 64 bits.
     const py::int_ value = py::reinterpret_borrow<py::int_>(object);
-    if (py::int_(0) <= value)
+    if (py::int_(0) <= value && value <= py::int_(std::numeric_limits<Json::UInt64>::max())) {
       return Json::Value(static_cast<Json::UInt64>(object.cast<unsigned long long>()));
-    return Json::Value(static_cast<Json::Int64>(object.cast<long long>()));
+    }
+    if (py::int_(std::numeric_limits<Json::Int64>::min()) <= value && value < py::int_(0)) {
+      return Json::Value(static_cast<Json::Int64>(object.cast<long long>()));
+    }
+    throw UsageError("'" + key + "': " + py::str(object).cast<std::string>() +
+                     " does not fit in 64 bits");
   }
   if (py::isinstance<py::float_>(object)) return Json::Value(object.cast<double>());
   if (py::isinstance<py::str>(object)) return Json::Value(object.cast<std::string>());

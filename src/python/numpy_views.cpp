@@ -3,6 +3,7 @@
 #include <pybind11/stl.h>
 
 #include <limits>
+#include <type_traits>
 
 namespace py = pybind11;
 
@@ -78,27 +79,35 @@ void ScalarView::expect_rows(std::size_t rows) const {
   }
 }
 
-py::array_t<std::int64_t> integer_array(const py::handle& object, const std::string& name) {
+namespace {
+
+py::array integer_or_refuse(const py::handle& object, const std::string& name) {
   py::array any = py::array::ensure(object);
   const char kind = any ? any.dtype().kind() : '?';
   if (!any || (kind != 'i' && kind != 'u' && !(kind == 'f' && any.size() == 0))) {
     bad_argument(name, "expected an integer array");
   }
-  return py::array_t<std::int64_t, py::array::forcecast>::ensure(any);
+  return any;
 }
 
-std::vector<std::array<std::uint32_t, 3>> faces_from_array(const py::handle& object,
-                                                           std::size_t vertex_count) {
-  const py::array_t<std::int64_t> array = integer_array(object, "faces");
+bool is_uint64(const py::array& array) {
+  return array.dtype().kind() == 'u' && array.itemsize() == 8;
+}
+
+template <class Index>
+std::vector<std::array<std::uint32_t, 3>> faces_of(const py::array_t<Index>& array,
+                                                   std::size_t vertex_count) {
   if (array.ndim() != 2 || array.shape(1) != 3) {
     bad_argument("faces", "expected shape (M, 3), got " + shape_text(array));
   }
-  const auto view = array.unchecked<2>();
+  const auto view = array.template unchecked<2>();
   std::vector<std::array<std::uint32_t, 3>> faces(static_cast<std::size_t>(view.shape(0)));
   for (py::ssize_t f = 0; f < view.shape(0); ++f) {
     for (py::ssize_t c = 0; c < 3; ++c) {
-      const std::int64_t index = view(f, c);
-      if (index < 0 || static_cast<std::uint64_t>(index) >= vertex_count) {
+      const Index index = view(f, c);
+      bool outside = static_cast<std::uint64_t>(index) >= vertex_count;
+      if constexpr (std::is_signed_v<Index>) outside = outside || index < 0;
+      if (outside) {
         bad_argument("faces", "face " + std::to_string(f) + " uses vertex " +
                                   std::to_string(index) + ", outside [0, " +
                                   std::to_string(vertex_count) + ")");
@@ -108,6 +117,35 @@ std::vector<std::array<std::uint32_t, 3>> faces_from_array(const py::handle& obj
     }
   }
   return faces;
+}
+
+}  // namespace
+
+py::array_t<std::int64_t> integer_array(const py::handle& object, const std::string& name) {
+  const py::array any = integer_or_refuse(object, name);
+  // uint64 past 2^63 would wrap to a negative int64: a face index reported
+  // negative, a label taken for -1 (unlabelled).
+  if (is_uint64(any)) {
+    const auto flat =
+        py::array_t<std::uint64_t, py::array::c_style | py::array::forcecast>::ensure(any);
+    for (py::ssize_t i = 0; i < flat.size(); ++i) {
+      const std::uint64_t value = flat.data()[i];
+      if (value > static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max())) {
+        bad_argument(name, "value " + std::to_string(value) + " at " + std::to_string(i) +
+                               (any.ndim() == 1 ? "" : " (flat)") + " is beyond 2^63 - 1");
+      }
+    }
+  }
+  return py::array_t<std::int64_t, py::array::forcecast>::ensure(any);
+}
+
+std::vector<std::array<std::uint32_t, 3>> faces_from_array(const py::handle& object,
+                                                           std::size_t vertex_count) {
+  const py::array any = integer_or_refuse(object, "faces");
+  if (is_uint64(any)) {
+    return faces_of(py::array_t<std::uint64_t, py::array::forcecast>::ensure(any), vertex_count);
+  }
+  return faces_of(integer_array(any, "faces"), vertex_count);
 }
 
 std::vector<std::int32_t> int32_from_array(const py::handle& object, const std::string& name) {

@@ -46,14 +46,14 @@ TEST(FarCoordinates, ShiftedSceneGivesTheSameLevels) {
 
 // A closed unit cube seen from far along (+x, +y, +z): the three faces that
 // look that way are visible, the three behind them are not, as far as float
-// can trace from (a quarter of the diagonal over float's epsilon, 3.6e6 here).
+// can trace from at this sampling (2^23 sample spacings, 1.9e5 here).
 TEST(FarCoordinates, DistantViewpointDoesNotSeeThroughWalls) {
   TriangleMesh cube;
   testing::add_box(cube, {0, 0, 0}, {1, 1, 1}, "cube");
   MeshOcclusionOptions options;
   options.samples_per_unit_area = 2000.0;
   const Eigen::Vector3d direction(1.0, 0.7, 0.4);
-  for (const double distance : {10.0, 1e6}) {
+  for (const double distance : {10.0, 1e5}) {
     const MeshOcclusionResult result =
         compute_mesh_occlusion(cube, {direction * distance}, options);
     EXPECT_NEAR(result.occlusion_level, 0.5, 2e-3) << "viewpoint at " << distance;
@@ -86,6 +86,41 @@ TEST(FarCoordinates, MeshOcclusionRefusesViewpointsBeyondFloatsReach) {
   testing::add_box(shifted, {5e6, 0, 0}, {5e6 + 1, 1, 1}, "cube");
   EXPECT_NEAR(compute_mesh_occlusion(shifted, {{5e6 + 10, 0.3, 0.7}}, options).occlusion_level,
               5.0 / 6.0, 1e-3);
+}
+
+// From far away, rays that graze the faces lying along them hit or miss by
+// rounding within distance x 2^-23 of those faces' edges: a 5 x 5 x 3 box
+// seen from x = 1e7 answered another level than from x = 10 (0.8771 against
+// 0.8837 in issue 44), well inside the reach above. Refused wherever that band
+// is wider than the samples are apart; nearer, the level moves by a sample or
+// so, as sampling itself does.
+TEST(FarCoordinates, MeshOcclusionRefusesWhereRoundingWouldMoveTheLevelMoreThanSampling) {
+  TriangleMesh box;
+  testing::add_box(box, {0, 0, 0}, {5, 5, 3}, "box");
+  MeshOcclusionOptions options;
+  options.samples_per_unit_area = 100.0;  // samples 0.1 apart: refused beyond 2^23 x 0.1
+  const double near = compute_mesh_occlusion(box, {{10, 1.7, 1.1}}, options).occlusion_level;
+  // Within the reach, the level moves by no more than a sample or two of 11,000.
+  EXPECT_NEAR(compute_mesh_occlusion(box, {{1e5, 1.7, 1.1}}, options).occlusion_level, near,
+              2.0 / 11000);
+  for (const double distance : {1e6, 1e7}) {
+    try {
+      const double level =
+          compute_mesh_occlusion(box, {{distance, 1.7, 1.1}}, options).occlusion_level;
+      ADD_FAILURE() << "no error for a viewpoint at " << distance << ": " << level << " against "
+                    << near;
+    } catch (const std::invalid_argument& error) {
+      const std::string message = error.what();
+      EXPECT_NE(message.find("mesh occlusion: a viewpoint lies"), std::string::npos) << message;
+      EXPECT_NE(message.find("more than the samples are apart"), std::string::npos) << message;
+      EXPECT_NE(message.find("lower samples_per_unit_area"), std::string::npos) << message;
+    }
+  }
+  // Sampling that resolves less is answered from farther.
+  options.samples_per_unit_area = 1.0;
+  const double coarse = compute_mesh_occlusion(box, {{10, 1.7, 1.1}}, options).occlusion_level;
+  EXPECT_NEAR(compute_mesh_occlusion(box, {{1e6, 1.7, 1.1}}, options).occlusion_level, coarse,
+              2.0 / 110);
 }
 
 // Clouds are traced in float where they lie: where float cannot resolve a

@@ -230,6 +230,29 @@ TEST(PlanJob, RefusesAQuestionItCannotAnswer) {
   EXPECT_THROW(plan_mesh(testing::empty_room(), crowded), UsageError);
 }
 
+// A target the selection cannot tell from rounding was "reached" with no
+// station, at coverage 0: it is refused, naming the key.
+TEST(PlanJob, ATargetTooSmallToTellFromRoundingIsRefusedNamingTheKey) {
+  for (const double tiny : {1e-300, 1e-13}) {
+    PlanRequest request = mesh_request();
+    request.target_coverage = tiny;
+    try {
+      const PlanReport report = plan_mesh(testing::empty_room(), request);
+      ADD_FAILURE() << tiny << ": reached " << report.selection.target_reached << " at coverage "
+                    << report.selection.coverage;
+    } catch (const KeyError& e) {
+      EXPECT_EQ(e.key, "target_coverage") << e.what();
+    }
+  }
+  // The least target still takes a station that covers something.
+  PlanRequest least = mesh_request();
+  least.target_coverage = 1e-9;
+  const PlanReport report = plan_mesh(testing::empty_room(), least);
+  EXPECT_TRUE(report.selection.target_reached);
+  ASSERT_EQ(new_positions(report).size(), 1u);
+  EXPECT_GT(report.selection.coverage, 0.0);
+}
+
 TEST(PlanJob, IsARegistryJobWithItsKeysOnEveryFace) {
   const JobInfo* job = find_job("plan");
   ASSERT_NE(job, nullptr);

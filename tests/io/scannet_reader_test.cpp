@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <limits>
 #include <string>
 
 #include "io/cloud_test_support.hpp"
@@ -130,6 +131,43 @@ TEST(ScanNetReader, AFolderWithoutTheSceneFilesIsNoScanNetScene) {
   testing::write_text(dir.file("scene0006_00/scene0006_00_vh_clean.ply"), "not read");
   // Read as an S3DIS folder, which it is not either.
   testing::expect_input_error([&] { read_cloud(dir.file("scene0006_00")); }, "scene0006_00", 0, "");
+}
+
+// A vertex with a non-finite coordinate is dropped from a cloud, and from
+// the labels file read beside it: the counts compared were of the vertices
+// kept in the mesh and of all in the labels file, so the same scene was
+// refused as "4 vertices and the mesh has 3", and a NaN in the labels file
+// alone as "4 vertices and the mesh has 4".
+TEST(ScanNetReader, AVertexThatIsNotFiniteIsDroppedFromBothFilesOrNamed) {
+  testing::ScratchDirectory dir;
+  testing::ScanNetScene scene = small_scene();
+  scene.positions[1].x() = std::numeric_limits<float>::quiet_NaN();
+  const fs::path both = testing::write_scannet_scene(dir.path(), "scene0009_00", scene);
+  CloudReadReport report;
+  const PointCloud cloud = read_cloud(both.string(), {}, &report);
+  EXPECT_EQ(report.dropped_nan, 1u);
+  ASSERT_EQ(cloud.size(), 3u);
+  EXPECT_EQ(cloud.labels, (std::vector<std::int32_t>{2, 0, 28}));
+  EXPECT_EQ(cloud.colours[1], (Rgb{70, 80, 90}));
+
+  const fs::path labels_only =
+      testing::write_scannet_scene(dir.path(), "scene0010_00", small_scene());
+  testing::write_text((labels_only / "scene0010_00_vh_clean_2.labels.ply").string(),
+                      testing::scannet_labels_ply(scene));
+  testing::expect_input_error([&] { read_cloud(labels_only.string()); }, "labels.ply", 0,
+                              "has 4 vertices, as the mesh");
+  testing::expect_input_error([&] { read_cloud(labels_only.string()); }, "labels.ply", 0,
+                              "but 1 of them with a non-finite coordinate where the mesh has 0");
+
+  const fs::path mesh_only =
+      testing::write_scannet_scene(dir.path(), "scene0011_00", small_scene());
+  testing::write_text((mesh_only / "scene0011_00_vh_clean_2.ply").string(),
+                      testing::scannet_mesh_ply(scene));
+  testing::expect_input_error([&] { read_cloud(mesh_only.string()); }, "labels.ply", 0,
+                              "but 0 of them with a non-finite coordinate where the mesh has 1");
+  // As a mesh, a vertex that is not finite is refused where it is.
+  testing::expect_input_error([&] { read_mesh(mesh_only.string()); }, "vh_clean_2.ply", 0,
+                              "vertex 1");
 }
 
 TEST(ScanNetReader, TheMeshGroupsItsFacesByClass) {

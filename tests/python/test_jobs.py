@@ -207,6 +207,14 @@ class TestKeys:
         with pytest.raises(ValueError, match="point.radius"):
             occlusion.scan(OFFICE, point_radius=-1.0)
 
+    def test_an_integer_beyond_64_bits_is_named(self):
+        # pybind's cast failed first: a RuntimeError naming nothing.
+        for value in (2**64, -(2**63) - 1):
+            with pytest.raises(occlusion.UsageError, match=f"'seed'.*{value}.*64 bits"):
+                occlusion.mesh_occlusion(ROOM_MESH, seed=value)
+        with pytest.raises(occlusion.UsageError, match="'viewpoints'.*64 bits"):
+            occlusion.mesh_occlusion(ROOM_MESH, viewpoints=[[2**64, 0, 0]])
+
     def test_missing_input_is_file_not_found(self, tmp_path):
         with pytest.raises(FileNotFoundError):
             occlusion.mesh_occlusion(str(tmp_path / "none.obj"))
@@ -214,6 +222,13 @@ class TestKeys:
     def test_out_with_arrays_is_refused(self):
         with pytest.raises(ValueError, match="out"):
             occlusion.scan(np.zeros((3, 3)), out="somewhere")
+
+
+def test_an_unsigned_label_past_2_63_is_refused_with_its_value():
+    # It was cast to int64: -1, taken for "unlabelled" without a word.
+    labels = np.array([1, 2**64 - 1, 0], dtype=np.uint64)
+    with pytest.raises(ValueError, match="labels: value 18446744073709551615 at 1"):
+        occlusion.scan(np.eye(3), labels=labels)
 
 
 def test_progress_is_called_and_can_stop_the_job():

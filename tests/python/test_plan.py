@@ -77,6 +77,16 @@ def test_keys_are_checked_as_everywhere(tmp_path):
         occlusion.plan((vertices, faces), spacing=-1)
 
 
+def test_an_empty_scene_in_memory_is_a_usage_error_as_for_the_other_jobs():
+    # It was FileNotFoundError, naming "<arrays>" as a file that does not exist.
+    with pytest.raises(occlusion.UsageError):
+        occlusion.cloud_occlusion(np.zeros((0, 3)))
+    with pytest.raises(occlusion.UsageError, match="no points"):
+        occlusion.plan(np.zeros((0, 3)))
+    with pytest.raises(occlusion.UsageError, match="no faces"):
+        occlusion.plan((np.zeros((3, 3)), np.zeros((0, 3), dtype=np.int64)))
+
+
 def test_a_file_gives_what_the_cli_gives(tmp_path):
     if not CLI.exists():
         pytest.skip("the CLI is not built")

@@ -170,6 +170,11 @@ class TestErrors:
             occlusion.TriangleScene(vertices, faces + 1)
         with pytest.raises(ValueError, match="vertex -1"):
             occlusion.TriangleScene(vertices, faces - 1)
+        # An unsigned index past 2^63 was cast to int64 and reported negative.
+        huge = faces.astype(np.uint64)
+        huge[1, 2] = 2**64 - 1
+        with pytest.raises(ValueError, match="face 1 uses vertex 18446744073709551615"):
+            occlusion.TriangleScene(vertices, huge)
         with pytest.raises(ValueError, match="integer"):
             occlusion.TriangleScene(vertices, faces.astype(np.float64))
         with pytest.raises(ValueError, match="shape"):

@@ -40,9 +40,15 @@ using Intervisible = std::function<bool(std::size_t, std::size_t)>;
 // std::invalid_argument unless the matrix has n x n entries.
 Intervisible intervisibility_from_matrix(std::vector<std::uint8_t> matrix, std::size_t n);
 
+// The least target coverage: sums of weights round at 1e-12 of the total, so
+// a smaller target is met by covering nothing; from this one up, reaching it
+// takes a station that covers something.
+inline constexpr double kLeastTargetCoverage = 1e-9;
+
 struct SelectionOptions {
   // Exactly one of the two questions: stations > 0 (the best K new stations)
-  // or target_coverage in (0, 1] (the fewest new stations that reach it).
+  // or target_coverage in [kLeastTargetCoverage, 1] (the fewest new stations
+  // that reach it).
   std::size_t stations = 0;
   double target_coverage = 0.0;
   // Candidates that are stations already (a scan's own): kept, in this
