@@ -1,12 +1,12 @@
 #include "occlusion/analysis/virtual_scanner.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <optional>
 #include <stdexcept>
 #include <unordered_map>
 
+#include "analysis_support.hpp"
 #include "occlusion/core/hit.hpp"
 #include "occlusion/core/parallel.hpp"
 #include "occlusion/core/random.hpp"
@@ -17,13 +17,11 @@ namespace occlusion {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
+using analysis_support::Clock;
+using analysis_support::seconds_since;
 
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-constexpr double kDegree = 3.14159265358979323846 / 180.0;
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kDegree = kPi / 180.0;
 // Beams traced at a time: bounds the rays and hits held (a full-dome station
 // of 0.2 degree steps is 1.35 M beams, times the sub-rays of a wide beam).
 constexpr std::size_t kRaysPerBlock = 1 << 18;
@@ -35,7 +33,7 @@ constexpr std::size_t kGrain = 1024;
 double standard_normal(Rng& rng) {
   const double u1 = 1.0 - rng.uniform();  // (0, 1]: the log is finite
   const double u2 = rng.uniform();
-  return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * 3.14159265358979323846 * u2);
+  return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * kPi * u2);
 }
 
 // One noise stream per beam of every station, so the answer does not depend
@@ -48,7 +46,7 @@ Rng beam_rng(std::uint64_t seed, std::size_t station, std::size_t beam) {
 // divergence: the centre, then a sunflower spiral that fills the disc evenly.
 std::vector<Eigen::Vector2d> footprint_offsets(unsigned samples) {
   std::vector<Eigen::Vector2d> offsets{Eigen::Vector2d::Zero()};
-  const double golden = 3.14159265358979323846 * (3.0 - std::sqrt(5.0));
+  const double golden = kPi * (3.0 - std::sqrt(5.0));
   for (unsigned k = 1; k < samples; ++k) {
     const double radius = std::sqrt(static_cast<double>(k) / static_cast<double>(samples - 1));
     const double angle = golden * static_cast<double>(k);

@@ -13,6 +13,7 @@
 #include "occlusion/io/class_names_file.hpp"
 #include "occlusion/io/cloud_io.hpp"
 #include "occlusion/io/input_error.hpp"
+#include "occlusion/io/mesh_reader.hpp"
 
 namespace occlusion::job {
 
@@ -243,6 +244,26 @@ std::string cloud_extension(const std::string& format) {
 
 void write_json_report(const std::string& path, const Json::Value& json) {
   write_file_atomically(path, [&](std::ostream& out) { out << format_json(json) << '\n'; });
+}
+
+LoadedMesh load_mesh(const std::string& path, const Progress& progress) {
+  const auto start = Clock::now();
+  progress("loading", 0.0);
+  LoadedMesh loaded;
+  loaded.mesh = read_mesh(path, &loaded.read);
+  loaded.seconds = seconds_since(start);
+  progress.check_cancel();
+  return loaded;
+}
+
+void warn_degenerate_faces(const std::string& path, const MeshReadReport& read,
+                           std::vector<std::string>& warnings) {
+  if (read.degenerate_faces == 0) return;
+  const bool one = read.degenerate_faces == 1;
+  warnings.push_back(
+      path + ": " + std::to_string(read.degenerate_faces) +
+      (one ? " degenerate face (zero area) was" : " degenerate faces (zero area) were") +
+      " skipped: no area to measure, no ray hits them (first, " + read.first_degenerate + ")");
 }
 
 LoadedCloud load_cloud(const std::string& path, bool skip_bad_lines,

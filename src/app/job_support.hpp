@@ -22,6 +22,7 @@
 #include "occlusion/core/polygon.hpp"
 #include "occlusion/core/progress.hpp"
 #include "occlusion/io/atomic_file.hpp"
+#include "occlusion/io/mesh_read_report.hpp"
 
 namespace occlusion::job {
 
@@ -152,6 +153,19 @@ void add_outputs_and_warnings(const Report& report, Json::Value& json) {
   json["outputs"] = to_json(report.outputs);
   json["warnings"] = to_json(report.warnings);
 }
+
+// A mesh as the mesh jobs load it (-moc, simulate): reported as the stage
+// "loading", with what the reader skipped and the seconds it took.
+struct LoadedMesh {
+  TriangleMesh mesh;
+  MeshReadReport read;
+  double seconds = 0.0;
+};
+LoadedMesh load_mesh(const std::string& path, const Progress& progress);
+// The warning, naming `path` and the first, for the zero-area faces the
+// reader skipped; none when it skipped none.
+void warn_degenerate_faces(const std::string& path, const MeshReadReport& read,
+                           std::vector<std::string>& warnings);
 
 // A cloud as the point-cloud jobs load it, with what reading dropped or skipped.
 struct LoadedCloud {

@@ -12,7 +12,6 @@
 #include "occlusion/app/work_budget.hpp"
 #include "occlusion/io/atomic_file.hpp"
 #include "occlusion/io/face_table.hpp"
-#include "occlusion/io/mesh_reader.hpp"
 #include "occlusion/io/ply_mesh_writer.hpp"
 
 namespace occlusion {
@@ -59,23 +58,13 @@ MeshOcclusionReport run_mesh_occlusion(const MeshOcclusionRequest& request,
   validate(request);
   const auto start = job::Clock::now();
 
-  progress("loading", 0.0);
-  MeshReadReport read_report;
-  const TriangleMesh mesh = read_mesh(request.path, &read_report);
-  const double load_seconds = job::seconds_since(start);
-  progress.check_cancel();
+  const job::LoadedMesh loaded = job::load_mesh(request.path, progress);
+  const TriangleMesh& mesh = loaded.mesh;
 
   MeshOcclusionReport report = run_mesh_occlusion_on(mesh, request, progress);
-  report.load_seconds = load_seconds;
-  report.degenerate_faces_skipped = read_report.degenerate_faces;
-  if (read_report.degenerate_faces > 0) {
-    const bool one = read_report.degenerate_faces == 1;
-    report.warnings.push_back(
-        request.path + ": " + std::to_string(read_report.degenerate_faces) +
-        (one ? " degenerate face (zero area) was" : " degenerate faces (zero area) were") +
-        " skipped: no area to measure, no ray hits them (first, " + read_report.first_degenerate +
-        ")");
-  }
+  report.load_seconds = loaded.seconds;
+  report.degenerate_faces_skipped = loaded.read.degenerate_faces;
+  job::warn_degenerate_faces(request.path, loaded.read, report.warnings);
 
   if (!request.out.empty()) {
     ensure_directory(request.out);

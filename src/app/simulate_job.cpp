@@ -11,7 +11,6 @@
 #include "occlusion/app/memory_budget.hpp"
 #include "occlusion/app/sensor_model_keys.hpp"
 #include "occlusion/io/atomic_file.hpp"
-#include "occlusion/io/mesh_reader.hpp"
 #include "occlusion/io/png_writer.hpp"
 
 namespace occlusion {
@@ -193,15 +192,12 @@ SimulateReport run_simulate_on(const TriangleMesh& mesh, const SimulateRequest& 
 SimulateReport run_simulate(const SimulateRequest& request, const Progress& progress) {
   validate(request);
   const auto start = job::Clock::now();
-  progress("loading", 0.0);
-  MeshReadReport read_report;
-  const TriangleMesh mesh = read_mesh(request.path, &read_report);
-  const double load_seconds = job::seconds_since(start);
-  progress.check_cancel();
+  const job::LoadedMesh loaded = job::load_mesh(request.path, progress);
 
-  SimulateReport report = run_simulate_on(mesh, request, progress);
-  report.load_seconds = load_seconds;
-  report.degenerate_faces_skipped = read_report.degenerate_faces;
+  SimulateReport report = run_simulate_on(loaded.mesh, request, progress);
+  report.load_seconds = loaded.seconds;
+  report.degenerate_faces_skipped = loaded.read.degenerate_faces;
+  job::warn_degenerate_faces(request.path, loaded.read, report.warnings);
   if (!request.out.empty()) {
     ensure_directory(request.out);
     const std::string extension = "." + job::cloud_extension(request.format);

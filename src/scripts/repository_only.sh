@@ -4,7 +4,7 @@
 # mount namespace the repository's parent folder is an empty tmpfs holding
 # only the repository (and the build folder, where OCCLUSION_BUILD_DIR puts it
 # beside the repository). A user's clone has nothing beside it, so a test that
-# reads a sibling such as ../shared fails here as it would for them, instead of
+# reads a sibling folder fails here as it would for them, instead of
 # passing on a developer's machine (test.sh runs the suites through this).
 #
 # Hiding needs root and unshare(1); without them the command runs in place and
