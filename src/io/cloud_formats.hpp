@@ -18,13 +18,20 @@
 
 namespace occlusion::detail {
 
+// Thrown by ShiftedPositions::local at the first point beyond
+// CloudReadOptions::max_points; read_cloud turns it into TooManyPoints.
+struct PointLimitReached {};
+
 // Positions as the readers store them: relative to the global shift
-// (point_cloud.hpp) that `preset` fixes or else the first point whose
+// (point_cloud.hpp) that options.shift fixes or else the first point whose
 // coordinates float can hold chooses. Coordinates stay double until shifted.
+// Every reader makes its points here, so options.max_points stops them all.
 class ShiftedPositions {
  public:
-  explicit ShiftedPositions(const std::optional<Eigen::Vector3d>& preset)
-      : shift_(preset.value_or(Eigen::Vector3d::Zero())), chosen_(preset.has_value()) {}
+  explicit ShiftedPositions(const CloudReadOptions& options)
+      : shift_(options.shift.value_or(Eigen::Vector3d::Zero())),
+        chosen_(options.shift.has_value()),
+        max_points_(options.max_points) {}
   // Not finite where a coordinate is not (the readers drop such points), nor
   // where a finite point lies beyond float's range once shifted (counted, and
   // refused by checked_shift).
@@ -36,8 +43,10 @@ class ShiftedPositions {
     }
     const Eigen::Vector3f position = (p - shift_).cast<float>();
     ++points_;
-    if (!position.allFinite() && p.allFinite()) {
-      if (overflowed_++ == 0) first_overflow_ = p;
+    if (!position.allFinite()) {
+      if (p.allFinite() && overflowed_++ == 0) first_overflow_ = p;
+    } else if (++kept_ > max_points_ && max_points_ != 0) {
+      throw PointLimitReached{};
     }
     return position;
   }
@@ -50,7 +59,9 @@ class ShiftedPositions {
  private:
   Eigen::Vector3d shift_;
   bool chosen_;
+  std::size_t max_points_;
   std::size_t points_ = 0;
+  std::size_t kept_ = 0;
   std::size_t overflowed_ = 0;
   Eigen::Vector3d first_overflow_ = Eigen::Vector3d::Zero();
 };

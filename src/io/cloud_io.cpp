@@ -113,6 +113,9 @@ PointCloud read_shifted(const std::string& path, const CloudReadOptions& options
 
 }  // namespace
 
+TooManyPoints::TooManyPoints(const std::string& file, std::size_t limit)
+    : InputError(file, 0, "more than " + std::to_string(limit) + " points"), max_points(limit) {}
+
 const std::vector<std::string>& cloud_file_suffixes() {
   static const std::vector<std::string> suffixes = [] {
     std::vector<std::string> list;
@@ -142,7 +145,12 @@ PointCloud read_cloud(const std::string& path, const CloudReadOptions& options,
   const std::size_t dropped_before = counts.dropped_nan;
   const std::size_t skipped_before = counts.skipped_lines;
   const std::size_t invalid_before = counts.dropped_invalid;
-  PointCloud cloud = read_shifted(path, options, counts);
+  PointCloud cloud;
+  try {
+    cloud = read_shifted(path, options, counts);
+  } catch (const detail::PointLimitReached&) {
+    throw TooManyPoints(path, options.max_points);
+  }
   if (cloud.size() == 0) {
     std::string reason = "no points";
     if (counts.dropped_nan > dropped_before) {

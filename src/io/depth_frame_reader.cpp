@@ -57,7 +57,7 @@ PointCloud read_depth_frame(const std::string& path, const CloudReadOptions& opt
   }
 
   PointCloud cloud;
-  ShiftedPositions shifted(options.shift);
+  ShiftedPositions shifted(options);
   const Eigen::Matrix3d rotation = frame.rotation.toRotationMatrix();
   for (std::size_t v = 0; v < depth.height; ++v) {
     for (std::size_t u = 0; u < depth.width; ++u) {

@@ -69,7 +69,7 @@ std::optional<E57Range> field_range(const E57Field& field) {
 class E57CloudReader {
  public:
   E57CloudReader(const std::string& path, const CloudReadOptions& options, CloudReadReport& report)
-      : path_(path), report_(report), shifted_(options.shift) {}
+      : path_(path), report_(report), shifted_(options) {}
 
   PointCloud run() {
     const std::string bytes = read_file_bytes(path_);

@@ -52,7 +52,7 @@ PointCloud read_las(const std::string& path, const CloudReadOptions& options,
   const bool extended = header.point_format >= 6;
 
   PointCloud cloud;
-  ShiftedPositions shifted(options.shift);
+  ShiftedPositions shifted(options);
   cloud.reserve_positions(count);
   cloud.intensities.reserve(count);
   cloud.labels.reserve(count);

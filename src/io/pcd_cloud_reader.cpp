@@ -36,7 +36,7 @@ class PcdCloudReader {
   PcdCloudReader(const std::string& path, const CloudReadOptions& options, CloudReadReport& report)
       : path_(path),
         report_(report),
-        shifted_(options.shift),
+        shifted_(options),
         bytes_(read_file_bytes<LargeString>(path)) {}
 
   PointCloud run() {

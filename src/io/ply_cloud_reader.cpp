@@ -89,7 +89,7 @@ class PlyCloudReader : public PlySink {
  public:
   PlyCloudReader(std::string_view bytes, const std::string& path, const CloudReadOptions& options,
                  CloudReadReport& report)
-      : bytes_(bytes), path_(path), report_(report), shifted_(options.shift) {}
+      : bytes_(bytes), path_(path), report_(report), shifted_(options) {}
 
   PointCloud run() {
     header_ = parse_header(bytes_, path_);

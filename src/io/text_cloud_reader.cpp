@@ -39,12 +39,14 @@ class TextCloudParser {
         columns_fixed_(required_columns.has_value()),
         options_(options),
         report_(report),
-        shifted_(options.shift) {}
+        shifted_(options) {}
 
   PointCloud run() {
     // A UTF-8 byte order mark, which some Windows editors add, is not data.
     if (text_.substr(0, 3) == "\xEF\xBB\xBF") text_.remove_prefix(3);
-    const auto line_count = static_cast<std::size_t>(std::count(text_.begin(), text_.end(), '\n'));
+    auto line_count = static_cast<std::size_t>(std::count(text_.begin(), text_.end(), '\n'));
+    // Room for the points the reader may keep, not for every line of a file it stops in.
+    if (options_.max_points != 0) line_count = std::min(line_count, options_.max_points);
     cloud_.reserve_positions(line_count + 1);
     if (columns_fixed_ && columns_ >= 6) cloud_.colours.reserve(line_count + 1);
     Lines lines(text_);

@@ -54,6 +54,7 @@
 #include <vector>
 
 #include "occlusion/core/point_cloud.hpp"
+#include "occlusion/io/input_error.hpp"
 
 namespace occlusion {
 
@@ -80,6 +81,10 @@ struct CloudReadOptions {
   // constant image about 1000-fold, so 39 KB can hold 16.7 million pixels)
   // is refused from its header's width x height, before it is decoded.
   std::uint64_t max_memory_mb = 0;
+  // At most this many points (0: no limit): the reader stops at the first
+  // point beyond it, and read_cloud throws TooManyPoints. A caller that
+  // refuses large files (plan's candidates) does not read them whole first.
+  std::size_t max_points = 0;
 };
 
 struct CloudReadReport {
@@ -100,6 +105,13 @@ struct CloudReadReport {
   // PLY and PCD properties other than those the cloud holds, in file order,
   // one value per kept point (points dropped for NaN are dropped here too).
   std::vector<ScalarField> extra_fields;
+};
+
+// read_cloud's refusal of a file with more points than
+// CloudReadOptions::max_points.
+struct TooManyPoints : InputError {
+  TooManyPoints(const std::string& file, std::size_t limit);
+  std::size_t max_points;
 };
 
 // Throws InputError as described above. `report`, when given, is filled in
