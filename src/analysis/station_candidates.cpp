@@ -190,10 +190,10 @@ std::vector<Eigen::Vector3d> floor_grid(const Box& frame, const UpAxis& up, doub
     return std::floor(extent / spacing) + 1.0;
   };
   const double nu = steps(u), nv = steps(v);
-  if (nu * nv > static_cast<double>(kMaxGridCandidates)) {
+  if (nu * nv > static_cast<double>(kMaxCandidates)) {
     throw std::invalid_argument("station candidates: spacing " + std::to_string(spacing) +
                                 " gives " + std::to_string(nu * nv) +
-                                " grid positions, more than " + std::to_string(kMaxGridCandidates));
+                                " grid positions, more than " + std::to_string(kMaxCandidates));
   }
   const double start_u = (frame.lo[u] + frame.hi[u] - (nu - 1.0) * spacing) / 2.0;
   const double start_v = (frame.lo[v] + frame.hi[v] - (nv - 1.0) * spacing) / 2.0;

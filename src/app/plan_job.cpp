@@ -24,8 +24,8 @@ namespace occlusion {
 namespace {
 
 // A scene's own part of planning: where candidates may stand, and what each sees.
+using KeepFree = std::function<StationCandidates(std::vector<Eigen::Vector3d>)>;
 struct SceneSide {
-  std::function<StationCandidates(std::vector<Eigen::Vector3d>)> keep_free;
   std::function<CoverageMatrix(const std::vector<Eigen::Vector3d>&, const Progress&)> coverage;
   std::function<std::vector<std::uint8_t>(const std::vector<Eigen::Vector3d>&, const Progress&)>
       intervisibility;
@@ -51,10 +51,28 @@ void keep_classes(const PlanRequest& request, std::vector<double>& weight,
   }
 }
 
-// Positions read from the candidates file, in the scene's local frame.
+[[noreturn]] void refuse_candidates_file(const PlanRequest& request) {
+  throw KeyError("candidates", request.candidates_path + " holds more than " +
+                                   std::to_string(kMaxCandidates) +
+                                   " positions, more candidates than plan takes (a grid's "
+                                   "limit too): give fewer");
+}
+
+// Positions read from the candidates file, in the scene's local frame. The
+// reading stops past kMaxCandidates: a file of millions of lines is refused
+// before it is read whole.
 std::vector<Eigen::Vector3d> file_candidates(const PlanRequest& request,
                                              const Eigen::Vector3d& shift) {
-  const PointCloud file = read_cloud(request.candidates_path);
+  CloudReadOptions options;
+  options.max_points = kMaxCandidates;
+  PointCloud file;
+  try {
+    file = read_cloud(request.candidates_path, options);
+  } catch (const TooManyPoints&) {
+    refuse_candidates_file(request);
+  }
+  // A folder's files are read one by one, each within the limit.
+  if (file.size() > kMaxCandidates) refuse_candidates_file(request);
   std::vector<Eigen::Vector3d> positions;
   for (std::size_t i = 0; i < file.size(); ++i) {
     positions.push_back(file.original_position(i) - shift);
@@ -65,12 +83,14 @@ std::vector<Eigen::Vector3d> file_candidates(const PlanRequest& request,
   return positions;
 }
 
-// Everything after the scene's own part: candidates, coverage, selection.
-void plan(PlanReport& report, const Box& box, const std::vector<Station>& stations,
-          const SceneSide& side, const Progress& progress) {
+// Every candidate, in the scene's local frame: the grid's (or the file's)
+// positions that keep_free keeps, then the placed stations and the scene's own.
+std::vector<Eigen::Vector3d> place_candidates(PlanReport& report, const Box& box,
+                                              const std::vector<Station>& stations,
+                                              const KeepFree& keep_free) {
   const PlanRequest& request = report.request;
   const UpAxis up = job::parse_up(request.up);
-  auto start = job::Clock::now();
+  const auto start = job::Clock::now();
   std::vector<Eigen::Vector3d> positions;
   if (!request.candidates_path.empty()) {
     positions = file_candidates(request, report.shift);
@@ -84,7 +104,7 @@ void plan(PlanReport& report, const Box& box, const std::vector<Station>& statio
     report.candidate_source = "grid";
   }
   report.grid_positions = positions.size();
-  report.candidates = side.keep_free(std::move(positions));
+  report.candidates = keep_free(std::move(positions));
   report.candidate_seconds = job::seconds_since(start);
 
   std::vector<Eigen::Vector3d> all = report.candidates.positions;
@@ -110,8 +130,24 @@ void plan(PlanReport& report, const Box& box, const std::vector<Station>& statio
         " outside it; lower --clearance or --spacing, or check --up and --height");
   }
   for (const auto& p : all) report.candidate_positions.push_back(p + report.shift);
+  return all;
+}
 
-  start = job::Clock::now();
+// The budgets, once the candidates are known and before any target is made:
+// -moc's samples of 3e5 per unit area grew to 4.7 GB, and were refused for
+// their work only once drawn (issue 44).
+void check_budgets(const PlanRequest& request, const MemoryEstimate& model, std::uint64_t targets,
+                   std::size_t candidates, const WorkEstimate& work) {
+  check_memory_budget(plan_memory(model, targets, candidates, request.intervisible),
+                      request.max_memory_mb);
+  check_work_budget(work, request.max_work);
+}
+
+// What the candidates see, and the stations chosen among them.
+void cover_and_select(PlanReport& report, const std::vector<Eigen::Vector3d>& all,
+                      const SceneSide& side, const Progress& progress) {
+  const PlanRequest& request = report.request;
+  auto start = job::Clock::now();
   const CoverageMatrix matrix = side.coverage(all, progress);
   report.coverage_seconds = job::seconds_since(start);
   if (!(matrix.total_weight() > 0.0)) {
@@ -158,6 +194,14 @@ PlanReport plan_cloud_impl(const PointCloud& cloud, const PlanRequest& request,
   report.frame["lo"] = to_json(box.lo + cloud.shift);
   report.frame["hi"] = to_json(box.hi + cloud.shift);
 
+  const std::vector<Eigen::Vector3d> all =
+      place_candidates(report, box, scan_stations(cloud), [&](std::vector<Eigen::Vector3d> p) {
+        return keep_free_positions(cloud, std::move(p), request.clearance, up, request.threads,
+                                   progress);
+      });
+  check_budgets(request, scan_memory(cloud.size(), 1, request.primitive == "disc"), cloud.size(),
+                all.size(), plan_cloud_work(cloud.size(), all.size(), request.intervisible));
+
   const auto start = job::Clock::now();
   const job::PointModel model = job::choose_point_model(cloud, job::point_settings(request),
                                                         "-fscan", report.warnings, progress);
@@ -193,21 +237,13 @@ PlanReport plan_cloud_impl(const PointCloud& cloud, const PlanRequest& request,
   options.threads = request.threads;
   const StationLimits limits = station_limits(request);
   SceneSide side;
-  side.keep_free = [&](std::vector<Eigen::Vector3d> positions) {
-    return keep_free_positions(cloud, std::move(positions), request.clearance, up, request.threads,
-                               progress);
-  };
   side.coverage = [&](const std::vector<Eigen::Vector3d>& candidates, const Progress& p) {
-    check_memory_budget(plan_memory(scan_memory(cloud.size(), 1, options.surfels != nullptr),
-                                    cloud.size(), candidates.size()),
-                        request.max_memory_mb);
-    check_work_budget(scan_work(cloud.size(), candidates.size(), true), request.max_work);
     return cloud_station_coverage(cloud, candidates, weight, options, limits, p);
   };
   side.intervisibility = [&](const std::vector<Eigen::Vector3d>& candidates, const Progress& p) {
     return cloud_candidate_intervisibility(cloud, candidates, options, p);
   };
-  plan(report, box, scan_stations(cloud), side, progress);
+  cover_and_select(report, all, side, progress);
   return report;
 }
 
@@ -227,9 +263,17 @@ PlanReport plan_mesh_impl(const TriangleMesh& mesh, const PlanRequest& request,
   report.frame["lo"] = to_json(box.lo);
   report.frame["hi"] = to_json(box.hi);
 
-  check_memory_budget(mesh_occlusion_memory(mesh, request.samples_per_unit_area, 1),
-                      request.max_memory_mb);
-  auto start = job::Clock::now();
+  const std::vector<Eigen::Vector3d> all =
+      place_candidates(report, box, {}, [&](std::vector<Eigen::Vector3d> p) {
+        return keep_free_positions(mesh, std::move(p), request.clearance, up, request.threads,
+                                   progress);
+      });
+  check_budgets(
+      request, mesh_occlusion_memory(mesh, request.samples_per_unit_area, 1),
+      total_samples(mesh, request.samples_per_unit_area), all.size(),
+      plan_mesh_work(mesh, request.samples_per_unit_area, all.size(), request.intervisible));
+
+  const auto start = job::Clock::now();
   const MeshSamples samples =
       sample_mesh(mesh, request.samples_per_unit_area, request.seed, progress);
   report.model_seconds = job::seconds_since(start);
@@ -252,23 +296,13 @@ PlanReport plan_mesh_impl(const TriangleMesh& mesh, const PlanRequest& request,
   options.threads = request.threads;
   const StationLimits limits = station_limits(request);
   SceneSide side;
-  side.keep_free = [&](std::vector<Eigen::Vector3d> positions) {
-    return keep_free_positions(mesh, std::move(positions), request.clearance, up, request.threads,
-                               progress);
-  };
   side.coverage = [&](const std::vector<Eigen::Vector3d>& candidates, const Progress& p) {
-    check_memory_budget(plan_memory(mesh_occlusion_memory(mesh, request.samples_per_unit_area, 1),
-                                    samples.size(), candidates.size()),
-                        request.max_memory_mb);
-    check_work_budget(
-        mesh_occlusion_work(mesh, request.samples_per_unit_area, candidates.size(), true),
-        request.max_work);
     return mesh_station_coverage(mesh, samples, candidates, weight, options, limits, p);
   };
   side.intervisibility = [&](const std::vector<Eigen::Vector3d>& candidates, const Progress& p) {
     return mesh_candidate_intervisibility(mesh, candidates, options, p);
   };
-  plan(report, box, {}, side, progress);
+  cover_and_select(report, all, side, progress);
   return report;
 }
 

@@ -97,4 +97,35 @@ WorkEstimate scan_work(std::size_t points, std::size_t viewpoints, bool accelera
                   ray_cost(points, "points", accelerated), "num_vp, pattern or viewpoints");
 }
 
+namespace {
+
+// plan's rays: every target's to every candidate, and with `intervisible`
+// one between every two candidates, through the octree over `primitives`.
+WorkEstimate plan_work(std::uint64_t targets, const char* what, std::uint64_t primitives,
+                       const char* primitive_name, std::size_t candidates, bool intervisible,
+                       const std::string& keys) {
+  const std::uint64_t pairs =
+      intervisible ? times(candidates, candidates > 0 ? candidates - 1 : 0) / 2 : 0;
+  const std::uint64_t coverage = times(targets, candidates);
+  const std::uint64_t rays = coverage > kMax - pairs ? kMax : coverage + pairs;
+  std::string text = count(rays) + " shadow rays (" + count(targets) + " " + what + " x " +
+                     count(candidates) + " candidates" +
+                     (intervisible ? ", and " + count(pairs) + " between candidates" : "") + ")";
+  return estimate(rays, text, ray_cost(primitives, primitive_name, true),
+                  keys + "fewer candidates: a larger spacing or a shorter candidates file" +
+                      (intervisible ? ", or no intervisible" : ""));
+}
+
+}  // namespace
+
+WorkEstimate plan_mesh_work(const TriangleMesh& mesh, double samples_per_unit_area,
+                            std::size_t candidates, bool intervisible) {
+  return plan_work(total_samples(mesh, samples_per_unit_area), "samples", mesh.face_count(),
+                   "faces", candidates, intervisible, "samples_per_unit_area, or ");
+}
+
+WorkEstimate plan_cloud_work(std::size_t points, std::size_t candidates, bool intervisible) {
+  return plan_work(points, "points", points, "points", candidates, intervisible, "");
+}
+
 }  // namespace occlusion

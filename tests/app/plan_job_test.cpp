@@ -71,8 +71,10 @@ TEST(PlanJob, TheBestSingleStationOfTwoRoomsStandsInTheLargerOne) {
 TEST(PlanJob, TheCoverageMatrixCountsInTheMemoryBudget) {
   // 100 targets: two 64-bit words a row, 16 bytes; three rows.
   const MemoryEstimate model{1000, "the model", ""};
-  const MemoryEstimate plan = plan_memory(model, 100, 3);
-  EXPECT_EQ(plan.bytes, 1000u + 3u * 16u);
+  const MemoryEstimate plan = plan_memory(model, 100, 3, false);
+  EXPECT_EQ(plan.bytes - plan_memory(model, 100, 0, false).bytes, 3u * 16u);
+  // With intervisible, a byte per pair.
+  EXPECT_EQ(plan_memory(model, 100, 3, true).bytes - plan.bytes, 9u);
   EXPECT_NE(plan.made_of.find("3 candidates x 100 targets"), std::string::npos) << plan.made_of;
   // A fine grid over a large room: refused before the matrix is filled,
   // naming it and what to lower.

@@ -39,8 +39,11 @@ inline constexpr double kOutsideEscapeShare = 0.25;
 inline constexpr double kOutsideProbeTopDegrees = 10.0;
 inline constexpr double kProbeRadiusPerSpacing = 3.0;
 inline constexpr std::size_t kOutsideProbeRays = 256;  // over the whole sphere, before the cut
-// More grid positions than this is a spacing too fine for the scene, not a plan.
-inline constexpr std::size_t kMaxGridCandidates = 100000;
+// More candidate positions than this, on a grid or in a file, is a spacing
+// too fine for the scene (or a file that is not a set of stations), not a
+// plan: the filter, the coverage matrix (a row each) and the selection grow
+// with them.
+inline constexpr std::size_t kMaxCandidates = 100000;
 
 struct CandidateRejections {
   std::size_t clearance = 0;
@@ -57,7 +60,7 @@ struct StationCandidates {
 // Positions `spacing` apart over the floor plan of `frame` (the plane normal
 // to `up`), centred in it, at `height` above the frame's low end along up
 // (its floor). std::invalid_argument for spacing or height not > 0 and
-// finite, a height above the frame, or more than kMaxGridCandidates positions.
+// finite, a height above the frame, or more than kMaxCandidates positions.
 std::vector<Eigen::Vector3d> floor_grid(const Box& frame, const UpAxis& up, double spacing,
                                         double height);
 

@@ -43,8 +43,12 @@ MemoryEstimate scan_memory(std::size_t points, std::size_t viewpoints, bool disc
 MemoryEstimate simulate_memory(const TriangleMesh& mesh, std::uint64_t beams_per_station,
                                std::size_t stations, bool truth);
 // plan: the scene's model (scan_memory or mesh_occlusion_memory with one
-// viewpoint) and the coverage matrix of `candidates` rows over `targets`.
-MemoryEstimate plan_memory(MemoryEstimate model, std::size_t targets, std::size_t candidates);
+// viewpoint), what plan keeps per target, the coverage matrix of `candidates`
+// rows over `targets` and, with `intervisible`, the pairs of candidates.
+// Known before any sample is drawn or point model made (total_samples counts
+// a mesh's targets).
+MemoryEstimate plan_memory(MemoryEstimate model, std::uint64_t targets, std::size_t candidates,
+                           bool intervisible);
 // -rgoc and extract_polygons: PCL's cloud, normals, kd-tree and the
 // neighbour lists of region growing and normal estimation.
 MemoryEstimate region_growing_memory(std::size_t points, const RegionGrowingOptions& options);

@@ -45,5 +45,11 @@ WorkEstimate mesh_occlusion_work(const TriangleMesh& mesh, double samples_per_un
                                  std::size_t viewpoints, bool accelerated);
 // -fscan: a shadow ray from every point to every viewpoint.
 WorkEstimate scan_work(std::size_t points, std::size_t viewpoints, bool accelerated);
+// plan: a shadow ray from every target (-moc's samples of a mesh, a cloud's
+// points) to every candidate, and with `intervisible` one between every two
+// candidates. Known before any sample is drawn or point model made.
+WorkEstimate plan_mesh_work(const TriangleMesh& mesh, double samples_per_unit_area,
+                            std::size_t candidates, bool intervisible);
+WorkEstimate plan_cloud_work(std::size_t points, std::size_t candidates, bool intervisible);
 
 }  // namespace occlusion
