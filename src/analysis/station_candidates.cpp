@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <functional>
 #include <stdexcept>
+#include <thread>
 
 #include "occlusion/analysis/inside_solid.hpp"
 #include "occlusion/analysis/label_transfer.hpp"
@@ -78,6 +80,11 @@ double squared_distance(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
   return (p - (a + ab * v + ac * w)).squaredNorm();
 }
 
+// Face tests between two progress reports of clear_of_faces: a few
+// milliseconds. A report is where Python polls for Ctrl-C, and a fine grid
+// over a large mesh takes seconds.
+constexpr std::size_t kFaceTestsPerReport = std::size_t{1} << 22;
+
 // Positions with nothing nearer than `clearance` among the mesh's faces.
 std::vector<bool> clear_of_faces(const TriangleMesh& mesh,
                                  const std::vector<Eigen::Vector3d>& positions, double clearance,
@@ -98,6 +105,13 @@ std::vector<bool> clear_of_faces(const TriangleMesh& mesh,
   const double limit = clearance * clearance;
   std::vector<char> clear(positions.size(), 1);
   std::atomic<bool> cancelled{false};
+  // The calling thread, one of the workers, reports.
+  const std::thread::id caller = std::this_thread::get_id();
+  const std::size_t positions_per_report =
+      std::max<std::size_t>(1, kFaceTestsPerReport / std::max<std::size_t>(1, faces.size()));
+  std::atomic<std::size_t> done{0};
+  std::size_t next_report = positions_per_report;
+  progress("clearance", 0.0);
   parallel_for(positions.size(), 16, threads, [&](std::size_t begin, std::size_t end) {
     if (progress.cancel != nullptr && progress.cancel->load()) {
       cancelled = true;
@@ -112,6 +126,11 @@ std::vector<bool> clear_of_faces(const TriangleMesh& mesh,
           break;
         }
       }
+    }
+    const std::size_t finished = done.fetch_add(end - begin) + (end - begin);
+    if (finished >= next_report && std::this_thread::get_id() == caller) {
+      next_report = finished + positions_per_report;
+      progress("clearance", static_cast<double>(finished) / static_cast<double>(positions.size()));
     }
   });
   if (cancelled) throw Cancelled();
@@ -136,10 +155,13 @@ std::vector<bool> clear_of_points(const PointCloud& cloud,
   return clear;
 }
 
+// `in_solid` (meshes; null for clouds) probes a position that is clear, in
+// the same loop as the outside probes, so that cancel and progress are
+// checked between positions for both.
 template <class Tree>
 StationCandidates keep(std::vector<Eigen::Vector3d> positions, const std::vector<bool>& clear,
-                       const std::vector<double>& back_faces, const Tree& tree, const UpAxis& up,
-                       const Progress& progress) {
+                       const std::function<bool(const Eigen::Vector3d&)>& in_solid,
+                       const Tree& tree, const UpAxis& up, const Progress& progress) {
   const auto directions = probe_directions(up);
   StationCandidates result;
   result.tested = positions.size();
@@ -150,7 +172,7 @@ StationCandidates keep(std::vector<Eigen::Vector3d> positions, const std::vector
     }
     if (!clear[i]) {
       ++result.rejected.clearance;
-    } else if (!back_faces.empty() && back_faces[i] > kInsideBackFaceShare) {
+    } else if (in_solid && in_solid(positions[i])) {
       ++result.rejected.inside_solid;
     } else if (escapes(tree, positions[i], directions)) {
       ++result.rejected.outside;
@@ -220,7 +242,7 @@ StationCandidates keep_free_positions(const PointCloud& cloud,
   const double radius = kProbeRadiusPerSpacing * measure_point_spacing(cloud, threads).spacing;
   const SphereOctree tree(make_spheres(cloud.positions, static_cast<float>(radius)),
                           sphere_octree_options(), progress);
-  return keep(std::move(positions), clear, {}, tree, up, progress);
+  return keep(std::move(positions), clear, nullptr, tree, up, progress);
 }
 
 StationCandidates keep_free_positions(const TriangleMesh& mesh,
@@ -232,9 +254,10 @@ StationCandidates keep_free_positions(const TriangleMesh& mesh,
   check_positions(positions, clearance);
   const std::vector<bool> clear = clear_of_faces(mesh, positions, clearance, threads, progress);
   const TriangleOctree tree(pack_triangles(mesh.triangles()), {}, progress);
-  const std::vector<double> back_faces =
-      positions.empty() ? std::vector<double>{} : back_face_shares(tree, positions);
-  return keep(std::move(positions), clear, back_faces, tree, up, progress);
+  const auto in_solid = [&](const Eigen::Vector3d& position) {
+    return back_face_shares(tree, {position}).front() > kInsideBackFaceShare;
+  };
+  return keep(std::move(positions), clear, in_solid, tree, up, progress);
 }
 
 }  // namespace occlusion

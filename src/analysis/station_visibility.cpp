@@ -20,14 +20,16 @@ namespace {
 
 constexpr char kAnalysis[] = "station visibility";
 
-// Progress reports per matrix at most (candidates finish every few tens of
-// milliseconds).
-constexpr std::size_t kProgressSteps = 100;
+// Rays between two progress reports, and between two cancel checks of a
+// thread: a few milliseconds of tracing, as -moc and -fscan check. A
+// candidate's rays to a million targets take seconds, so checking once per
+// candidate left a Ctrl-C in Python (which a report polls) 5-14 s late.
+constexpr std::size_t kRaysPerReport = std::size_t{1} << 16;
 // Targets per block traced on one thread: a patch of surface (the targets
 // are in Morton order), one window of the octree's batch (ray_order.hpp).
 constexpr std::size_t kTargetsPerThreadBlock = 4096;
 // Targets per block traced on all threads (few candidates): bounds the scratch
-// memory and sets how often cancel is checked.
+// memory; cancel is checked and progress reported after each.
 constexpr std::size_t kTargetsPerSharedBlock = std::size_t{1} << 16;
 
 double radians(double degrees) {
@@ -190,26 +192,34 @@ void fill_rows(CoverageMatrix& matrix, const std::vector<Eigen::Vector3d>& candi
   };
   const std::size_t n = candidates.size();
   const unsigned workers = resolve_thread_count(threads);
+  // Rays counted as targets of each candidate, whether or not a limit drops them.
+  const double total = std::max(1.0, static_cast<double>(n) * static_cast<double>(order.size()));
   progress("tracing", 0.0);
   if (n >= 2 * std::size_t{workers}) {
     // Candidates are handed out one at a time with no barrier between them
-    // (their costs differ: one inside furniture is blocked at once); the
-    // calling thread, one of the workers, reports.
+    // (their costs differ: one inside furniture is blocked at once); every
+    // thread checks cancel after each block, and the calling thread, one of
+    // the workers, reports.
     const std::thread::id caller = std::this_thread::get_id();
-    std::atomic<std::size_t> finished{0};
-    std::size_t reported = 0;
+    std::atomic<std::size_t> traced{0};
+    std::size_t next_report = kRaysPerReport;
+    const auto after_block = [&](std::size_t rays) {
+      const std::size_t done = traced.fetch_add(rays) + rays;
+      progress.check_cancel();
+      if (done >= next_report && std::this_thread::get_id() == caller) {
+        next_report = done + kRaysPerReport;
+        progress("tracing", static_cast<double>(done) / total);
+      }
+    };
     parallel_for(n, 1, threads, [&](std::size_t b, std::size_t e) {
       RayBlock block(std::min(order.size(), kTargetsPerThreadBlock));
       for (std::size_t c = b; c < e; ++c) {
         for (std::size_t k = 0; k < order.size(); k += kTargetsPerThreadBlock) {
-          trace_block(c, k, std::min(order.size(), k + kTargetsPerThreadBlock), 1, block);
+          const std::size_t last = std::min(order.size(), k + kTargetsPerThreadBlock);
+          trace_block(c, k, last, 1, block);
+          after_block(last - k);
         }
         progress.check_cancel();
-        const std::size_t done = finished.fetch_add(1) + 1;
-        if (std::this_thread::get_id() == caller && done * kProgressSteps / n > reported) {
-          reported = done * kProgressSteps / n;
-          progress("tracing", static_cast<double>(done) / static_cast<double>(n));
-        }
       }
     });
     progress("tracing", 1.0);
@@ -218,11 +228,16 @@ void fill_rows(CoverageMatrix& matrix, const std::vector<Eigen::Vector3d>& candi
   RayBlock block(std::min(order.size(), kTargetsPerSharedBlock));
   for (std::size_t c = 0; c < n; ++c) {
     for (std::size_t k = 0; k < order.size(); k += kTargetsPerSharedBlock) {
-      trace_block(c, k, std::min(order.size(), k + kTargetsPerSharedBlock), threads, block);
+      const std::size_t last = std::min(order.size(), k + kTargetsPerSharedBlock);
+      trace_block(c, k, last, threads, block);
       progress.check_cancel();
+      progress("tracing", (static_cast<double>(c) * static_cast<double>(order.size()) +
+                           static_cast<double>(last)) /
+                              total);
     }
-    progress("tracing", static_cast<double>(c + 1) / static_cast<double>(n));
+    progress.check_cancel();
   }
+  progress("tracing", 1.0);
 }
 
 // The pairs (i < j) of candidates, traced through `occluded` in blocks; what

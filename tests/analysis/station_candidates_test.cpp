@@ -2,7 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "support/mesh_truth.hpp"
 #include "support/plan_scenes.hpp"
@@ -107,6 +110,37 @@ TEST(StationCandidates, NothingOutsideAnLShapedRoomIsKeptFromItsMeshOrItsCloud) 
     const PointCloud cloud = testing::sample_room(mesh, 100.0, 5).cloud;
     check(keep_free_positions(cloud, grid, 0.3, UpAxis{}));
   }
+}
+
+// The clearance test of a fine grid against a mesh of many faces takes
+// seconds: it reports progress (where Python polls Ctrl-C) and stops at a
+// cancel within a small share of it. It reported nothing, and the
+// inside-solid probes of every position ran before the first report
+// (issue 44, 2.10: Ctrl-C took effect 5-14 s late).
+TEST(StationCandidates, ACancelStopsTheClearanceTestWithinASmallShareOfIt) {
+  TriangleMesh room;
+  testing::add_box(room, {0, 0, 0}, {10, 10, 3}, "room", 40);  // 19,200 faces
+  std::vector<Eigen::Vector3d> positions;
+  for (int i = 0; i < 50; ++i) {
+    for (int j = 0; j < 40; ++j) positions.emplace_back(0.1 + 0.2 * i, 0.1 + 0.25 * j, 1.5);
+  }
+  std::atomic<bool> cancel{false};
+  double at_cancel = -1.0;
+  std::vector<std::string> after_cancel;
+  Progress progress;
+  progress.cancel = &cancel;
+  progress.report = [&](const std::string& stage, double fraction) {
+    if (cancel) {
+      after_cancel.push_back(stage);
+    } else if (stage == "clearance" && fraction > 0.0) {
+      at_cancel = fraction;
+      cancel = true;
+    }
+  };
+  EXPECT_THROW(keep_free_positions(room, positions, 0.3, UpAxis{}, 2, progress), Cancelled);
+  EXPECT_GT(at_cancel, 0.0);
+  EXPECT_LT(at_cancel, 0.2);
+  EXPECT_TRUE(after_cancel.empty()) << after_cancel.front() << " after the cancel";
 }
 
 TEST(StationCandidates, RefusesAnEmptySceneOrANegativeClearance) {

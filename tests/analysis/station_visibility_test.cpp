@@ -390,6 +390,44 @@ TEST(StationVisibility, CancelStopsTheTracing) {
                Cancelled);
 }
 
+// A cancel takes effect within a block of rays, whether few candidates share
+// the threads or each thread traces its own: it was checked (and progress,
+// which is where Python polls Ctrl-C, reported) once per candidate, whose
+// rays to a million targets take seconds (issue 44, 2.10). The cancel comes
+// in the first report of some tracing done; nothing is reported after it.
+TEST(StationVisibility, CancelTakesEffectWithinASmallShareOfTheTracing) {
+  TriangleMesh floor;
+  testing::add_quad(floor, {0, 0, 0}, {10, 0, 0}, {0, 10, 0}, "floor");
+  MeshOcclusionOptions options;
+  options.samples_per_unit_area = 6000.0;  // 600,000 targets
+  options.threads = 2;
+  const MeshSamples samples = sample_mesh(floor, options.samples_per_unit_area, options.seed);
+  // One candidate: its blocks on both threads; four: a candidate per thread.
+  for (const std::size_t count : {std::size_t{1}, std::size_t{4}}) {
+    const std::vector<Eigen::Vector3d> candidates(count, Eigen::Vector3d(5, 5, 1));
+    std::atomic<bool> cancel{false};
+    double at_cancel = -1.0, after_cancel = -1.0;
+    Progress progress;
+    progress.cancel = &cancel;
+    progress.report = [&](const std::string& stage, double fraction) {
+      if (stage != "tracing" || fraction == 0.0) return;
+      if (cancel) {
+        after_cancel = std::max(after_cancel, fraction);
+        return;
+      }
+      at_cancel = fraction;
+      cancel = true;
+    };
+    EXPECT_THROW(mesh_station_coverage(floor, samples, candidates, ones(samples.size()), options,
+                                       {}, progress),
+                 Cancelled)
+        << count;
+    EXPECT_GT(at_cancel, 0.0) << count;
+    EXPECT_LT(at_cancel, 0.2) << count << " candidates: a cancel waited for whole candidates";
+    EXPECT_EQ(after_cancel, -1.0) << count << " candidates: traced on after the cancel";
+  }
+}
+
 template <class Call>
 void expect_refused(const Call& call, const std::string& words) {
   try {
