@@ -113,6 +113,32 @@ TEST(Hardening, MinSamplesIsInTheMemoryBudget) {
   expect_serving(server);
 }
 
+// plan drew its samples before it checked its budgets: 1e6 samples per unit
+// area over sample_room.obj (266 million) ran the server out of memory and
+// was answered `internal` (issue 44, 2.5). Both budgets now hold before a
+// sample is drawn, naming plan's own keys.
+TEST(Hardening, APlanBeyondTheBudgetsIsRefusedBeforeItsSamplesAreDrawn) {
+  server::ServerOptions options = TestServer::quiet_options();
+  options.max_memory_mb = 400;
+  TestServer server(options);
+  auto client = server.connect();
+  int id = 1;
+  for (const char* request : {R"({"path": "sample_room.obj", "samples_per_unit_area": 1e6})",
+                              R"({"path": "sample_room.obj", "samples_per_unit_area": 1e4,
+                                  "max_work": 0.001})"}) {
+    const Reply reply = client->request(id++, "plan", params(request), kHangGuard);
+    EXPECT_EQ(reply.error_code(), "invalid_request") << reply.final;
+    const std::string message = reply.final["message"].asString();
+    EXPECT_NE(message.find("samples_per_unit_area"), std::string::npos) << message;
+    EXPECT_EQ(message.find("viewpoints"), std::string::npos) << message;
+    for (const std::string& stage : work_stages(reply)) {
+      EXPECT_TRUE(stage != "sampling" && stage != "building octree" && stage != "tracing")
+          << stage << " ran before the refusal";
+    }
+  }
+  expect_serving(server);
+}
+
 // The study's runs scan, trace and fit planes like the jobs they repeat, so
 // the server's budget holds them too (the study had no max_memory_mb, and
 // ran unbudgeted on the server).
