@@ -1,5 +1,8 @@
 // The keys of `plan` (config section occlusion.plan).
 
+#include <string>
+
+#include "occlusion/analysis/station_candidates.hpp"
 #include "occlusion/analysis/station_selection.hpp"
 #include "occlusion/app/plan_job.hpp"
 #include "occlusion/app/shared_keys.hpp"
@@ -99,7 +102,8 @@ const Keys<PlanRequest>& plan_keys() {
            .positive_up_to(1e6)
            .unit("scene units")
            .metavar("S")
-           .doc("candidates: grid step over the floor plan of the frame"),
+           .doc("candidates: grid step over the floor plan of the frame (at most " +
+                std::to_string(kMaxCandidates) + " positions)"),
        key("height", &R::height)
            .positive_up_to(1e6)
            .unit("scene units")
@@ -115,7 +119,8 @@ const Keys<PlanRequest>& plan_keys() {
            .path()
            .metavar("FILE")
            .doc("candidate positions from a cloud file instead of the grid (x y z per line in a "
-                ".txt/.xyz, or any cloud format), in the scene's frame; filtered as the grid is"),
+                ".txt/.xyz, or any cloud format), in the scene's frame; at most " +
+                std::to_string(kMaxCandidates) + ", filtered as the grid is"),
        point_list_key("placed", &R::placed)
            .cli("--placed")
            .max_items(10000)
