@@ -23,7 +23,8 @@ namespace occlusion {
 
 namespace {
 
-// A scene's own part of planning: where candidates may stand, and what each sees.
+// A scene's own part of planning: where candidates may stand (KeepFree), and
+// what each sees (SceneSide, once its targets are made).
 using KeepFree = std::function<StationCandidates(std::vector<Eigen::Vector3d>)>;
 struct SceneSide {
   std::function<CoverageMatrix(const std::vector<Eigen::Vector3d>&, const Progress&)> coverage;
