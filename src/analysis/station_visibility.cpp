@@ -131,10 +131,17 @@ void check_samples(const TriangleMesh& mesh, const MeshSamples& samples) {
 
 // The targets worth tracing (weight > 0) in Morton order of their
 // positions: a block of them is a patch of surface, so one candidate's rays
-// to it point nearly the same way and trace as packets.
+// to it point nearly the same way and trace as packets. Reported as stage
+// "ordering targets": with the copies around it, seconds for tens of
+// millions of targets, so cancel is checked between the steps.
 std::vector<std::uint32_t> coherent_targets(const std::vector<Eigen::Vector3f>& positions,
-                                            const std::vector<double>& weight) {
+                                            const std::vector<double>& weight,
+                                            const Progress& progress) {
+  progress.check_cancel();
+  progress("ordering targets", 0.0);
   std::vector<std::uint32_t> order = morton_order(positions);
+  progress.check_cancel();
+  progress("ordering targets", 0.5);
   order.erase(std::remove_if(order.begin(), order.end(),
                              [&](std::uint32_t target) { return !(weight[target] > 0.0); }),
               order.end());
@@ -360,9 +367,11 @@ CloudStationVisibility::CloudStationVisibility(const PointCloud& cloud,
       tracer_(cloud, options, progress) {
   // The points' discs copied in the order they are traced, for every
   // candidate to read as one stream.
-  order_ = coherent_targets(cloud.positions, weight_);
+  order_ = coherent_targets(cloud.positions, weight_, progress);
   targets_.resize(order_.size());
   for (std::size_t k = 0; k < order_.size(); ++k) targets_[k] = tracer_.target(order_[k]);
+  progress.check_cancel();
+  progress("ordering targets", 1.0);
 }
 
 CoverageMatrix CloudStationVisibility::coverage(const std::vector<Eigen::Vector3d>& candidates,
@@ -431,11 +440,13 @@ MeshStationVisibility::MeshStationVisibility(const TriangleMesh& mesh, const Mes
   normals_ = face_unit_normals(mesh);
   std::vector<Eigen::Vector3f> positions(samples.size());
   for (std::size_t s = 0; s < samples.size(); ++s) positions[s] = samples.points[s].cast<float>();
-  order_ = coherent_targets(positions, weight_);
+  order_ = coherent_targets(positions, weight_, progress);
   ordered_.resize(order_.size());
   for (std::size_t k = 0; k < order_.size(); ++k) {
     ordered_[k] = {samples.points[order_[k]] - origin_, samples.face[order_[k]]};
   }
+  progress.check_cancel();
+  progress("ordering targets", 1.0);
 }
 
 CoverageMatrix MeshStationVisibility::coverage(const std::vector<Eigen::Vector3d>& candidates,
