@@ -195,13 +195,19 @@ PlanReport plan_cloud_impl(const PointCloud& cloud, const PlanRequest& request,
   report.frame["lo"] = to_json(box.lo + cloud.shift);
   report.frame["hi"] = to_json(box.hi + cloud.shift);
 
+  const auto filter_work = [&](std::size_t positions) {
+    return plan_filter_work(positions, cloud.size(), false);
+  };
   const std::vector<Eigen::Vector3d> all =
       place_candidates(report, box, scan_stations(cloud), [&](std::vector<Eigen::Vector3d> p) {
+        check_work_budget(filter_work(p.size()), request.max_work);
         return keep_free_positions(cloud, std::move(p), request.clearance, up, request.threads,
                                    progress);
       });
-  check_budgets(request, scan_memory(cloud.size(), 1, request.primitive == "disc"), cloud.size(),
-                all.size(), plan_cloud_work(cloud.size(), all.size(), request.intervisible));
+  check_budgets(
+      request, scan_memory(cloud.size(), 1, request.primitive == "disc"), cloud.size(), all.size(),
+      one_after_the_other(filter_work(report.grid_positions),
+                          plan_cloud_work(cloud.size(), all.size(), request.intervisible)));
 
   const auto start = job::Clock::now();
   const job::PointModel model = job::choose_point_model(cloud, job::point_settings(request),
@@ -264,15 +270,20 @@ PlanReport plan_mesh_impl(const TriangleMesh& mesh, const PlanRequest& request,
   report.frame["lo"] = to_json(box.lo);
   report.frame["hi"] = to_json(box.hi);
 
+  const auto filter_work = [&](std::size_t positions) {
+    return plan_filter_work(positions, mesh.face_count(), true);
+  };
   const std::vector<Eigen::Vector3d> all =
       place_candidates(report, box, {}, [&](std::vector<Eigen::Vector3d> p) {
+        check_work_budget(filter_work(p.size()), request.max_work);
         return keep_free_positions(mesh, std::move(p), request.clearance, up, request.threads,
                                    progress);
       });
-  check_budgets(
-      request, mesh_occlusion_memory(mesh, request.samples_per_unit_area, 1),
-      total_samples(mesh, request.samples_per_unit_area), all.size(),
-      plan_mesh_work(mesh, request.samples_per_unit_area, all.size(), request.intervisible));
+  check_budgets(request, mesh_occlusion_memory(mesh, request.samples_per_unit_area, 1),
+                total_samples(mesh, request.samples_per_unit_area), all.size(),
+                one_after_the_other(filter_work(report.grid_positions),
+                                    plan_mesh_work(mesh, request.samples_per_unit_area, all.size(),
+                                                   request.intervisible)));
 
   const auto start = job::Clock::now();
   const MeshSamples samples =

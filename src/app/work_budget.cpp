@@ -5,7 +5,9 @@
 #include <cstdio>
 #include <limits>
 
+#include "occlusion/analysis/inside_solid.hpp"
 #include "occlusion/analysis/mesh_sampling.hpp"
+#include "occlusion/analysis/station_candidates.hpp"
 
 namespace occlusion {
 
@@ -117,6 +119,25 @@ WorkEstimate plan_work(std::uint64_t targets, const char* what, std::uint64_t pr
 }
 
 }  // namespace
+
+WorkEstimate plan_filter_work(std::size_t positions, std::uint64_t primitives, bool mesh) {
+  // Each position's probes (every one of the sphere's directions at most),
+  // and its clearance: one kd-tree query, or a test of every face.
+  const std::uint64_t probes = times(positions, kOutsideProbeRays + (mesh ? kInsideProbeRays : 0));
+  const RayCost cost = ray_cost(primitives, mesh ? "faces" : "points", true);
+  const std::uint64_t clearance = times(positions, mesh ? primitives : cost.steps);
+  const std::uint64_t steps = times(probes, cost.steps);
+  return {steps > kMax - clearance ? kMax : steps + clearance,
+          count(positions) + " positions' free-space probes (" + count(probes) + " rays x " +
+              cost.text + ") and clearance (" + count(clearance) +
+              (mesh ? " face tests)" : " kd-tree steps)"),
+          "a larger spacing or a shorter candidates file"};
+}
+
+WorkEstimate one_after_the_other(const WorkEstimate& first, const WorkEstimate& then) {
+  return {first.steps > kMax - then.steps ? kMax : first.steps + then.steps,
+          first.made_of + ", then " + then.made_of, then.keys};
+}
 
 WorkEstimate plan_mesh_work(const TriangleMesh& mesh, double samples_per_unit_area,
                             std::size_t candidates, bool intervisible) {

@@ -125,6 +125,31 @@ TEST(PlanBudget, ACloudsPlanBeyondTheBudgetIsRefusedBeforeItsPointModel) {
   expect_no_target_made(stages);
 }
 
+// The free-space filter probes every grid position with hundreds of rays and
+// tests its clearance against every face: a fine grid is refused before it
+// is filtered (100,000 positions took 30 s, then were refused for their
+// coverage's work).
+TEST(PlanBudget, AFilterBeyondTheBudgetIsRefusedBeforeItRuns) {
+  PlanRequest request = mesh_request();
+  request.spacing = 0.05;  // 20,301 positions
+  request.max_work = 0.01;
+  Stages stages;
+  try {
+    plan_mesh(testing::two_rooms(), request, stages.progress());
+    FAIL() << "a plan over the work budget ran";
+  } catch (const WorkBudgetError& error) {
+    const std::string message = error.what();
+    for (const char* named : {"free-space probes", "face tests", "spacing", "candidates file"}) {
+      EXPECT_NE(message.find(named), std::string::npos) << named << ": " << message;
+    }
+    expect_only_plan_keys(message);
+  }
+  for (const char* stage : {"clearance", "candidates"}) {
+    EXPECT_EQ(stages.seen.count(stage), 0u) << stage << " ran before the refusal";
+  }
+  expect_no_target_made(stages);
+}
+
 // A position a line, `count` of them spread over the floor of room A.
 void write_positions(const std::string& path, std::size_t count, const std::string& after) {
   std::ofstream out(path);

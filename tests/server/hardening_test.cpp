@@ -125,7 +125,7 @@ TEST(Hardening, APlanBeyondTheBudgetsIsRefusedBeforeItsSamplesAreDrawn) {
   int id = 1;
   for (const char* request : {R"({"path": "sample_room.obj", "samples_per_unit_area": 1e6})",
                               R"({"path": "sample_room.obj", "samples_per_unit_area": 1e4,
-                                  "max_work": 0.001})"}) {
+                                  "max_work": 0.01})"}) {
     const Reply reply = client->request(id++, "plan", params(request), kHangGuard);
     EXPECT_EQ(reply.error_code(), "invalid_request") << reply.final;
     const std::string message = reply.final["message"].asString();

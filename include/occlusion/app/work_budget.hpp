@@ -45,6 +45,13 @@ WorkEstimate mesh_occlusion_work(const TriangleMesh& mesh, double samples_per_un
                                  std::size_t viewpoints, bool accelerated);
 // -fscan: a shadow ray from every point to every viewpoint.
 WorkEstimate scan_work(std::size_t points, std::size_t viewpoints, bool accelerated);
+// plan's free-space filter (analysis/station_candidates.hpp) of `positions`:
+// each one's probe rays (outside, and inside solids for a mesh) through the
+// octree over `primitives`, and its clearance, a kd-tree query among a
+// cloud's points or a test of every face of a mesh. Known before the filter.
+WorkEstimate plan_filter_work(std::size_t positions, std::uint64_t primitives, bool mesh);
+// The work of `first`, then `then`'s: named by then's keys.
+WorkEstimate one_after_the_other(const WorkEstimate& first, const WorkEstimate& then);
 // plan: a shadow ray from every target (-moc's samples of a mesh, a cloud's
 // points) to every candidate, and with `intervisible` one between every two
 // candidates. Known before any sample is drawn or point model made.
