@@ -16,6 +16,10 @@ using Bits = std::vector<std::uint64_t>;
 // much (relative to the total) is rounding, not coverage.
 constexpr double kRelativeTolerance = 1e-12;
 static_assert(kLeastTargetCoverage > 2 * kRelativeTolerance, "a target must exceed rounding");
+// Matrix words read between two progress reports: a few milliseconds. A
+// large matrix's rows are read for seconds between greedy's steps or the
+// improvement pass's moves, and a report is where Python polls Ctrl-C.
+constexpr std::size_t kWordsPerReport = std::size_t{1} << 22;
 
 void add_row(Bits& covered, const CoverageMatrix& matrix, std::size_t candidate) {
   const std::uint64_t* row = matrix.row(candidate);
@@ -66,7 +70,21 @@ class Selector {
  private:
   double gain(std::size_t candidate, const Bits& covered) {
     ++evaluations_;
+    read_rows(1);
     return matrix_.gain(candidate, covered);
+  }
+  // Reports `stage` at `fraction`, and again as `rows` rows are read.
+  void report(const char* stage, double fraction) {
+    stage_ = stage;
+    fraction_ = fraction;
+    progress_.check_cancel();
+    progress_(stage_, fraction_);
+  }
+  void read_rows(std::size_t rows) {
+    words_read_ += rows * matrix_.words_per_row();
+    if (words_read_ < kWordsPerReport) return;
+    words_read_ = 0;
+    report(stage_, fraction_);
   }
   bool target_mode() const { return options_.stations == 0; }
   // The union of the placed stations' rows and of `chosen`'s, but for
@@ -95,6 +113,9 @@ class Selector {
   std::vector<bool> in_set_;
   std::vector<double> alone_;  // per candidate: the weight it sees alone (bounds its gains)
   std::size_t evaluations_ = 0;
+  const char* stage_ = "selecting";  // the stage last reported, and where in it
+  double fraction_ = 0.0;
+  std::size_t words_read_ = 0;  // since then
 
   double placed_weight_ = 0.0;
   double first_best_gain_ = 0.0;   // the largest gain of a new station over the placed ones
@@ -163,9 +184,8 @@ void Selector::greedy() {
                          : greedy_chosen_.size() >= options_.stations;
   };
   for (std::size_t step = 0; !done(); ++step) {
-    progress_.check_cancel();
-    progress_("selecting", target_mode() ? std::min(1.0, weight / target_weight_)
-                                         : static_cast<double>(step) / options_.stations);
+    report("selecting", target_mode() ? std::min(1.0, weight / target_weight_)
+                                      : static_cast<double>(step) / options_.stations);
     plain_evaluations_ += free_candidates - step;
     std::vector<Entry> out_of_sight;  // entries that cannot join the chain at this step
     bool found = false;
@@ -297,7 +317,7 @@ void Selector::improve() {
   // Each move lowers the count or raises coverage by more than the
   // tolerance, so the pass ends.
   while (true) {
-    progress_("improving", 0.0);
+    report("improving", 0.0);
     if (target_mode() && (drop_one() || two_for_one())) {
       ++moves_;
       continue;
@@ -419,11 +439,18 @@ void Selector::describe(StationSelection& result) const {
 StationSelection Selector::run() {
   const double total = matrix_.total_weight();
   target_weight_ = options_.target_coverage * total;
+  report("selecting", 0.0);
   alone_.resize(matrix_.candidates());
-  for (std::size_t c = 0; c < matrix_.candidates(); ++c) alone_[c] = matrix_.seen_weight(c);
+  for (std::size_t c = 0; c < matrix_.candidates(); ++c) {
+    alone_[c] = matrix_.seen_weight(c);
+    read_rows(1);
+  }
   {
     Bits all(matrix_.words_per_row(), 0);
-    for (std::size_t c = 0; c < matrix_.candidates(); ++c) add_row(all, matrix_, c);
+    for (std::size_t c = 0; c < matrix_.candidates(); ++c) {
+      add_row(all, matrix_, c);
+      read_rows(1);
+    }
     reachable_weight_ = matrix_.weight_of(all);
   }
   // A target beyond what the candidates can see at all would have greedy add
