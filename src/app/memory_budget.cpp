@@ -140,7 +140,7 @@ MemoryEstimate plan_memory(MemoryEstimate model, std::uint64_t targets, std::siz
   constexpr std::uint64_t kPlanTargetBytes = 3 * 8 + 4 + 32 + 12 + 24;
   model.bytes = plus(model.bytes, times(targets, kPlanTargetBytes));
   // One bit per (candidate, target), each row padded to whole 64-bit words.
-  const std::uint64_t row_bytes = times(targets / 64 + 1, 8);
+  const std::uint64_t row_bytes = times(targets / 64 + (targets % 64 != 0 ? 1 : 0), 8);
   model.bytes = plus(model.bytes, times(candidates, row_bytes));
   // The model's own words name viewpoints, which plan has not.
   model.made_of = at_least(targets) + " targets with their model, and the coverage matrix of " +

@@ -73,6 +73,8 @@ TEST(PlanJob, TheCoverageMatrixCountsInTheMemoryBudget) {
   const MemoryEstimate model{1000, "the model", ""};
   const MemoryEstimate plan = plan_memory(model, 100, 3, false);
   EXPECT_EQ(plan.bytes - plan_memory(model, 100, 0, false).bytes, 3u * 16u);
+  // Rows of whole words, as the matrix pads them: 128 targets are two.
+  EXPECT_EQ(plan_memory(model, 128, 1, false).bytes - plan_memory(model, 128, 0, false).bytes, 16u);
   // With intervisible, a byte per pair.
   EXPECT_EQ(plan_memory(model, 100, 3, true).bytes - plan.bytes, 9u);
   EXPECT_NE(plan.made_of.find("3 candidates x 100 targets"), std::string::npos) << plan.made_of;
