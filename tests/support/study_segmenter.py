@@ -10,7 +10,8 @@ cloud (.txt: x y z label, evaluation ids) or a bare label file (.labels: one
 evaluation id per line). Evaluation ids are table 3.1's.
 
 MODE: truth (the ground truth, points in reverse order), wall (evaluation id
-0 everywhere), drop_last, extra_point (the first point twice), moved_point
+0 everywhere), drop_last, extra_point (the first point twice), nan_point
+(the ground truth and one more point at (NaN, NaN, NaN)), moved_point
 (the first point 1 mm along x), binary_failure (binary bytes on stderr, exit
 5), and two that write a bare label file whatever OUTPUT's extension:
 labels_in_order (the ground truth) and off_by_one (the ground truth one line
@@ -25,6 +26,7 @@ input path containing RUN_TEXT: die (exit 9 without answering), hang (no
 answer), or refuse (answers "cannot segment this").
 """
 
+import math
 import struct
 import sys
 import time
@@ -146,6 +148,8 @@ def segment(mode, input_path, output_path):
         points = points[:-1]
     elif mode == "extra_point":
         points = points[:1] + points
+    elif mode == "nan_point":
+        points = points + [(math.nan, math.nan, math.nan, points[0][3])]
     elif mode == "moved_point":
         x, y, z, label = points[0]
         points[0] = (x + 0.001, y, z, label)
