@@ -23,10 +23,17 @@ is the same as a persistent worker (segmenter "worker: ..."): it appends a
 line to STARTS when it starts, then reads "INPUT<TAB>OUTPUT" lines on stdin,
 answers "ok" for each, and exits at the end of stdin. MISBEHAVIOUR, for an
 input path containing RUN_TEXT: die (exit 9 without answering), hang (no
-answer), or refuse (answers "cannot segment this").
+answer), refuse (answers "cannot segment this"), close_stdout (closes its
+stdout and sleeps for an hour), flood (writes "x" on stdout without end or
+line break, keeping the count of bytes written in STARTS.flooded), trickle
+(one "." on stdout every millisecond, without end or line break) or
+flood_then_hang (flood in the worker's first start, no answer in the next).
+The last four first append the worker's process id to STARTS.pid, so that a
+test can check that the study stopped it.
 """
 
 import math
+import os
 import struct
 import sys
 import time
@@ -109,8 +116,40 @@ def serve(mode, starts, misbehaviour=None, run_text=None):
             if misbehaviour == "refuse":
                 print("cannot segment this", flush=True)
                 continue
+            if misbehaviour in ("close_stdout", "flood", "trickle",
+                                "flood_then_hang"):
+                misbehave(misbehaviour, starts)
         segment(mode, input_path, output_path)
         print("ok", flush=True)
+
+
+def misbehave(misbehaviour, starts):
+    """Never returns: the study must end it."""
+    with open(starts, encoding="ascii") as f:
+        first_start = f.read().count("\n") == 1
+    with open(starts + ".pid", "a") as f:
+        f.write(f"{os.getpid()}\n")
+    sys.stdout.flush()
+    if misbehaviour == "flood_then_hang":
+        misbehaviour = "flood" if first_start else "hang"
+    if misbehaviour == "close_stdout":
+        os.close(1)
+        time.sleep(3600)
+    elif misbehaviour == "flood":
+        chunk = b"x" * 65536
+        written = 0
+        with open(starts + ".flooded", "w") as count:
+            while True:
+                written += os.write(1, chunk)
+                count.seek(0)
+                count.write(f"{written:20d}\n")
+                count.flush()
+    elif misbehaviour == "hang":
+        time.sleep(3600)
+    else:
+        while True:
+            os.write(1, b".")
+            time.sleep(0.001)
 
 
 def main():
