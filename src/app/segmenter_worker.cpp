@@ -235,10 +235,12 @@ WorkerAnswer SegmenterWorker::request(const std::string& command, const std::str
     sent += static_cast<std::size_t>(n);
   }
   const auto start = Clock::now();
+  std::size_t searched = 0;  // pending_ before this holds no line break
   // Every pass looks at the cancel flag and the timeout, whatever arrived:
   // a worker that writes without pause must not keep the study from either.
   for (;;) {
-    const std::size_t newline = pending_.find('\n');
+    const std::size_t newline = pending_.find('\n', searched);
+    searched = pending_.size();
     if (newline != std::string::npos && newline <= kMaxAnswerBytes) {
       std::string reply = pending_.substr(0, newline);
       pending_.erase(0, newline + 1);
@@ -281,8 +283,8 @@ WorkerAnswer SegmenterWorker::request(const std::string& command, const std::str
     if (!read_answers()) return ended_without_answer();
     // Its shell gone while something it left holds its stdout: no answer
     // can come from the worker any more, only what is already written.
-    if (pending_.find('\n') == std::string::npos && has_exited()) {
-      if (read_answers() && pending_.find('\n') != std::string::npos) continue;
+    if (pending_.find('\n', searched) == std::string::npos && has_exited()) {
+      if (read_answers() && pending_.find('\n', searched) != std::string::npos) continue;
       return ended_without_answer();
     }
   }
