@@ -300,8 +300,8 @@ LoadedScene load_scene(const std::string& ground_truth, const std::string& predi
     check_label_order(prediction, ground_truth, truth);
     scene.input.annotation_order = std::move(truth.annotation_order);
   }
-  scene.input.prediction =
-      load_prediction(prediction, skip_bad_lines, scene.input.ground_truth.shift);
+  scene.input.prediction = load_prediction(
+      prediction, skip_bad_lines, scene.input.ground_truth.shift, &scene.prediction_non_finite);
   return scene;
 }
 

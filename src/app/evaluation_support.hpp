@@ -13,6 +13,7 @@ struct LoadedScene {
   SceneInput input;
   std::size_t dropped_nan = 0;
   std::size_t skipped_lines = 0;
+  std::size_t prediction_non_finite = 0;  // prediction points dropped for NaN or infinity
 };
 
 // A ground truth the mapping can score: labels, class names, and every
