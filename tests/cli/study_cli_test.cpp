@@ -170,8 +170,12 @@ TEST(StudyCli, SigtermStopsAStudyWhoseWorkerFloodsItsStdout) {
       "' & pid=$!; for i in $(seq 1 3000); do [ \"$(cat '" + starts +
       ".pid' 2>/dev/null | wc -l)\" -ge 2 ] && break; [ \"$(tr -dc 0-9 2>/dev/null <'" + starts +
       ".flooded')\" -ge 33554432 ] 2>/dev/null && break; sleep 0.1; done; "
-      "kill -TERM $pid; wait $pid; echo $? >'" +
-      dir.file("status") + "'";
+      // A study the signal did not stop is killed two minutes later (exit
+      // status 137), so that the test fails instead of hanging; the watchdog
+      // ends as soon as the study does.
+      "kill -TERM $pid; (for i in $(seq 1 1200); do kill -0 $pid 2>/dev/null || exit 0; "
+      "sleep 0.1; done; kill -KILL $pid) & wait $pid; echo $? >'" +
+      dir.file("status") + "'; wait";
   dir.write("run.sh", script);
   ASSERT_EQ(std::system(("sh '" + dir.file("run.sh") + "'").c_str()), 0);
   EXPECT_EQ(testing::read_text(dir.file("status")), "143\n") << testing::read_text(dir.file("err"));
