@@ -9,6 +9,7 @@
 #include "occlusion/app/errors.hpp"
 #include "occlusion/app/json_output.hpp"
 #include "occlusion/io/atomic_file.hpp"
+#include "occlusion/io/input_error.hpp"
 
 namespace occlusion {
 
@@ -55,6 +56,30 @@ Json::Value scene_json(const SceneEvaluation& scene) {
   json["skipped_lines"] = Json::UInt64(scene.skipped_lines);
   json["confusion"] = to_json(scene.confusion);
   return json;
+}
+
+// The reader drops prediction points with a non-finite coordinate. Paired
+// by position (max_distance 0), the rest could then pair completely with the
+// ground truth and a prediction holding points it does not have would score
+// as if it were right; a transfer by nearest neighbour has no use for them.
+void check_non_finite_predictions(const job::LoadedScene& loaded, double max_distance,
+                                  std::vector<std::string>& warnings) {
+  const std::size_t count = loaded.prediction_non_finite;
+  if (count == 0) return;
+  const std::string what = std::to_string(count) +
+                           " points with a non-finite coordinate (NaN or infinity), which no "
+                           "point of " +
+                           loaded.input.ground_truth_name + " has";
+  if (max_distance <= 0.0) {
+    throw InputError(loaded.input.prediction_name, 0,
+                     "holds " + what +
+                         ": with --max-distance 0 a prediction cloud is paired with the ground "
+                         "truth by position, so write every ground-truth point once, with x y z "
+                         "as read, and its label (or give a distance > 0 to transfer labels by "
+                         "nearest neighbour, which leaves such points out)");
+  }
+  warnings.push_back(loaded.input.prediction_name + ": " + what +
+                     "; the transfer by nearest neighbour leaves them out");
 }
 
 }  // namespace
@@ -112,6 +137,7 @@ EvaluateReport run_evaluate(const EvaluateRequest& request, const Progress& prog
                         request.class_names_path);
     report.load_seconds += job::seconds_since(load_start);
     progress.check_cancel();
+    check_non_finite_predictions(loaded, request.max_distance, report.warnings);
 
     SceneEvaluation scene = evaluate_scene(loaded.input, report.mapping, request.max_distance,
                                            request.threads, progress);

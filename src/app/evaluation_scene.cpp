@@ -241,13 +241,15 @@ void add_scene_warnings(const SceneEvaluation& scene, double max_distance,
 }
 
 Prediction load_prediction(const std::string& path, bool skip_bad_lines,
-                           const Eigen::Vector3d& shift) {
+                           const Eigen::Vector3d& shift, std::size_t* non_finite) {
   Prediction prediction;
+  if (non_finite != nullptr) *non_finite = 0;
   if (is_label_file(path)) {
     prediction.labels = read_label_file(path);
     return prediction;
   }
   LoadedCloud predicted = load_cloud(path, skip_bad_lines, shift);
+  if (non_finite != nullptr) *non_finite = predicted.dropped_nan;
   if (!predicted.cloud.has_labels()) {
     throw InputError(path, 0, "has no labels; a prediction is a labelled cloud or a label file");
   }
@@ -298,8 +300,8 @@ LoadedScene load_scene(const std::string& ground_truth, const std::string& predi
     check_label_order(prediction, ground_truth, truth);
     scene.input.annotation_order = std::move(truth.annotation_order);
   }
-  scene.input.prediction =
-      load_prediction(prediction, skip_bad_lines, scene.input.ground_truth.shift);
+  scene.input.prediction = load_prediction(
+      prediction, skip_bad_lines, scene.input.ground_truth.shift, &scene.prediction_non_finite);
   return scene;
 }
 

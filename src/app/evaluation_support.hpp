@@ -13,6 +13,7 @@ struct LoadedScene {
   SceneInput input;
   std::size_t dropped_nan = 0;
   std::size_t skipped_lines = 0;
+  std::size_t prediction_non_finite = 0;  // prediction points dropped for NaN or infinity
 };
 
 // A ground truth the mapping can score: labels, class names, and every
@@ -24,9 +25,11 @@ void check_ground_truth(const std::string& name, const PointCloud& cloud,
 // A prediction file: a label file (io/label_file.hpp decides) or a labelled
 // cloud. InputError for an unreadable file and a cloud without labels. A cloud
 // is read with the ground truth's global shift (`shift`, PointCloud::shift),
-// so the two compare point by point in one frame.
+// so the two compare point by point in one frame. Points with a non-finite
+// coordinate are dropped, as the reader drops them; `non_finite`, when given,
+// receives how many.
 Prediction load_prediction(const std::string& path, bool skip_bad_lines,
-                           const Eigen::Vector3d& shift);
+                           const Eigen::Vector3d& shift, std::size_t* non_finite = nullptr);
 
 // The ground truth with read_cloud; the prediction as a label file
 // (io/label_file.hpp decides) or a cloud. InputError for unreadable files,

@@ -7,9 +7,11 @@
 // "INPUT<TAB>OUTPUT\n" on the worker's stdin; the worker writes OUTPUT and
 // answers "ok\n" on its stdout, or any other line to say why it could not
 // (that run fails, the worker stays). Its stderr is forwarded to ours. A
-// worker that dies, or answers later than the timeout (killed then), fails
-// that run and is started again for the next. Closing its stdin at the end
-// of the study asks it to exit; it is killed if it has not within 5 s.
+// worker that exits or closes its stdout without answering, answers later
+// than the timeout, or writes more than kMaxAnswerBytes without a line break
+// fails that run, is killed (its process group) and is started again for the
+// next. Closing its stdin at the end of the study asks it to exit; it is
+// killed if it has not within 5 s.
 
 #include <sys/types.h>
 
@@ -22,6 +24,11 @@
 namespace occlusion::job {
 
 inline constexpr const char* kWorkerPrefix = "worker:";
+
+// The longest answer line: an answer is "ok" or a sentence, so a worker past
+// this is printing on stdout what belongs on stderr, and reading it to its end
+// could take a run's memory.
+inline constexpr std::size_t kMaxAnswerBytes = 65536;
 
 // True for "worker: COMMAND"; `command` receives COMMAND, trimmed.
 bool is_worker_segmenter(const std::string& segmenter, std::string* command = nullptr);
@@ -55,9 +62,16 @@ class SegmenterWorker {
   // description of how it ended.
   std::string stop(bool kill);
   void forward_stderr();
+  bool has_exited() const;
+  // Reads what its stdout holds now into pending_; false at its end.
+  bool read_answers();
+  // The answer when its stdout ended: it exited (waited for briefly) or
+  // closed it and lives on (killed).
+  WorkerAnswer ended_without_answer();
 
   pid_t pid_ = -1;
-  int requests_fd_ = -1;  // our end of its stdin and stdout (a socket pair)
+  int requests_fd_ = -1;  // our end of its stdin (a socket: send() without SIGPIPE)
+  int answers_fd_ = -1;   // our end of its stdout (a pipe, non-blocking)
   int stderr_fd_ = -1;
   std::string command_;
   std::string pending_;  // stdout read past the last answer line

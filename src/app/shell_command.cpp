@@ -24,8 +24,10 @@ void kill_group(pid_t pid, int& status) {
 }  // namespace
 
 void forward_output(int fd, std::string& tail) {
-  char buffer[4096];
-  for (;;) {
+  char buffer[65536];
+  // A bounded share per call: a child that writes without pause must not keep
+  // the caller from its timeout and cancel checks.
+  for (std::size_t forwarded = 0; forwarded < kForwardedPerCall; forwarded += sizeof buffer) {
     const ssize_t got = ::read(fd, buffer, sizeof buffer);
     if (got <= 0) return;  // empty (EAGAIN), closed, or an error: nothing more now
     const std::size_t size = static_cast<std::size_t>(got);

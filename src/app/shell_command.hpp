@@ -9,10 +9,11 @@
 namespace occlusion::job {
 
 inline constexpr std::size_t kShellOutputTail = 2000;
+inline constexpr std::size_t kForwardedPerCall = std::size_t{1} << 20;
 
 // Forwards what a child wrote on `fd` since the last call to our stderr and
 // keeps its last kShellOutputTail bytes in `tail`. `fd` must be non-blocking:
-// returns when it is empty.
+// returns when it is empty, or after about kForwardedPerCall bytes.
 void forward_output(int fd, std::string& tail);
 
 struct ShellResult {

@@ -149,14 +149,29 @@ Prediction checked_prediction(const StudyRequest& request, const PointCloud& sca
     return load_prediction(prediction_path, request.tracing.skip_bad_lines, scanned.shift);
   }
   Prediction prediction;
+  std::size_t non_finite = 0;
   try {
-    prediction = load_prediction(prediction_path, request.tracing.skip_bad_lines, scanned.shift);
+    prediction = load_prediction(prediction_path, request.tracing.skip_bad_lines, scanned.shift,
+                                 &non_finite);
   } catch (const InputError& e) {
     // Most often a segmenter that writes bare labels where a cloud is expected.
     throw RunFailure(std::string("its prediction cannot be scored: ") + e.what() +
                          " (segmenter_output is " + request.segmenter_output +
                          ": {output} must be a cloud with x y z and a label per point; a bare "
                          "label file needs segmenter_output labels)",
+                     output_tail);
+  }
+  // The reader drops such points, so the rest could pair completely and a
+  // prediction with points {input} does not have would score ok.
+  if (non_finite > 0) {
+    throw RunFailure("its prediction holds " +
+                         std::to_string(prediction.positions.size() + non_finite) +
+                         " points for the " + std::to_string(scanned.size()) +
+                         " points of {input}, " + std::to_string(non_finite) +
+                         " points with a non-finite coordinate (NaN or infinity) among them, which "
+                         "no point of {input} has. A prediction cloud is paired with {input} by "
+                         "position: write every point of {input} once, with x y z as read, and "
+                         "its label",
                      output_tail);
   }
   pair_with_scan(prediction, scanned, output_tail);

@@ -1,7 +1,6 @@
 #include "occlusion/core/exact_match.hpp"
 
 #include <algorithm>
-#include <numeric>
 
 namespace occlusion {
 
@@ -14,10 +13,15 @@ bool coordinates_less(const Eigen::Vector3f& a, const Eigen::Vector3f& b) {
 }
 
 // Indices of `points` sorted by coordinates; equal points keep their order,
-// which is what pairs duplicates in order of appearance.
+// which is what pairs duplicates in order of appearance. Points with a
+// non-finite coordinate are left out: NaN equals nothing (not even itself),
+// and in the comparison it would seem equal to every point, pairing at random.
 std::vector<std::size_t> sorted_indices(const std::vector<Eigen::Vector3f>& points) {
-  std::vector<std::size_t> order(points.size());
-  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::vector<std::size_t> order;
+  order.reserve(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (points[i].allFinite()) order.push_back(i);
+  }
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
     return coordinates_less(points[a], points[b]);
   });
@@ -48,7 +52,7 @@ ExactMatch match_exact_points(const std::vector<Eigen::Vector3f>& source,
       ++t;
     }
   }
-  match.unmatched_sources += from.size() - s;
+  match.unmatched_sources += from.size() - s + (source.size() - from.size());
   for (std::size_t i = 0; i < target.size(); ++i) {
     if (match.source_of[i] != ExactMatch::kNone) continue;
     if (match.unmatched_targets == 0) match.first_unmatched_target = i;

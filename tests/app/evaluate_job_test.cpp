@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <json/reader.h>
 
+#include <fstream>
 #include <sstream>
 
 #include "io/scratch_directory.hpp"
@@ -153,6 +154,37 @@ TEST(EvaluateJob, MeanOverIsAppliedAndReported) {
     EXPECT_EQ(json["parameters"]["mean_over"].asString(), to_string(rule));
     EXPECT_DOUBLE_EQ(json["miou"].asDouble(), miou);
   }
+}
+
+// Issue 44, 2.6: the reader dropped the prediction's NaN point, the rest were
+// the ground truth's points, and the prediction scored as paired.
+TEST(EvaluateJob, APredictionWithANonFinitePointIsRefusedWhenPairedByPosition) {
+  const testing::ScratchDirectory dir;
+  PointCloud truth;
+  truth.class_names = {"wall", "floor"};
+  truth.positions = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}};
+  truth.labels = {0, 0, 1};
+  write_cloud(dir.file("room.ply"), truth);
+  // x y z label, in table 3.1's evaluation ids: the ground truth and one more.
+  std::ofstream(dir.file("room_pred.txt")) << "0 0 0 0\n1 0 0 0\n2 0 0 1\nnan nan nan 0\n";
+  EvaluateRequest request;
+  request.ground_truth = {dir.file("room.ply")};
+  request.predictions = {dir.file("room_pred.txt")};
+  request.max_distance = 0.0;
+  try {
+    run_evaluate(request);
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("1 points with a non-finite coordinate"),
+              std::string::npos)
+        << e.what();
+  }
+  // Transferred by nearest neighbour, the point is left out, and said so.
+  request.max_distance = 0.05;
+  const EvaluateReport report = run_evaluate(request);
+  EXPECT_DOUBLE_EQ(*report.metrics.miou, 1.0);
+  ASSERT_EQ(report.warnings.size(), 1u);
+  EXPECT_NE(report.warnings[0].find("non-finite"), std::string::npos) << report.warnings[0];
 }
 
 TEST(ClassMappingFile, DefaultsToTable3_1) {

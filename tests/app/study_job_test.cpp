@@ -320,6 +320,9 @@ TEST(StudyJob, ACloudPredictionWithMissingExtraOrMovedPointsFailsItsRun) {
   for (const auto& [mode, reason] : std::vector<std::pair<std::string, std::string>>{
            {"drop_last", "1 points of {input} have no predicted point at their coordinates"},
            {"extra_point", "1 predicted points are none of {input}'s"},
+           // Issue 44, 2.6: the reader dropped the NaN point, the rest paired,
+           // and the run scored ok.
+           {"nan_point", "1 points with a non-finite coordinate (NaN or infinity)"},
            {"moved_point",
             "1 points of {input} have no predicted point at their coordinates "
             "(the first: point 0 at ("}}) {
@@ -335,6 +338,10 @@ TEST(StudyJob, ACloudPredictionWithMissingExtraOrMovedPointsFailsItsRun) {
   const StudyReport text = one_run(dir, "text", test_segmenter("truth"), "txt");
   EXPECT_EQ(text.runs_failed, 0u) << cell(text.table, 0, "failure");
   EXPECT_EQ(number(text.table, 0, "overall_accuracy"), 1.0);
+  const StudyReport nan_text = one_run(dir, "nan_text", test_segmenter("nan_point"), "txt");
+  EXPECT_EQ(nan_text.runs_failed, 1u);
+  EXPECT_NE(cell(nan_text.table, 0, "failure").find("non-finite"), std::string::npos)
+      << cell(nan_text.table, 0, "failure");
 }
 
 // study.csv and study.md are text: no invalid UTF-8, no control bytes but line ends.

@@ -4,8 +4,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <filesystem>
+#include <fstream>
 #include <string>
+#include <thread>
 
 #include "io/scratch_directory.hpp"
 #include "occlusion/app/config.hpp"
@@ -49,6 +52,25 @@ std::string cell(const CsvTable& table, std::size_t row, const std::string& colu
 
 double miou(const CsvTable& table, std::size_t row) {
   return std::stod(cell(table, row, "miou"));
+}
+
+// The process whose id a misbehaving worker wrote to STARTS.pid has ended (a
+// zombie left to init counts): the study did not leave it running. Waits up
+// to a minute for init to reap an orphan; no test depends on how long.
+bool worker_is_gone(const std::string& starts) {
+  std::ifstream pid_file(starts + ".pid");
+  long pid = 0;
+  if (!(pid_file >> pid) || pid <= 0) return false;
+  const std::string stat = "/proc/" + std::to_string(pid) + "/stat";
+  for (int i = 0; i < 600; ++i) {
+    std::ifstream file(stat);
+    std::string fields;
+    if (!std::getline(file, fields)) return true;
+    const std::size_t state = fields.rfind(')') + 2;
+    if (state < fields.size() && (fields[state] == 'Z' || fields[state] == 'X')) return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  return false;
 }
 
 TEST(StudyWorker, IsStartedOncePerStudyAndEveryRunScores) {
@@ -117,6 +139,66 @@ TEST(StudyWorker, OneThatHangsIsKilledAtTheTimeoutAndOneThatRefusesStays) {
             std::string::npos)
       << cell(refused.table, 1, "failure");
   EXPECT_EQ(lines(kept), 1u);  // a refusal is an answer: the worker stays
+}
+
+// Issue 44, 2.6: its stdin and stdout were one socket, so closing stdout left
+// the socket open through stdin, and with no timeout (the default) the study
+// waited forever.
+TEST(StudyWorker, OneThatClosesItsStdoutAndStaysFailsItsRunAndIsKilled) {
+  const ScratchDirectory dir;
+  const std::string starts = dir.file("starts");
+  StudyRequest request = office_study(dir.file("study"));
+  request.segmenter = truth_worker(starts, "close_stdout");
+  ASSERT_EQ(request.segmenter_timeout, 0.0);  // the default: no limit
+  const StudyReport report = run_study(request);
+  ASSERT_EQ(report.table.rows.size(), 3u);
+  EXPECT_EQ(report.runs_failed, 1u);
+  const std::string why = cell(report.table, 1, "failure");
+  EXPECT_NE(why.find("closed its stdout without answering"), std::string::npos) << why;
+  EXPECT_TRUE(worker_is_gone(starts));
+  EXPECT_EQ(miou(report.table, 2), 1.0);
+  EXPECT_EQ(lines(starts), 2u);
+}
+
+// Issue 44, 2.6: the study read a line without end ever slower (it searched
+// all it had read for the line break after every 4 KiB) and without bound.
+TEST(StudyWorker, OneThatFloodsItsStdoutIsRefusedAtTheCapAndKilled) {
+  const ScratchDirectory dir;
+  const std::string starts = dir.file("starts");
+  StudyRequest request = office_study(dir.file("study"));
+  request.segmenter = truth_worker(starts, "flood");
+  request.segmenter_timeout = 600.0;  // the cap ends it, not the timeout
+  const StudyReport report = run_study(request);
+  ASSERT_EQ(report.table.rows.size(), 3u);
+  EXPECT_EQ(report.runs_failed, 1u);
+  const std::string why = cell(report.table, 1, "failure");
+  EXPECT_NE(why.find("bytes on its stdout without a line break"), std::string::npos) << why;
+  EXPECT_TRUE(worker_is_gone(starts));
+  // What it could write: the cap, plus what the socket holds, far below the
+  // gigabytes it would have written were it read to the end.
+  std::ifstream flooded(starts + ".flooded");
+  std::size_t written = 0;
+  ASSERT_TRUE(flooded >> written);
+  EXPECT_LT(written, std::size_t{16} << 20);
+  EXPECT_EQ(miou(report.table, 2), 1.0);
+}
+
+// Issue 44, 2.6: bytes arriving faster than the poll's tick skipped the
+// timeout's check, so a worker that never finished its line was never killed.
+TEST(StudyWorker, OneThatTricklesWithoutEndingItsLineIsKilledAtTheTimeout) {
+  const ScratchDirectory dir;
+  const std::string starts = dir.file("starts");
+  StudyRequest request = office_study(dir.file("study"));
+  request.segmenter = truth_worker(starts, "trickle");
+  // Generous for python's start-up on a loaded machine; the trickle (one
+  // byte a millisecond) stays far below the cap for that long.
+  request.segmenter_timeout = 20.0;
+  const StudyReport report = run_study(request);
+  ASSERT_EQ(report.table.rows.size(), 3u);
+  EXPECT_EQ(report.runs_failed, 1u);
+  const std::string why = cell(report.table, 1, "failure");
+  EXPECT_NE(why.find("did not answer within"), std::string::npos) << why;
+  EXPECT_TRUE(worker_is_gone(starts));
 }
 
 TEST(StudyWorker, ACommandWithPlaceholdersOrNoneIsRefused) {

@@ -3,9 +3,13 @@
 #include <gtest/gtest.h>
 #include <json/reader.h>
 
+#include <chrono>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <sstream>
+#include <string>
+#include <thread>
 
 #include "run_cli.hpp"
 
@@ -121,6 +125,62 @@ TEST(StudyCli, SigtermKeepsTheFinishedRowsAndStopsTheSegmenter) {
   EXPECT_NE(csv.find("pattern_7"), std::string::npos);
   EXPECT_NE(std::system("pgrep -f 'sleep 312[5]' >/dev/null"), 0)
       << "the segmenter was left running";
+}
+
+// Every process whose id a misbehaving worker wrote to `pid_file` has ended
+// (a zombie left to init counts). Waits up to a minute; no test depends on
+// how long.
+bool workers_are_gone(const std::string& pid_file) {
+  std::istringstream pids(testing::read_text(pid_file));
+  std::string pid;
+  bool any = false;
+  while (pids >> pid) {
+    any = true;
+    const std::string stat = "/proc/" + pid + "/stat";
+    for (int i = 0;; ++i) {
+      std::ifstream file(stat);
+      std::string fields;
+      if (!std::getline(file, fields)) break;
+      const std::size_t state = fields.rfind(')') + 2;
+      if (state < fields.size() && (fields[state] == 'Z' || fields[state] == 'X')) break;
+      if (i == 600) return false;
+      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    }
+  }
+  return any;
+}
+
+// Issue 44, 2.6: while a worker flooded its stdout the study read on and never
+// looked at the cancel flag, so SIGTERM did not stop it.
+TEST(StudyCli, SigtermStopsAStudyWhoseWorkerFloodsItsStdout) {
+  const TempDir dir;
+  const std::string starts = dir.file("starts");
+  // The worker's first start floods its stdout (refused at the cap now); the
+  // second, for the next run, never answers (tests/support/study_segmenter.py).
+  // The signal comes once the flood has passed 32 MiB, or once the second
+  // start hangs: the study ends only by it.
+  const std::string study = "'" + std::string(OCCLUSION_CLI_PATH) + "' " + kConfig +
+                            " --pattern 4 --pattern 1 --num-rays-per-vp 300 --out '" +
+                            dir.file("study") + "' --segmenter \"worker: python3 '" +
+                            std::string(OCCLUSION_SOURCE_DIR) +
+                            "/tests/support/study_segmenter.py' serve truth '" + starts +
+                            "' flood_then_hang pattern_\" -q";
+  const std::string script =
+      study + " >'" + dir.file("out") + "' 2>'" + dir.file("err") +
+      "' & pid=$!; for i in $(seq 1 3000); do [ \"$(cat '" + starts +
+      ".pid' 2>/dev/null | wc -l)\" -ge 2 ] && break; [ \"$(tr -dc 0-9 2>/dev/null <'" + starts +
+      ".flooded')\" -ge 33554432 ] 2>/dev/null && break; sleep 0.1; done; "
+      // A study the signal did not stop is killed two minutes later (exit
+      // status 137), so that the test fails instead of hanging; the watchdog
+      // ends as soon as the study does.
+      "kill -TERM $pid; (for i in $(seq 1 1200); do kill -0 $pid 2>/dev/null || exit 0; "
+      "sleep 0.1; done; kill -KILL $pid) & wait $pid; echo $? >'" +
+      dir.file("status") + "'; wait";
+  dir.write("run.sh", script);
+  ASSERT_EQ(std::system(("sh '" + dir.file("run.sh") + "'").c_str()), 0);
+  EXPECT_EQ(testing::read_text(dir.file("status")), "143\n") << testing::read_text(dir.file("err"));
+  EXPECT_NE(testing::read_text(dir.file("err")).find("cancelled"), std::string::npos);
+  EXPECT_TRUE(workers_are_gone(starts + ".pid")) << "a worker was left running";
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <random>
 
@@ -57,6 +58,21 @@ TEST(ExactMatch, NoToleranceForNearlyEqualPoints) {
   const Points target{{1.0f, 2.0f, std::nextafter(3.0f, 4.0f)}};
   EXPECT_FALSE(match_exact_points(source, target).complete());
   EXPECT_TRUE(match_exact_points({}, {}).complete());
+}
+
+// Issue 44, 2.6: NaN compared as equal to every point, so a NaN point took
+// the place of a real one in the pairing.
+TEST(ExactMatch, APointWithANonFiniteCoordinatePairsWithNone) {
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const float inf = std::numeric_limits<float>::infinity();
+  const Points source{{nan, nan, nan}, {1, 1, 1}, {0, 0, 0}, {0, inf, 0}};
+  const Points target{{0, 0, 0}, {1, 1, 1}, {nan, 0, 0}};
+  const ExactMatch match = match_exact_points(source, target);
+  EXPECT_FALSE(match.complete());
+  EXPECT_EQ(match.source_of, (std::vector<std::size_t>{2, 1, ExactMatch::kNone}));
+  EXPECT_EQ(match.unmatched_targets, 1u);
+  EXPECT_EQ(match.first_unmatched_target, 2u);
+  EXPECT_EQ(match.unmatched_sources, 2u);
 }
 
 }  // namespace

@@ -10,7 +10,8 @@ cloud (.txt: x y z label, evaluation ids) or a bare label file (.labels: one
 evaluation id per line). Evaluation ids are table 3.1's.
 
 MODE: truth (the ground truth, points in reverse order), wall (evaluation id
-0 everywhere), drop_last, extra_point (the first point twice), moved_point
+0 everywhere), drop_last, extra_point (the first point twice), nan_point
+(the ground truth and one more point at (NaN, NaN, NaN)), moved_point
 (the first point 1 mm along x), binary_failure (binary bytes on stderr, exit
 5), and two that write a bare label file whatever OUTPUT's extension:
 labels_in_order (the ground truth) and off_by_one (the ground truth one line
@@ -22,9 +23,17 @@ is the same as a persistent worker (segmenter "worker: ..."): it appends a
 line to STARTS when it starts, then reads "INPUT<TAB>OUTPUT" lines on stdin,
 answers "ok" for each, and exits at the end of stdin. MISBEHAVIOUR, for an
 input path containing RUN_TEXT: die (exit 9 without answering), hang (no
-answer), or refuse (answers "cannot segment this").
+answer), refuse (answers "cannot segment this"), close_stdout (closes its
+stdout and sleeps for an hour), flood (writes "x" on stdout without end or
+line break, keeping the count of bytes written in STARTS.flooded), trickle
+(one "." on stdout every millisecond, without end or line break) or
+flood_then_hang (flood in the worker's first start, no answer in the next).
+The last four first append the worker's process id to STARTS.pid, so that a
+test can check that the study stopped it.
 """
 
+import math
+import os
 import struct
 import sys
 import time
@@ -107,8 +116,40 @@ def serve(mode, starts, misbehaviour=None, run_text=None):
             if misbehaviour == "refuse":
                 print("cannot segment this", flush=True)
                 continue
+            if misbehaviour in ("close_stdout", "flood", "trickle",
+                                "flood_then_hang"):
+                misbehave(misbehaviour, starts)
         segment(mode, input_path, output_path)
         print("ok", flush=True)
+
+
+def misbehave(misbehaviour, starts):
+    """Never returns: the study must end it."""
+    with open(starts, encoding="ascii") as f:
+        first_start = f.read().count("\n") == 1
+    with open(starts + ".pid", "a") as f:
+        f.write(f"{os.getpid()}\n")
+    sys.stdout.flush()
+    if misbehaviour == "flood_then_hang":
+        misbehaviour = "flood" if first_start else "hang"
+    if misbehaviour == "close_stdout":
+        os.close(1)
+        time.sleep(3600)
+    elif misbehaviour == "flood":
+        chunk = b"x" * 65536
+        written = 0
+        with open(starts + ".flooded", "w") as count:
+            while True:
+                written += os.write(1, chunk)
+                count.seek(0)
+                count.write(f"{written:20d}\n")
+                count.flush()
+    elif misbehaviour == "hang":
+        time.sleep(3600)
+    else:
+        while True:
+            os.write(1, b".")
+            time.sleep(0.001)
 
 
 def main():
@@ -146,6 +187,8 @@ def segment(mode, input_path, output_path):
         points = points[:-1]
     elif mode == "extra_point":
         points = points[:1] + points
+    elif mode == "nan_point":
+        points = points + [(math.nan, math.nan, math.nan, points[0][3])]
     elif mode == "moved_point":
         x, y, z, label = points[0]
         points[0] = (x + 0.001, y, z, label)

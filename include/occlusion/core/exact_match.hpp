@@ -5,7 +5,8 @@
 // verified to belong to points stored in another. No tolerance: the same point
 // read from the same text twice has the same float coordinates; anything else
 // is a different point. Duplicated points (real scans store many points twice)
-// pair in their order of appearance.
+// pair in their order of appearance; a point with a non-finite coordinate
+// pairs with none.
 
 #include <Eigen/Core>
 #include <cstddef>
