@@ -114,7 +114,8 @@ inline void check_point_model(const PointCloud& cloud,
   double radius = point_radius;
   if (surfels) {
     if (surfels->surfels.size() != cloud.size() ||
-        (reads_thickness && surfels->thickness.size() != cloud.size())) {
+        (reads_thickness && surfels->thickness.size() != cloud.size()) ||
+        (!surfels->noise.sigma.empty() && surfels->noise.sigma.size() != cloud.size())) {
       throw std::invalid_argument(analysis + ": " + std::to_string(surfels->surfels.size()) +
                                   " surfels for " + std::to_string(cloud.size()) + " points");
     }

@@ -38,6 +38,9 @@ constexpr float kSphereShare = 0.5f;
 constexpr double kRmsShare = 0.5;
 // How many times more neighbours a point whose neighbours lie on a line asks for.
 constexpr std::size_t kWideSearch = 4;
+// cos 85 degrees: a fitted plane closer than this to the line of sight of the
+// station that measured the point is not the surface (face_its_station).
+constexpr double kMinSightCosine = 0.0872;
 
 // About 20 progress steps per pass, but no block so small that the threads idle.
 std::size_t block_size(std::size_t count) {
@@ -380,6 +383,45 @@ Neighbourhood measure(const Eigen::Vector3f& own, const Distinct& distinct,
   return hood;
 }
 
+// The unit line of sight from the station that measured a point to it, or
+// zero where the cloud does not say which station that is.
+class LinesOfSight {
+ public:
+  explicit LinesOfSight(const PointCloud& cloud) : cloud_(cloud), stations_(scan_stations(cloud)) {}
+
+  Eigen::Vector3d of(std::size_t point, const Eigen::Vector3f& position) const {
+    const std::ptrdiff_t station = measuring_station(cloud_, stations_.size(), point);
+    if (station < 0) return Eigen::Vector3d::Zero();
+    const Eigen::Vector3d line =
+        position.cast<double>() - stations_[static_cast<std::size_t>(station)].frame.origin;
+    const double length = line.norm();
+    return length > 0.0 ? Eigen::Vector3d(line / length) : Eigen::Vector3d::Zero();
+  }
+
+ private:
+  const PointCloud& cloud_;
+  std::vector<Station> stations_;
+};
+
+// A scanner's range noise lies along its line of sight. Where a point's
+// nearest lie along one scan line (near the poles of a laser's sphere its
+// rows are far denser than its columns), that noise is their second
+// direction of spread, and the fitted plane holds the line of sight: a disc
+// edge-on to the station that measured it, which no scanner records (beyond
+// about 85 degrees of incidence no return comes back), and which hides its
+// neighbours from every other viewpoint. Such a point looks again, with
+// kWideSearch times as many neighbours; if its plane still holds the line of
+// sight, it faces its station.
+void face_its_station(Neighbourhood& hood, const Eigen::Vector3d& sight, bool widened) {
+  if (hood.normal.isZero() || sight.isZero()) return;
+  if (std::abs(sight.dot(hood.normal.cast<double>())) >= kMinSightCosine) return;
+  if (widened) {
+    hood.normal = sight.cast<float>();
+  } else {
+    hood.line = true;
+  }
+}
+
 }  // namespace
 
 double coverage_radius(double farthest_distance, std::size_t distinct_neighbours, double coverage) {
@@ -408,7 +450,7 @@ SurfelEstimate estimate_surfels(const PointCloud& cloud, const SurfelOptions& op
   // first touching 4 KiB pages one at a time cost a tenth of a 1M cloud's run.
   LargeVector<Eigen::Vector3f> normals(count);
   LargeVector<float> radii(count), variation(count), thickness(count);
-  LargeVector<std::uint8_t> duplicate(count), line(count);
+  LargeVector<std::uint8_t> duplicate(count), line(count), fitted(count);
   SurfelEstimate estimate;
   SurfelStats& stats = estimate.stats;
   {
@@ -442,6 +484,7 @@ SurfelEstimate estimate_surfels(const PointCloud& cloud, const SurfelOptions& op
     };
 
     const PixelGrid grid(cloud, order);
+    const LinesOfSight sight(cloud);
     // The point spacing's sample, answered from this search when it reaches
     // as far as the spacing asks (a point's k nearest hold its
     // kSpacingNeighbours nearest).
@@ -471,7 +514,10 @@ SurfelEstimate estimate_surfels(const PointCloud& cloud, const SurfelOptions& op
         window.offer_all(sorted.data(), window_ids.data(), window_ids.size(), s);
         if (window.count() >= kMinNeighbours) plane_points = &window;
       }
-      const Neighbourhood hood = measure(own, distinct, *plane_points, options);
+      Neighbourhood hood = measure(own, distinct, *plane_points, options);
+      if (plane_points == &distinct) {
+        face_its_station(hood, sight.of(order[s], own), /*widened=*/got > k);
+      }
       if (!spacing_answers.empty() && order[s] % stride == 0) {
         spacing_answers[order[s] / stride] = spacing_answer(sorted.data(), s, ids, got, same);
       }
@@ -493,6 +539,17 @@ SurfelEstimate estimate_surfels(const PointCloud& cloud, const SurfelOptions& op
     search_blocks("surfels (scan lines)", &lines,
                   std::min(kWideSearch * options.neighbours + 1, count), model_point);
     if (!spacing_answers.empty()) estimate.spacing = spacing_from(spacing_answers);
+    // A point its station measured but whose neighbours give no plane faces
+    // that station: a sphere would stand in front of its neighbours along
+    // their own rays by its radius, which the noise of a scanner's densest
+    // rows (near its poles) exceeds; a disc as wide as the sphere, facing the
+    // station, covers what the sphere covered from there and stands flat.
+    parallel_for(count, kGrain * 4, options.threads, [&](std::size_t first, std::size_t last) {
+      for (std::size_t s = first; s < last; ++s) {
+        fitted[s] = !normals[s].isZero();
+        if (!fitted[s]) normals[s] = sight.of(order[s], sorted[s]).cast<float>();
+      }
+    });
 
     // Positions stored more than k times have no distinct neighbour in
     // reach: they take the cloud's median radius.
@@ -551,6 +608,7 @@ SurfelEstimate estimate_surfels(const PointCloud& cloud, const SurfelOptions& op
     oriented_thickness.reserve(count);
     for (std::size_t s = 0; s < count; ++s) {
       stats.duplicates += duplicate[s];
+      stats.facing_station += !fitted[s] && !normals[s].isZero();
       if (!normals[s].isZero()) {
         oriented_variation.push_back(variation[s]);
         oriented_thickness.push_back(thickness[s]);
@@ -585,13 +643,21 @@ SurfelEstimate estimate_surfels(const PointCloud& cloud, const SurfelOptions& op
   // Back in the cloud's order.
   estimate.surfels.resize(count);
   if (options.keep_thickness) estimate.thickness.resize(count);
+  std::vector<std::uint8_t> measured(options.keep_thickness ? count : 0);
   parallel_for(count, kGrain * 4, options.threads, [&](std::size_t first, std::size_t last) {
     for (std::size_t s = first; s < last; ++s) {
       const std::size_t i = order[s];
       estimate.surfels[i] = make_surfel(cloud.positions[i], normals[s], radii[s], i);
-      if (options.keep_thickness) estimate.thickness[i] = thickness[s];
+      if (options.keep_thickness) {
+        estimate.thickness[i] = thickness[s];
+        measured[i] = fitted[s] && !normals[s].isZero();
+      }
     }
   });
+  release(fitted);
+  if (options.keep_thickness) {
+    estimate.noise = measure_surface_noise(cloud, estimate.surfels, estimate.thickness, measured);
+  }
   stats.seconds = seconds_since(start);
   progress("surfels", 1.0);
   return estimate;

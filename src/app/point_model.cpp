@@ -105,6 +105,7 @@ PointModel choose_point_model(const PointCloud& cloud, const PointSettings& sett
                                       settings.threads);
   const SurfelStats& stats = model.surfels->stats;
   report.surfels = stats;
+  report.noise = model.surfels->noise.stations;
   report.normal_neighbours = settings.normal_neighbours;
   if (report.radius.automatic) {
     report.disc_coverage = settings.disc_coverage;
@@ -145,6 +146,30 @@ Json::Value point_model_json(const PointModelReport& model) {
     json["radius_quantile_90"] = s.radius_quantile_90;
     json["surface_variation_median"] = s.surface_variation_median;
     json["thickness_median"] = s.thickness_median;
+    json["discs_facing_station"] = Json::UInt64(s.facing_station);
+  }
+  if (!model.noise.empty()) {
+    // Per station, per range bin: [range from, range to, points, sigma].
+    Json::Value noise(Json::objectValue);
+    noise["band_sigmas"] = kBandSigmas;
+    Json::Value stations(Json::arrayValue);
+    for (const StationNoise& station : model.noise) {
+      Json::Value entry(Json::objectValue);
+      entry["station"] = station.station.empty() ? Json::Value() : Json::Value(station.station);
+      Json::Value bins(Json::arrayValue);
+      for (const NoiseBin& bin : station.bins) {
+        Json::Value row(Json::arrayValue);
+        row.append(bin.range_lo);
+        row.append(bin.range_hi);
+        row.append(Json::UInt64(bin.points));
+        row.append(bin.sigma);
+        bins.append(row);
+      }
+      entry["bins"] = bins;
+      stations.append(entry);
+    }
+    noise["stations"] = stations;
+    json["surface_noise"] = noise;
   }
   json["open_surface_share"] =
       model.open_surface_share ? Json::Value(*model.open_surface_share) : Json::Value();

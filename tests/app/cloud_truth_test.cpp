@@ -142,11 +142,13 @@ TEST(CloudTruth, StationScanRecordingItsStationIsSeenFromItThroughItsWindow) {
   // furniture, what the mesh sees is kept and what a wall, the cabinet or the
   // board hides is dropped. The window takes away only directions the scanner
   // never looked in (a 5 degree cone above and below each viewpoint): the
-  // same scan without its station record hides no more and keeps about as
-  // much, from above and from low among the furniture (where this scan's
-  // sparse columns let through half of what the mesh hides, window or not).
+  // same scan without its grid (so without a window, but with its station,
+  // which the point model reads too) hides no more and keeps about as much,
+  // from above and from low among the furniture (where this scan's sparse
+  // columns let through half of what the mesh hides, window or not).
   SampledCloud unrecorded = scan;
-  unrecorded.cloud.stations.clear();
+  unrecorded.cloud.stations.front().frame.width = 0;
+  unrecorded.cloud.stations.front().frame.height = 0;
   for (const Eigen::Vector3d& viewpoint : {kHigh, kLow}) {
     const Agreement with = scan_against_mesh(mesh, scan, viewpoint, "disc");
     const Agreement without = scan_against_mesh(mesh, unrecorded, viewpoint, "disc");

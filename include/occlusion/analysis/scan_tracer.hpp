@@ -10,19 +10,20 @@
 #include <optional>
 
 #include "occlusion/analysis/scan.hpp"
+#include "occlusion/core/banded_surfel_octree.hpp"
 #include "occlusion/core/octree.hpp"
 #include "occlusion/core/point_cloud.hpp"
 #include "occlusion/core/progress.hpp"
 #include "occlusion/core/ray.hpp"
 #include "occlusion/core/sphere_octree.hpp"
-#include "occlusion/core/surfel_octree.hpp"
 
 namespace occlusion {
 
 class ScanTracer {
  public:
-  // Builds the octree of options.surfels (discs) or of the cloud's points as
-  // spheres of options.point_radius. `cloud` and `options` (and the surfels
+  // Builds the octree of options.surfels (discs, each banded by
+  // kBandSigmas (surface_noise.hpp) times its surface's measured noise) or of
+  // the cloud's points as spheres of options.point_radius. `cloud` and `options` (and the surfels
   // they point to) must outlive the tracer; the caller has checked them
   // (scan_cloud's rules). Reports stage "building octree"; throws Cancelled
   // on cancel.
@@ -76,7 +77,7 @@ class ScanTracer {
   const PointCloud& cloud_;
   const ScanOptions& options_;
   double near_viewpoint_ = 0.0;
-  std::optional<SurfelOctree> discs_;
+  std::optional<BandedSurfelOctree> discs_;
   std::optional<SphereOctree> spheres_;
 };
 

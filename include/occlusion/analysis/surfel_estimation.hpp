@@ -51,6 +51,7 @@
 #include <vector>
 
 #include "occlusion/analysis/point_spacing.hpp"
+#include "occlusion/analysis/surface_noise.hpp"
 #include "occlusion/core/large_buffer.hpp"
 #include "occlusion/core/point_cloud.hpp"
 #include "occlusion/core/progress.hpp"
@@ -85,6 +86,7 @@ struct SurfelStats {
   std::size_t oriented = 0;         // discs
   std::size_t unoriented = 0;       // spheres: no trusted plane
   std::size_t stray = 0;            // spheres of their neighbours' radius (counted in unoriented)
+  std::size_t facing_station = 0;   // discs with no plane of their own, facing their station
   std::size_t duplicates = 0;       // points with a neighbour at their own position
   double radius_quantile_10 = 0.0;  // of every point's radius
   double radius_median = 0.0;
@@ -97,6 +99,7 @@ struct SurfelStats {
 struct SurfelEstimate {
   LargeVector<Surfel> surfels;   // one per point, in the cloud's order
   std::vector<float> thickness;  // per point (0 for spheres); empty unless keep_thickness
+  SurfaceNoise noise;            // measured when keep_thickness (surface_noise.hpp)
   SurfelStats stats;
   // The cloud's point spacing (point_spacing.hpp), the same as
   // measure_point_spacing's, from this search: set when it asks for at least

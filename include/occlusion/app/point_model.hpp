@@ -6,6 +6,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "occlusion/analysis/point_spacing.hpp"
 #include "occlusion/analysis/surfel_estimation.hpp"
@@ -19,6 +20,7 @@ struct PointModelReport {
   // measured either way.
   PointRadius radius;
   std::optional<SurfelStats> surfels;  // discs
+  std::vector<StationNoise> noise;     // discs, where the job reads it (surface_noise.hpp)
   double disc_coverage = 0.0;          // discs with point_radius auto
   unsigned normal_neighbours = 0;      // discs
   // -poc with discs: the share of a cloud's surfaces its discs leave open

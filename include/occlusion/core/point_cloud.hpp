@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -119,5 +120,14 @@ struct PointCloud {
 // VIEWPOINT, an organised PCD) its sensor as one station named "sensor".
 // Empty when the cloud records neither.
 std::vector<Station> scan_stations(const PointCloud& cloud);
+
+// The station (an index into scan_stations(cloud), `station_count` of them)
+// that measured point `point`; -1 when the cloud does not say: no station, or
+// several and no station ids.
+inline std::ptrdiff_t measuring_station(const PointCloud& cloud, std::size_t station_count,
+                                        std::size_t point) {
+  if (cloud.has_station_ids()) return cloud.station_ids[point];
+  return station_count == 1 ? 0 : -1;
+}
 
 }  // namespace occlusion

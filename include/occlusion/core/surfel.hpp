@@ -46,16 +46,16 @@ struct Surfel {
 // Rays closer to parallel than this (|d.n| / |d|, n unit) miss a disc.
 inline constexpr float kDiscParallel = 1e-7f;
 
-// The surfel octree's leaf test, for one ray (Num = float) or a packet
-// (ray_lanes.hpp): `active` says which rays to test; returns those that hit,
-// with their hit parameter in `t_hit` (unspecified for the others).
+// The disc test shared by surfels and banded surfels (banded_surfel.hpp):
+// with `band` >= 0 a crossing also needs the ray's end (t = 1) to lie more
+// than `band` from the disc's plane; a negative band asks nothing more.
 //
 // The crossing is measured from the disc's centre (t d - (c - o)), so the
 // in-radius test subtracts quantities of the ray's length, never squares of
 // far coordinates.
 template <class Num, class Mask>
-inline Mask surfel_hit(const RayComponents<Num>& ray, const Surfel& surfel, Mask active,
-                       Num& t_hit) {
+inline Mask disc_hit(const RayComponents<Num>& ray, const Surfel& surfel, float band, Mask active,
+                     Num& t_hit) {
   using lane_math::abs, lane_math::dot3;
   if (!(surfel.radius > 0.0f)) return active & false;
   if (!surfel.oriented()) {
@@ -72,6 +72,8 @@ inline Mask surfel_hit(const RayComponents<Num>& ray, const Surfel& surfel, Mask
   const Num height = dot3(normal_x, normal_y, normal_z, to_center_x, to_center_y, to_center_z);
   const Num t = height / facing;
   active = active & (t >= ray.t_min) & (t <= ray.t_max);
+  // n . (o + d - c): the ray's end off the plane.
+  if (band >= 0.0f) active = active & (abs(facing - height) > Num(band));
   if (!active) return active;
   const Num from_center_x = t * ray.direction_x - to_center_x;
   const Num from_center_y = t * ray.direction_y - to_center_y;
@@ -80,6 +82,15 @@ inline Mask surfel_hit(const RayComponents<Num>& ray, const Surfel& surfel, Mask
                           from_center_z) <= Num(surfel.radius * surfel.radius));
   t_hit = t;
   return active;
+}
+
+// The surfel octree's leaf test, for one ray (Num = float) or a packet
+// (ray_lanes.hpp): `active` says which rays to test; returns those that hit,
+// with their hit parameter in `t_hit` (unspecified for the others).
+template <class Num, class Mask>
+inline Mask surfel_hit(const RayComponents<Num>& ray, const Surfel& surfel, Mask active,
+                       Num& t_hit) {
+  return disc_hit(ray, surfel, -1.0f, active, t_hit);
 }
 
 inline std::optional<float> intersect_surfel(const RayComponents<float>& ray,

@@ -1,0 +1,166 @@
+#include "occlusion/analysis/surface_noise.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "quantiles.hpp"
+
+namespace occlusion {
+
+namespace {
+
+// E|N(0, 1) (x - 2 y + z)| at its median: 0.6745 sqrt(6).
+constexpr double kSecondDifferenceMedian = 0.6745 * 2.449489742783178;
+
+struct Binning {
+  std::vector<Eigen::Vector3d> origins;  // per station
+  std::vector<double> nearest;           // per station: its nearest point's range
+  std::vector<std::size_t> bin_count;    // per station
+  std::vector<std::size_t> first_bin;    // per station: its bins' offset in one flat array
+  std::vector<std::ptrdiff_t> station;   // per point, or -1 for the cloud's one bin
+};
+
+std::size_t bin_index(const Binning& binning, std::size_t point, const PointCloud& cloud) {
+  const std::ptrdiff_t s = binning.station[point];
+  if (s < 0) return binning.first_bin.back();
+  const auto st = static_cast<std::size_t>(s);
+  const double range = (cloud.positions[point].cast<double>() - binning.origins[st]).norm();
+  const double steps = std::log(std::max(range, binning.nearest[st]) / binning.nearest[st]) /
+                       std::log(kNoiseBinRatio);
+  const auto bin =
+      std::min(static_cast<std::size_t>(std::max(0.0, steps)), binning.bin_count[st] - 1);
+  return binning.first_bin[st] + bin;
+}
+
+// Per station, its nearest and farthest points' ranges make its bins; the
+// last entry of first_bin is the one bin of points no station claims.
+Binning make_binning(const PointCloud& cloud, const std::vector<Station>& stations) {
+  Binning binning;
+  binning.station.resize(cloud.size());
+  const std::size_t count = stations.size();
+  binning.nearest.assign(count, std::numeric_limits<double>::infinity());
+  std::vector<double> farthest(count, 0.0);
+  for (const Station& station : stations) binning.origins.push_back(station.frame.origin);
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    const std::ptrdiff_t s = measuring_station(cloud, count, i);
+    binning.station[i] = s;
+    if (s < 0) continue;
+    const double range =
+        (cloud.positions[i].cast<double>() - binning.origins[static_cast<std::size_t>(s)]).norm();
+    if (!(range > 0.0)) continue;
+    binning.nearest[static_cast<std::size_t>(s)] =
+        std::min(binning.nearest[static_cast<std::size_t>(s)], range);
+    farthest[static_cast<std::size_t>(s)] = std::max(farthest[static_cast<std::size_t>(s)], range);
+  }
+  std::size_t offset = 0;
+  for (std::size_t s = 0; s < count; ++s) {
+    if (!std::isfinite(binning.nearest[s])) binning.nearest[s] = 1.0;  // no point of its own
+    const double span = std::max(farthest[s], binning.nearest[s]) / binning.nearest[s];
+    const auto bins =
+        static_cast<std::size_t>(std::floor(std::log(span) / std::log(kNoiseBinRatio))) + 1;
+    binning.bin_count.push_back(bins);
+    binning.first_bin.push_back(offset);
+    offset += bins;
+  }
+  binning.first_bin.push_back(offset);
+  return binning;
+}
+
+// Along an organised frame's rows: per measured point with both row
+// neighbours, |d(c-1) - 2 d(c) + d(c+1)| of the depths from the sensor.
+void add_grid_differences(const PointCloud& cloud, const std::vector<std::uint8_t>& measured,
+                          const std::vector<std::size_t>& bin_of,
+                          std::vector<std::vector<float>>& differences) {
+  if (!cloud.has_pixels()) return;
+  const std::size_t width = cloud.sensor.width;
+  std::vector<float> depth(width * cloud.sensor.height, std::numeric_limits<float>::quiet_NaN());
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    depth[cloud.pixels[i]] =
+        static_cast<float>((cloud.positions[i].cast<double>() - cloud.sensor.origin).norm());
+  }
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    if (!measured[i]) continue;
+    const std::size_t pixel = cloud.pixels[i], column = pixel % width;
+    if (column == 0 || column + 1 >= width) continue;
+    const float before = depth[pixel - 1], after = depth[pixel + 1];
+    if (std::isnan(before) || std::isnan(after)) continue;
+    differences[bin_of[i]].push_back(std::abs(before - 2.0f * depth[pixel] + after));
+  }
+}
+
+}  // namespace
+
+SurfaceNoise measure_surface_noise(const PointCloud& cloud, const LargeVector<Surfel>& surfels,
+                                   const std::vector<float>& thickness,
+                                   const std::vector<std::uint8_t>& measured) {
+  const std::vector<Station> stations = scan_stations(cloud);
+  const Binning binning = make_binning(cloud, stations);
+  const std::size_t bins = binning.first_bin.back() + 1;
+  std::vector<std::vector<float>> thicknesses(bins), differences(bins);
+  std::vector<std::size_t> bin_of(cloud.size());
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    bin_of[i] = bin_index(binning, i, cloud);
+    if (measured[i]) thicknesses[bin_of[i]].push_back(thickness[i]);
+  }
+  add_grid_differences(cloud, measured, bin_of, differences);
+
+  std::vector<std::size_t> points(bins);
+  std::vector<double> sigma(bins, -1.0);
+  for (std::size_t b = 0; b < bins; ++b) {
+    points[b] = thicknesses[b].size();
+    if (points[b] < kMinBinPoints) continue;
+    sigma[b] = quantiles::at(thicknesses[b], 0.5);
+    if (differences[b].size() >= kMinBinPoints) {
+      sigma[b] = std::max(sigma[b], quantiles::at(differences[b], 0.5) / kSecondDifferenceMedian);
+    }
+  }
+  // The cloud's median thickness, for a station without a filled bin.
+  std::vector<float> all;
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    if (measured[i]) all.push_back(thickness[i]);
+  }
+  const double overall = quantiles::at(all, 0.5);
+
+  SurfaceNoise noise;
+  for (std::size_t s = 0; s <= stations.size(); ++s) {
+    const std::size_t first = binning.first_bin[s];
+    const std::size_t count = s < stations.size() ? binning.bin_count[s] : 1;
+    // Empty bins take their nearest filled one's sigma (the nearer one first).
+    std::vector<double> filled(count, overall);
+    for (std::size_t b = 0; b < count; ++b) {
+      for (std::size_t step = 0; step < count; ++step) {
+        if (b >= step && sigma[first + b - step] >= 0.0) {
+          filled[b] = sigma[first + b - step];
+          break;
+        }
+        if (b + step < count && sigma[first + b + step] >= 0.0) {
+          filled[b] = sigma[first + b + step];
+          break;
+        }
+      }
+    }
+    for (std::size_t b = 0; b < count; ++b) sigma[first + b] = filled[b];
+    StationNoise station;
+    station.station = s < stations.size() ? stations[s].name : "";
+    for (std::size_t b = 0; b < count; ++b) {
+      if (points[first + b] == 0) continue;
+      NoiseBin bin;
+      if (s < stations.size()) {
+        bin.range_lo = binning.nearest[s] * std::pow(kNoiseBinRatio, static_cast<double>(b));
+        bin.range_hi = bin.range_lo * kNoiseBinRatio;
+      }
+      bin.points = points[first + b];
+      bin.sigma = sigma[first + b];
+      station.bins.push_back(bin);
+    }
+    if (!station.bins.empty()) noise.stations.push_back(std::move(station));
+  }
+  noise.sigma.resize(cloud.size());
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    noise.sigma[i] = surfels[i].oriented() ? static_cast<float>(sigma[bin_of[i]]) : 0.0f;
+  }
+  return noise;
+}
+
+}  // namespace occlusion
