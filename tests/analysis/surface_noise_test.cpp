@@ -1,0 +1,113 @@
+// The surface noise model against noise of a known sigma: a floor scanned
+// from a station above it, with Gaussian range noise drawn here.
+
+#include "occlusion/analysis/surface_noise.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "occlusion/analysis/surfel_estimation.hpp"
+#include "occlusion/core/random.hpp"
+
+namespace occlusion {
+namespace {
+
+double gaussian(Rng& rng) {
+  const double u = std::max(rng.uniform(), 1e-300), v = rng.uniform();
+  return std::sqrt(-2.0 * std::log(u)) * std::cos(2.0 * M_PI * v);
+}
+
+// A 4 x 4 m floor at z = 0 on a 1 cm grid, each point moved along its line of
+// sight from (2, 2, 1.5) by N(0, sigma) (a laser's range noise).
+PointCloud noisy_floor(double sigma, std::uint64_t seed) {
+  PointCloud cloud;
+  Station station{"s", {}};
+  station.frame.origin = Eigen::Vector3d(2.0, 2.0, 1.5);
+  cloud.stations = {station};
+  Rng rng(seed);
+  for (int i = 0; i < 400; ++i) {
+    for (int j = 0; j < 400; ++j) {
+      const Eigen::Vector3d p(0.01 * i, 0.01 * j, 0.0);
+      const Eigen::Vector3d sight = (p - station.frame.origin).normalized();
+      cloud.positions.push_back((p + sigma * gaussian(rng) * sight).cast<float>());
+    }
+  }
+  return cloud;
+}
+
+SurfaceNoise noise_of(const PointCloud& cloud) {
+  return estimate_surfels(cloud, SurfelOptions{}).noise;
+}
+
+TEST(SurfaceNoise, ReadsTheSigmaOfItsStationsRangeNoise) {
+  for (const double sigma : {0.001, 0.003}) {
+    SCOPED_TRACE(sigma);
+    const SurfaceNoise noise = noise_of(noisy_floor(sigma, 3));
+    ASSERT_EQ(noise.stations.size(), 1u);
+    EXPECT_EQ(noise.stations[0].station, "s");
+    // Ranges 1.5 m (below the station) to 3.2 m (the corners): four bins of
+    // 1.25 each, every one within the noise it measures (the lower quartile
+    // reads about 0.8 sigma; kBandSigmas allows for it).
+    EXPECT_GE(noise.stations[0].bins.size(), 3u);
+    for (const NoiseBin& bin : noise.stations[0].bins) {
+      EXPECT_NEAR(bin.range_hi / bin.range_lo, kNoiseBinRatio, 1e-9);
+      EXPECT_GE(bin.sigma, 0.5 * sigma) << bin.range_lo;
+      EXPECT_LE(bin.sigma, 1.3 * sigma) << bin.range_lo;
+    }
+    ASSERT_EQ(noise.sigma.size(), 160000u);
+  }
+}
+
+TEST(SurfaceNoise, AFloorWithoutNoiseHasNone) {
+  const SurfaceNoise noise = noise_of(noisy_floor(0.0, 3));
+  for (const NoiseBin& bin : noise.stations.at(0).bins) EXPECT_LT(bin.sigma, 1e-5);
+}
+
+TEST(SurfaceNoise, ACloudNoStationClaimsIsOneBin) {
+  PointCloud cloud = noisy_floor(0.002, 5);
+  cloud.stations.clear();
+  const SurfaceNoise noise = noise_of(cloud);
+  ASSERT_EQ(noise.stations.size(), 1u);
+  EXPECT_EQ(noise.stations[0].station, "");
+  ASSERT_EQ(noise.stations[0].bins.size(), 1u);
+  EXPECT_NEAR(noise.stations[0].bins[0].sigma, 0.002, 0.001);
+}
+
+TEST(SurfaceNoise, AnOrganisedFramesStepsCountAsItsNoise) {
+  // A wall 3 m in front of a camera (+z forward), 200 x 150 pixels, its depths
+  // with N(0, 5 mm) noise then quantised to steps of 2 cm, as a depth camera's
+  // disparity does: the depths along the rows (and the planes) show both.
+  PointCloud cloud;
+  cloud.sensor.width = 200;
+  cloud.sensor.height = 150;
+  const double f = 150.0, step = 0.02, sigma = 0.005;
+  Rng rng(8);
+  for (std::uint32_t r = 0; r < 150; ++r) {
+    for (std::uint32_t c = 0; c < 200; ++c) {
+      const double x = (c - 99.5) / f, y = (r - 74.5) / f;
+      const double depth = 3.0 + 0.5 * x + sigma * gaussian(rng);
+      const double stepped = step * std::round(depth / step);
+      cloud.positions.emplace_back(static_cast<float>(x * stepped), static_cast<float>(y * stepped),
+                                   static_cast<float>(stepped));
+      cloud.pixels.push_back(r * 200 + c);
+    }
+  }
+  const SurfelEstimate estimate = estimate_surfels(cloud, SurfelOptions{});
+  ASSERT_EQ(estimate.noise.stations.size(), 1u);
+  EXPECT_EQ(estimate.noise.stations[0].station, "sensor");
+  std::size_t bins = 0;
+  for (const NoiseBin& bin : estimate.noise.stations[0].bins) {
+    if (bin.points < kMinBinPoints) continue;
+    ++bins;
+    // The error of a depth is the noise and the rounding together, sigma
+    // sqrt(5^2 + 20^2 / 12) = 7.7 mm (read: 12 to 14 mm, the steps' jumps
+    // weigh more than a Gaussian's tail).
+    EXPECT_GT(bin.sigma, 0.005) << bin.range_lo;
+    EXPECT_LT(bin.sigma, 0.02) << bin.range_lo;
+  }
+  EXPECT_GE(bins, 1u);
+}
+
+}  // namespace
+}  // namespace occlusion
