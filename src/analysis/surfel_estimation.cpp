@@ -41,6 +41,8 @@ constexpr std::size_t kWideSearch = 4;
 // cos 85 degrees: a fitted plane closer than this to the line of sight of the
 // station that measured the point is not the surface (face_its_station).
 constexpr double kMinSightCosine = 0.0872;
+// lambda1 / lambda2 below which a neighbourhood lies along one line.
+constexpr float kLineSpread = 0.25f;
 
 // About 20 progress steps per pass, but no block so small that the threads idle.
 std::size_t block_size(std::size_t count) {
@@ -87,7 +89,8 @@ struct Neighbourhood {
   float thickness = 0.0f;
   float surface_variation = 0.0f;
   bool duplicate = false;
-  bool line = false;  // the neighbours lie along one line: no plane among them
+  bool line = false;    // the neighbours lie along one line: no plane among them
+  float spread = 0.0f;  // lambda1 / lambda2: across the neighbourhood's longest spread
 };
 
 // The distinct positions among a point's nearest (nearest first, the point
@@ -226,6 +229,7 @@ struct PlaneFit {
   Eigen::Vector3d major = Eigen::Vector3d::UnitX();  // in-plane axis of the largest spread
   double variation = 1.0;                            // lambda0 / (lambda0 + lambda1 + lambda2)
   double rms = 0.0;     // the points' RMS distance from the plane, sqrt(lambda0)
+  double across = 0.0;  // lambda1 / lambda2
   bool spread = false;  // the points span two directions (not a line)
 };
 
@@ -265,6 +269,7 @@ PlaneFit fit_plane(const Eigen::Vector3f& own, const Distinct& distinct, std::si
   fit.variation = lambda[0] / total;
   fit.rms = std::sqrt(lambda[0]);
   fit.spread = lambda[1] >= kMinSpread * lambda[2];
+  fit.across = lambda[2] > 0.0 ? lambda[1] / lambda[2] : 0.0;
   return fit;
 }
 
@@ -366,6 +371,7 @@ Neighbourhood measure(const Eigen::Vector3f& own, const Distinct& distinct,
     if (nearest.spread && nearest.variation < fit.variation) fit = nearest;
   }
   hood.surface_variation = static_cast<float>(fit.variation);
+  hood.spread = static_cast<float>(fit.across);
   hood.line = !fit.spread;
   if (fit.spread && fit.variation <= options.max_surface_variation) {
     hood.normal = fit.normal.cast<float>();
@@ -411,14 +417,17 @@ class LinesOfSight {
 // about 85 degrees of incidence no return comes back), and which hides its
 // neighbours from every other viewpoint. Such a point looks again, with
 // kWideSearch times as many neighbours; if its plane still holds the line of
-// sight, it faces its station.
+// sight and its neighbours still lie along a line (their spread across is
+// below kLineSpread of their spread along), it faces its station. A surface
+// truly edge-on to the station (a merged model's, which the station did not
+// record) spreads both ways and keeps its plane.
 void face_its_station(Neighbourhood& hood, const Eigen::Vector3d& sight, bool widened) {
   if (hood.normal.isZero() || sight.isZero()) return;
   if (std::abs(sight.dot(hood.normal.cast<double>())) >= kMinSightCosine) return;
-  if (widened) {
-    hood.normal = sight.cast<float>();
-  } else {
+  if (!widened) {
     hood.line = true;
+  } else if (hood.spread < kLineSpread) {
+    hood.normal = sight.cast<float>();
   }
 }
 
