@@ -38,11 +38,37 @@ export function pointModelText(report: JobReport): { text: string; detail: strin
   }
   if (num(m.stray_points) !== undefined)
     detail.push(`stray points: ${integer(num(m.stray_points))}`);
+  const noise = noiseText(m.surface_noise);
+  if (noise) detail.push(noise);
   const open = num(m.open_surface_share);
   if (open !== undefined) detail.push(`open surface: ${percent(open, 2)}`);
   const surfels = num(report.timings?.surfel_seconds);
   if (surfels !== undefined) detail.push(`discs estimated in ${ms(surfels * 1000)}`);
   return { text, detail: detail.join("; ") };
+}
+
+/**
+ * The measured surface noise (the report's point_model.surface_noise: per
+ * station, bins of [range from, range to, points, sigma]) as its range of
+ * sigmas and the band the discs take from it.
+ */
+function noiseText(value: unknown): string | null {
+  if (typeof value !== "object" || value === null) return null;
+  const noise = value as { band_sigmas?: unknown; stations?: unknown };
+  if (!Array.isArray(noise.stations)) return null;
+  const sigmas: number[] = [];
+  for (const station of noise.stations as { bins?: unknown }[]) {
+    if (!Array.isArray(station?.bins)) continue;
+    for (const bin of station.bins as unknown[]) {
+      const sigma = Array.isArray(bin) ? num(bin[3]) : undefined;
+      if (sigma !== undefined) sigmas.push(sigma);
+    }
+  }
+  if (sigmas.length === 0) return null;
+  const low = Math.min(...sigmas);
+  const high = Math.max(...sigmas);
+  const range = low === high ? short(low) : `${short(low)}–${short(high)}`;
+  return `surface noise σ ${range}, band ${short(num(noise.band_sigmas))} σ`;
 }
 
 function pointModelLine(report: JobReport): HTMLElement | null {

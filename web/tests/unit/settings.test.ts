@@ -168,6 +168,18 @@ const DISC_REPORT = {
     radius_median: 0.0213,
     radius_quantile_90: 0.0342,
     open_surface_share: 0.0087,
+    surface_noise: {
+      band_sigmas: 8,
+      stations: [
+        {
+          station: "s1",
+          bins: [
+            [1.5, 1.875, 5000, 0.0021],
+            [1.875, 2.34, 4000, 0.0034],
+          ],
+        },
+      ],
+    },
   },
   timings: { total_seconds: 1.2, surfel_seconds: 0.25 },
 };
@@ -179,6 +191,7 @@ describe("the report's point model", () => {
     expect(model?.detail).toContain("radius 10–90 %: 0.0151–0.0342");
     expect(model?.detail).toContain("stray points: 12");
     expect(model?.detail).toContain("open surface: 0.87%");
+    expect(model?.detail).toContain("surface noise σ 0.0021–0.0034, band 8 σ");
     expect(model?.detail).toContain("250 ms");
   });
 
