@@ -70,7 +70,7 @@ Binning make_binning(const PointCloud& cloud, const std::vector<Station>& statio
 // Along an organised frame's rows: per measured point with both row
 // neighbours, |d(c-1) - 2 d(c) + d(c+1)| of the depths from the sensor.
 void add_grid_differences(const PointCloud& cloud, const std::vector<std::uint8_t>& measured,
-                          const std::vector<std::size_t>& bin_of,
+                          const std::vector<std::uint32_t>& bin_of,
                           std::vector<std::vector<float>>& differences) {
   if (!cloud.has_pixels()) return;
   const std::size_t width = cloud.sensor.width;
@@ -98,9 +98,9 @@ SurfaceNoise measure_surface_noise(const PointCloud& cloud, const LargeVector<Su
   const Binning binning = make_binning(cloud, stations);
   const std::size_t bins = binning.first_bin.back() + 1;
   std::vector<std::vector<float>> thicknesses(bins), differences(bins);
-  std::vector<std::size_t> bin_of(cloud.size());
+  std::vector<std::uint32_t> bin_of(cloud.size());
   for (std::size_t i = 0; i < cloud.size(); ++i) {
-    bin_of[i] = bin_index(binning, i, cloud);
+    bin_of[i] = static_cast<std::uint32_t>(bin_index(binning, i, cloud));
     if (measured[i]) thicknesses[bin_of[i]].push_back(thickness[i]);
   }
   add_grid_differences(cloud, measured, bin_of, differences);
