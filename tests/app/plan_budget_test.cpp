@@ -16,18 +16,11 @@
 #include "occlusion/app/memory_budget.hpp"
 #include "occlusion/app/plan_job.hpp"
 #include "occlusion/app/work_budget.hpp"
+#include "support/plan_request.hpp"
 #include "support/plan_scenes.hpp"
 
 namespace occlusion {
 namespace {
-
-PlanRequest mesh_request() {
-  PlanRequest request;
-  request.path = "<scene>";
-  request.samples_per_unit_area = 20.0;
-  request.seed = 3;
-  return request;
-}
 
 // The stages a plan reported before it ended.
 struct Stages {
@@ -52,7 +45,7 @@ void expect_only_plan_keys(const std::string& message) {
 }
 
 TEST(PlanBudget, WorkBeyondTheBudgetIsRefusedBeforeAnySampleIsDrawn) {
-  PlanRequest request = mesh_request();
+  PlanRequest request = testing::plan_mesh_request();
   request.samples_per_unit_area = 2000.0;
   request.max_work = 1e-3;  // a million ray steps
   Stages stages;
@@ -75,7 +68,7 @@ TEST(PlanBudget, WorkBeyondTheBudgetIsRefusedBeforeAnySampleIsDrawn) {
 // drawn, then refused by the matrix's check).
 TEST(PlanBudget, MemoryBeyondTheBudgetIsRefusedBeforeAnySampleIsDrawn) {
   const TriangleMesh mesh = testing::two_rooms();
-  PlanRequest request = mesh_request();
+  PlanRequest request = testing::plan_mesh_request();
   request.samples_per_unit_area = 200.0;
   const std::uint64_t samples = total_samples(mesh, request.samples_per_unit_area);
   const std::uint64_t samples_alone = mesh_occlusion_memory(mesh, 200.0, 1).bytes;
@@ -130,7 +123,7 @@ TEST(PlanBudget, ACloudsPlanBeyondTheBudgetIsRefusedBeforeItsPointModel) {
 // is filtered (100,000 positions took 30 s, then were refused for their
 // coverage's work).
 TEST(PlanBudget, AFilterBeyondTheBudgetIsRefusedBeforeItRuns) {
-  PlanRequest request = mesh_request();
+  PlanRequest request = testing::plan_mesh_request();
   request.spacing = 0.05;  // 20,301 positions
   request.max_work = 0.01;
   Stages stages;
@@ -166,7 +159,7 @@ TEST(PlanBudget, ACandidatesFileBeyondTheCapIsRefusedWithoutReadingItWhole) {
   testing::ScratchDirectory dir;
   const std::string file = dir.file("many.txt");
   write_positions(file, kMaxCandidates + 1, "not a position\n");
-  PlanRequest request = mesh_request();
+  PlanRequest request = testing::plan_mesh_request();
   request.candidates_path = file;
   request.max_work = 1e-3;  // refused for its work had it been read
   Stages stages;

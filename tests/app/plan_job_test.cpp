@@ -16,18 +16,11 @@
 #include "occlusion/io/csv_file.hpp"
 #include "occlusion/io/ply_mesh_writer.hpp"
 #include "support/mesh_truth.hpp"
+#include "support/plan_request.hpp"
 #include "support/plan_scenes.hpp"
 
 namespace occlusion {
 namespace {
-
-PlanRequest mesh_request() {
-  PlanRequest request;
-  request.path = "<scene>";
-  request.samples_per_unit_area = 20.0;
-  request.seed = 3;
-  return request;
-}
 
 std::vector<Eigen::Vector3d> new_positions(const PlanReport& report) {
   std::vector<Eigen::Vector3d> out;
@@ -38,7 +31,7 @@ std::vector<Eigen::Vector3d> new_positions(const PlanReport& report) {
 }
 
 TEST(PlanJob, TwoRoomsNeedExactlyTwoStationsOneInEachForNinetyNinePercent) {
-  const PlanReport report = plan_mesh(testing::two_rooms(), mesh_request());
+  const PlanReport report = plan_mesh(testing::two_rooms(), testing::plan_mesh_request());
   const auto stations = new_positions(report);
   ASSERT_EQ(stations.size(), 2u) << report.selection.guarantee;
   EXPECT_TRUE(report.selection.target_reached);
@@ -51,7 +44,7 @@ TEST(PlanJob, TwoRoomsNeedExactlyTwoStationsOneInEachForNinetyNinePercent) {
 }
 
 TEST(PlanJob, TheBestSingleStationOfTwoRoomsStandsInTheLargerOne) {
-  PlanRequest request = mesh_request();
+  PlanRequest request = testing::plan_mesh_request();
   request.stations = 1;
   request.target_coverage = 0.0;
   const PlanReport report = plan_mesh(testing::two_rooms(), request);
@@ -80,7 +73,7 @@ TEST(PlanJob, TheCoverageMatrixCountsInTheMemoryBudget) {
   EXPECT_NE(plan.made_of.find("3 candidates x 100 targets"), std::string::npos) << plan.made_of;
   // A fine grid over a large room: refused before the matrix is filled,
   // naming it and what to lower.
-  PlanRequest request = mesh_request();
+  PlanRequest request = testing::plan_mesh_request();
   request.samples_per_unit_area = 2000.0;
   request.spacing = 0.05;
   request.max_memory_mb = 64;
@@ -94,7 +87,7 @@ TEST(PlanJob, TheCoverageMatrixCountsInTheMemoryBudget) {
 }
 
 TEST(PlanJob, APillarRoomNeedsTwoStationsOnOppositeSides) {
-  const PlanReport report = plan_mesh(testing::pillar_room(), mesh_request());
+  const PlanReport report = plan_mesh(testing::pillar_room(), testing::plan_mesh_request());
   const auto stations = new_positions(report);
   ASSERT_EQ(stations.size(), 2u) << report.selection.guarantee;
   EXPECT_GE(report.selection.coverage, 0.99);
@@ -107,14 +100,14 @@ TEST(PlanJob, APillarRoomNeedsTwoStationsOnOppositeSides) {
 }
 
 TEST(PlanJob, AnEmptyRoomIsCoveredByOneStationAnywhereInside) {
-  const PlanReport report = plan_mesh(testing::empty_room(), mesh_request());
+  const PlanReport report = plan_mesh(testing::empty_room(), testing::plan_mesh_request());
   EXPECT_EQ(new_positions(report).size(), 1u);
   EXPECT_GT(report.candidates.positions.size(), 20u);
   for (double alone : report.selection.coverage_alone) EXPECT_GE(alone, 0.999);
 }
 
 TEST(PlanJob, CandidatesInsideWallsOrFurnitureAreNeverChosen) {
-  PlanRequest request = mesh_request();
+  PlanRequest request = testing::plan_mesh_request();
   request.stations = 3;
   request.target_coverage = 0.0;
   request.spacing = 0.25;
@@ -131,7 +124,7 @@ TEST(PlanJob, CandidatesInsideWallsOrFurnitureAreNeverChosen) {
 }
 
 TEST(PlanJob, TheSameSeedGivesTheSamePlanWhateverTheThreads) {
-  PlanRequest request = mesh_request();
+  PlanRequest request = testing::plan_mesh_request();
   request.seed = 11;
   request.threads = 1;
   const PlanReport a = plan_mesh(testing::pillar_room(), request);
@@ -148,7 +141,7 @@ TEST(PlanJob, TheSameSeedGivesTheSamePlanWhateverTheThreads) {
 TEST(PlanJob, ACloudSampledFromTheTwoRoomsGetsTheMeshsStations) {
   const TriangleMesh mesh = testing::two_rooms();
   PointCloud cloud = testing::sample_room(mesh, 150.0, 8).cloud;
-  PlanRequest request = mesh_request();
+  PlanRequest request = testing::plan_mesh_request();
   request.stations = 1;
   request.target_coverage = 0.0;
   const PlanReport from_mesh = plan_mesh(mesh, request);
@@ -160,7 +153,7 @@ TEST(PlanJob, ACloudSampledFromTheTwoRoomsGetsTheMeshsStations) {
   EXPECT_EQ(from_cloud.selection.stations[0].candidate, from_mesh.selection.stations[0].candidate);
   EXPECT_NEAR(from_cloud.selection.coverage, from_mesh.selection.coverage, 0.03);
 
-  PlanRequest target = mesh_request();
+  PlanRequest target = testing::plan_mesh_request();
   const PlanReport mesh_target = plan_mesh(mesh, target);
   const PlanReport cloud_target = plan_cloud(cloud, target);
   const auto m = new_positions(mesh_target), c = new_positions(cloud_target);
@@ -177,7 +170,7 @@ TEST(PlanJob, ACloudsOwnStationsArePlacedFirstUnlessTurnedOff) {
   Station station{"scan_a", {}};
   station.frame.origin = Eigen::Vector3d(3.0, 2.5, 1.5);
   cloud.stations = {station};
-  const PlanReport report = plan_cloud(cloud, mesh_request());
+  const PlanReport report = plan_cloud(cloud, testing::plan_mesh_request());
   ASSERT_GE(report.selection.stations.size(), 2u);
   EXPECT_TRUE(report.selection.stations[0].existing);
   EXPECT_EQ(report.candidate_names.at(report.selection.stations[0].candidate), "scan_a");
@@ -186,7 +179,7 @@ TEST(PlanJob, ACloudsOwnStationsArePlacedFirstUnlessTurnedOff) {
   ASSERT_EQ(added.size(), 1u);
   EXPECT_GT(added[0].x(), 6.25);
 
-  PlanRequest off = mesh_request();
+  PlanRequest off = testing::plan_mesh_request();
   off.existing_stations = false;
   EXPECT_TRUE(plan_cloud(cloud, off).placed.empty());
 }
@@ -197,7 +190,7 @@ TEST(PlanJob, WritesTheReportTheCurveTheCandidatesAndTheTargetsWithCoveredBy) {
   // A PLY with faces is a mesh (a PLY of points would be a cloud).
   const TriangleMesh mesh = testing::two_rooms();
   write_mesh_ply(scene, mesh, std::vector<float>(mesh.face_count(), 0.0f), "value");
-  PlanRequest request = mesh_request();
+  PlanRequest request = testing::plan_mesh_request();
   request.path = scene;
   request.out = (dir.path() / "out").string();
   const PlanReport report = run_plan(request);
@@ -223,13 +216,13 @@ TEST(PlanJob, WritesTheReportTheCurveTheCandidatesAndTheTargetsWithCoveredBy) {
 }
 
 TEST(PlanJob, RefusesAQuestionItCannotAnswer) {
-  PlanRequest request = mesh_request();
+  PlanRequest request = testing::plan_mesh_request();
   request.target_coverage = 0.0;  // neither question
   EXPECT_THROW(plan_mesh(testing::empty_room(), request), UsageError);
-  PlanRequest classes = mesh_request();
+  PlanRequest classes = testing::plan_mesh_request();
   classes.classes = {"window"};
   EXPECT_THROW(plan_mesh(testing::empty_room(), classes), UsageError);
-  PlanRequest crowded = mesh_request();
+  PlanRequest crowded = testing::plan_mesh_request();
   crowded.clearance = 10.0;
   EXPECT_THROW(plan_mesh(testing::empty_room(), crowded), UsageError);
 }
@@ -238,7 +231,7 @@ TEST(PlanJob, RefusesAQuestionItCannotAnswer) {
 // station, at coverage 0: it is refused, naming the key.
 TEST(PlanJob, ATargetTooSmallToTellFromRoundingIsRefusedNamingTheKey) {
   for (const double tiny : {1e-300, 1e-13}) {
-    PlanRequest request = mesh_request();
+    PlanRequest request = testing::plan_mesh_request();
     request.target_coverage = tiny;
     try {
       const PlanReport report = plan_mesh(testing::empty_room(), request);
@@ -249,7 +242,7 @@ TEST(PlanJob, ATargetTooSmallToTellFromRoundingIsRefusedNamingTheKey) {
     }
   }
   // The least target still takes a station that covers something.
-  PlanRequest least = mesh_request();
+  PlanRequest least = testing::plan_mesh_request();
   least.target_coverage = 1e-9;
   const PlanReport report = plan_mesh(testing::empty_room(), least);
   EXPECT_TRUE(report.selection.target_reached);
