@@ -460,6 +460,9 @@ SurfelEstimate estimate_surfels(const PointCloud& cloud, const SurfelOptions& op
   LargeVector<Eigen::Vector3f> normals(count);
   LargeVector<float> radii(count), variation(count), thickness(count);
   LargeVector<std::uint8_t> duplicate(count), line(count), fitted(count);
+  // A disc (not a stray point's sphere) whose normal is its fitted plane's,
+  // not its line of sight.
+  const auto has_fitted_plane = [&](std::size_t s) { return fitted[s] && !normals[s].isZero(); };
   SurfelEstimate estimate;
   SurfelStats& stats = estimate.stats;
   {
@@ -618,7 +621,9 @@ SurfelEstimate estimate_surfels(const PointCloud& cloud, const SurfelOptions& op
     for (std::size_t s = 0; s < count; ++s) {
       stats.duplicates += duplicate[s];
       stats.facing_station += !fitted[s] && !normals[s].isZero();
-      if (!normals[s].isZero()) {
+      // Over the discs whose plane was fitted: one that faces its station
+      // measured no thickness (nor a plane's variation).
+      if (has_fitted_plane(s)) {
         oriented_variation.push_back(variation[s]);
         oriented_thickness.push_back(thickness[s]);
       }
@@ -659,7 +664,7 @@ SurfelEstimate estimate_surfels(const PointCloud& cloud, const SurfelOptions& op
       estimate.surfels[i] = make_surfel(cloud.positions[i], normals[s], radii[s], i);
       if (options.keep_thickness) {
         estimate.thickness[i] = thickness[s];
-        measured[i] = fitted[s] && !normals[s].isZero();
+        measured[i] = has_fitted_plane(s);
       }
     }
   });

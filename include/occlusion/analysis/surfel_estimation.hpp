@@ -91,8 +91,8 @@ struct SurfelStats {
   double radius_quantile_10 = 0.0;  // of every point's radius
   double radius_median = 0.0;
   double radius_quantile_90 = 0.0;
-  double surface_variation_median = 0.0;  // over the oriented points
-  double thickness_median = 0.0;          // over the oriented points
+  double surface_variation_median = 0.0;  // over the discs with a fitted plane
+  double thickness_median = 0.0;          // over the discs with a fitted plane
   double seconds = 0.0;
 };
 
