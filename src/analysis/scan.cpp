@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "analysis_support.hpp"
+#include "occlusion/analysis/banded_discs.hpp"
 #include "occlusion/analysis/scan_tracer.hpp"
 #include "occlusion/core/parallel.hpp"
 #include "occlusion/core/sphere_octree.hpp"
@@ -84,17 +85,8 @@ ScanTracer::ScanTracer(const PointCloud& cloud, const ScanOptions& options,
   progress("building octree", 0.0);
   if (options.surfels) {
     near_viewpoint_ = 2.0 * options.surfels->stats.radius_median;
-    const SurfelEstimate& estimate = *options.surfels;
-    LargeVector<BandedSurfel> discs(estimate.surfels.size());
-    parallel_for(
-        discs.size(), kRayGrain, options.threads, [&](std::size_t first, std::size_t last) {
-          for (std::size_t i = first; i < last; ++i) {
-            // An estimate made by hand, without its noise, has bands of 0.
-            const float sigma = estimate.noise.sigma.empty() ? 0.0f : estimate.noise.sigma[i];
-            discs[i] = {estimate.surfels[i], kBandSigmas * sigma};
-          }
-        });
-    discs_.emplace(std::move(discs), options.octree, progress);
+    // An estimate made by hand, without its noise, has bands of 0.
+    discs_.emplace(banded_discs(*options.surfels, options.threads), options.octree, progress);
   } else {
     // Any sphere holding the viewpoint ends within 2 r of it (scan_shadow_ray).
     near_viewpoint_ = 2.0 * options.point_radius;

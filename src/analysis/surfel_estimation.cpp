@@ -671,6 +671,9 @@ SurfelEstimate estimate_surfels(const PointCloud& cloud, const SurfelOptions& op
   release(fitted);
   if (options.keep_thickness) {
     estimate.noise = measure_surface_noise(cloud, estimate.surfels, estimate.thickness, measured);
+    if (options.carve_sight_lines) {
+      estimate.carving = carve_sight_lines(cloud, estimate, options.threads, progress);
+    }
   }
   stats.seconds = seconds_since(start);
   progress("surfels", 1.0);

@@ -106,6 +106,19 @@ PointModel choose_point_model(const PointCloud& cloud, const PointSettings& sett
   const SurfelStats& stats = model.surfels->stats;
   report.surfels = stats;
   report.noise = model.surfels->noise.stations;
+  if (options.keep_thickness) {
+    report.carving = model.surfels->carving;
+    for (const SightLineCarving::UncarvedStation& station : report.carving->implausible) {
+      std::ostringstream message;
+      message << "the model hides " << percent(station.blocked_share) << " of the points station "
+              << (station.name.empty() ? std::string("(unnamed)") : station.name)
+              << " recorded from that station itself (more than " << percent(kMaxBlockedShare)
+              << "): its pose is probably not where they were measured from, or its noise "
+                 "exceeds the model's bands; its lines of sight were not carved (README, Point "
+                 "model)";
+      warnings.push_back(message.str());
+    }
+  }
   report.normal_neighbours = settings.normal_neighbours;
   if (report.radius.automatic) {
     report.disc_coverage = settings.disc_coverage;
@@ -147,6 +160,23 @@ Json::Value point_model_json(const PointModelReport& model) {
     json["surface_variation_median"] = s.surface_variation_median;
     json["thickness_median"] = s.thickness_median;
     json["discs_facing_station"] = Json::UInt64(s.facing_station);
+  }
+  if (model.carving) {
+    // Lines of sight from each point's own station (sight_line_carving.hpp).
+    Json::Value carving(Json::objectValue);
+    carving["lines"] = Json::UInt64(model.carving->lines);
+    carving["blocked"] = Json::UInt64(model.carving->blocked);
+    carving["discs_shrunk"] = Json::UInt64(model.carving->shrunk);
+    carving["still_blocked"] = Json::UInt64(model.carving->still_blocked);
+    Json::Value uncarved(Json::arrayValue);
+    for (const SightLineCarving::UncarvedStation& station : model.carving->implausible) {
+      Json::Value entry(Json::objectValue);
+      entry["station"] = station.name;
+      entry["blocked_share"] = station.blocked_share;
+      uncarved.append(entry);
+    }
+    carving["uncarved_stations"] = uncarved;
+    json["sight_line_carving"] = carving;
   }
   if (!model.noise.empty()) {
     // Per station, per range bin: [range from, range to, points, sigma].

@@ -51,6 +51,7 @@
 #include <vector>
 
 #include "occlusion/analysis/point_spacing.hpp"
+#include "occlusion/analysis/sight_line_carving.hpp"
 #include "occlusion/analysis/surface_noise.hpp"
 #include "occlusion/core/large_buffer.hpp"
 #include "occlusion/core/point_cloud.hpp"
@@ -75,6 +76,9 @@ struct SurfelOptions {
   // Whether SurfelEstimate::thickness is filled (-fscan reads it; -poc does
   // not, and 4 bytes a point would live through its octree's build).
   bool keep_thickness = true;
+  // With keep_thickness: shrink the discs that stand across a line of sight
+  // the cloud's stations prove free (sight_line_carving.hpp).
+  bool carve_sight_lines = true;
   unsigned threads = 0;
 };
 
@@ -100,6 +104,9 @@ struct SurfelEstimate {
   LargeVector<Surfel> surfels;   // one per point, in the cloud's order
   std::vector<float> thickness;  // per point (0 for spheres); empty unless keep_thickness
   SurfaceNoise noise;            // measured when keep_thickness (surface_noise.hpp)
+  // With keep_thickness and carve_sight_lines (sight_line_carving.hpp); the
+  // stats' radius quantiles are before carving.
+  SightLineCarving carving;
   SurfelStats stats;
   // The cloud's point spacing (point_spacing.hpp), the same as
   // measure_point_spacing's, from this search: set when it asks for at least

@@ -19,10 +19,11 @@ struct PointModelReport {
   // (automatic false), else the median of the per-point radii. The spacing is
   // measured either way.
   PointRadius radius;
-  std::optional<SurfelStats> surfels;  // discs
-  std::vector<StationNoise> noise;     // discs, where the job reads it (surface_noise.hpp)
-  double disc_coverage = 0.0;          // discs with point_radius auto
-  unsigned normal_neighbours = 0;      // discs
+  std::optional<SurfelStats> surfels;       // discs
+  std::vector<StationNoise> noise;          // discs, where the job reads it (surface_noise.hpp)
+  std::optional<SightLineCarving> carving;  // discs, where the job carves (sight_line_carving.hpp)
+  double disc_coverage = 0.0;               // discs with point_radius auto
+  unsigned normal_neighbours = 0;           // discs
   // -poc with discs: the share of a cloud's surfaces its discs leave open
   // (cloud_occlusion.hpp, open_surface_share).
   std::optional<double> open_surface_share;

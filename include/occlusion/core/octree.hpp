@@ -154,6 +154,10 @@ class Octree {
   const OctreeStats& stats() const { return stats_; }
   // The shape that was at index `id` of the construction vector.
   const Shape& shape(PrimitiveId id) const { return shapes_[position_of_[id]]; }
+  // The same, to be made smaller in place: the tree's boxes are not refitted,
+  // so it must stay within the bounds it had (a disc or a sphere given a
+  // smaller radius), and no query may run meanwhile.
+  Shape& shape_to_shrink(PrimitiveId id) { return shapes_[position_of_[id]]; }
 
  private:
   template <bool kAnyHit>
