@@ -1,5 +1,6 @@
 #include "loaded_scene.hpp"
 
+#include "occlusion/app/default_viewpoints.hpp"
 #include "occlusion/app/json_output.hpp"
 
 namespace occlusion::server {
@@ -93,6 +94,10 @@ std::shared_ptr<LoadedScene> cloud_scene(const PointCloud& cloud) {
     stations.append(entry);
   }
   summary["stations"] = stations;
+  // What -poc and -fscan take with no viewpoint given, and their warnings:
+  // the viewer's markers start there, so its figures are the CLI's.
+  summary["default_viewpoints"] = default_viewpoints_json(cloud);
+  summary["robust_box"] = summary["default_viewpoints"]["robust_box"];
   scene->frames = cloud_frames(cloud);
   return scene;
 }
