@@ -14,14 +14,19 @@
 namespace occlusion {
 namespace {
 
-// The words a POSIX shell makes of `command` (plain words and '...' quotes,
-// which is all cli_command writes).
+// The words a POSIX shell makes of `command` (plain words, '...' quotes and
+// \' between them, which is all cli_command writes).
 std::vector<std::string> shell_words(const std::string& command) {
   std::vector<std::string> words;
   std::string word;
-  bool in_word = false, quoted = false;
+  bool in_word = false, quoted = false, escaped = false;
   for (const char c : command) {
-    if (quoted) {
+    if (escaped) {
+      word += c;
+      escaped = false;
+    } else if (!quoted && c == '\\') {
+      escaped = in_word = true;
+    } else if (quoted) {
       if (c == '\'') {
         quoted = false;
       } else {
