@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <sstream>
 #include <utility>
 
 #include "job_support.hpp"
@@ -103,9 +104,38 @@ Json::Value field_of_view_json(const FieldOfView& view, const std::string& sourc
   return json;
 }
 
-Json::Value result_json(const CloudOcclusionResult& r, const std::vector<std::string>& names) {
+std::string degrees(double angle) {
+  std::ostringstream text;
+  text << std::fixed << std::setprecision(1) << angle << " deg";
+  return text.str();
+}
+
+// What the rays outside the view are outside of: no sensor ever measured
+// those directions, so they tell nothing of gaps in the scene.
+std::string outside_view_reason(const CloudOcclusionReport& report) {
+  if (report.field_of_view) {
+    return "outside the frame's " + degrees(report.field_of_view->horizontal_degrees()) + " x " +
+           degrees(report.field_of_view->vertical_degrees()) + " field of view (" +
+           report.field_of_view_source + "): directions its sensor never measured";
+  }
+  if (report.station_field_of_view) {
+    const SphericalFieldOfView& view = *report.station_field_of_view;
+    return "outside the field of view of station '" + report.field_of_view_station.name +
+           "' (elevation " + degrees(view.elevation_lo_degrees()) + " to " +
+           degrees(view.elevation_hi_degrees()) + ", " +
+           (view.full_turn ? std::string("a full turn")
+                           : "azimuth window " + degrees(view.azimuth_span_degrees())) +
+           "): directions it never measured";
+  }
+  return "";
+}
+
+Json::Value result_json(const CloudOcclusionResult& r, const std::vector<std::string>& names,
+                        const std::string& outside_why) {
   Json::Value json(Json::objectValue);
   json["occlusion_level"] = r.occlusion_level;
+  json["level_counts"] = level_counts_text(ray_counts(r), outside_why);
+  json["rays_in_view"] = Json::UInt64(ray_counts(r).rays_in_view());
   json["rays"] = Json::UInt64(r.rays);
   json["hits"] = Json::UInt64(r.hits);
   json["through_openings"] = Json::UInt64(r.through_openings);
@@ -117,6 +147,8 @@ Json::Value result_json(const CloudOcclusionResult& r, const std::vector<std::st
     const ViewpointRays& vp = r.viewpoints[v];
     Json::Value entry = job::viewpoint_json(names.at(v), vp.position);
     entry["occlusion_level"] = vp.occlusion_level;
+    entry["level_counts"] = level_counts_text(ray_counts(vp), outside_why);
+    entry["rays_in_view"] = Json::UInt64(ray_counts(vp).rays_in_view());
     entry["rays"] = Json::UInt64(vp.rays);
     entry["hits"] = Json::UInt64(vp.hits);
     entry["through_openings"] = Json::UInt64(vp.through_openings);
@@ -211,6 +243,7 @@ CloudOcclusionReport run_cloud_occlusion_on(const PointCloud& cloud,
     options.station_field_of_view = report.station_field_of_view;
     if (report.station_field_of_view) report.field_of_view_station = cloud.stations.front();
   }
+  report.outside_view_why = outside_view_reason(report);
   // Without the exterior variant nothing reads the discs after this run:
   // its octree takes them (one copy of them fewer at a big cloud's peak).
   if (model.surfels && !request.exterior) {
@@ -279,7 +312,7 @@ CloudOcclusionReport run_cloud_occlusion(const CloudOcclusionRequest& request,
 
 Json::Value to_json(const CloudOcclusionReport& report) {
   const CloudOcclusionRequest& q = report.request;
-  Json::Value json = result_json(report.result, report.viewpoint_names);
+  Json::Value json = result_json(report.result, report.viewpoint_names, report.outside_view_why);
   json["job"] = "cloud_occlusion";
   json["input"] = q.path;
   json["global_shift"] = job::global_shift_json(report.shift);
@@ -295,7 +328,8 @@ Json::Value to_json(const CloudOcclusionReport& report) {
   json["station_field_of_view"] = job::station_field_of_view_json(
       report.station_field_of_view, report.field_of_view_station, report.result.outside_view_rays);
   if (report.exterior) {
-    Json::Value exterior = result_json(report.exterior->result, report.viewpoint_names);
+    Json::Value exterior =
+        result_json(report.exterior->result, report.viewpoint_names, report.outside_view_why);
     exterior["classes"] = to_json(q.exterior_classes);
     exterior["exterior_points"] = Json::UInt64(report.exterior->exterior_points);
     exterior["interior_points"] = Json::UInt64(report.exterior->interior_points);

@@ -54,7 +54,10 @@ std::vector<JobInfo> make_jobs() {
                     "each viewpoint num_rays_per_vp rays leave a spherical light source. A ray\n"
                     "that hits no point and leaves\n"
                     "through no opening is an occlusion ray; occlusion_level = occlusion rays /\n"
-                    "rays.",
+                    "rays inside the view. Rays outside a single-view frame's or a laser\n"
+                    "station's field of view (directions the sensor never measured) are counted\n"
+                    "apart (outside_view_rays) and not in the level; the report's level_counts\n"
+                    "says what the level counts.",
                     {},
                     {}},
             &cloud_occlusion_keys, &run_cloud_occlusion),

@@ -87,6 +87,7 @@ ViewpointChoice::Resolved resolve_for_cloud(const ViewpointChoice& choice, const
   resolved.frame["bbox"] = box_json(boxes.bbox, cloud.shift);
   resolved.frame["robust"] = box_json(boxes.robust, cloud.shift);
   resolved.frame["robust_quantile"] = kRobustQuantile;
+  resolved.outside_occupied_space.assign(resolved.positions.size(), false);
   for (std::size_t v = 0; v < resolved.positions.size(); ++v) {
     // A scanner looks at the scene from where it stood, often outside the
     // box of what it saw from one side: no warning at a station.
@@ -94,6 +95,7 @@ ViewpointChoice::Resolved resolve_for_cloud(const ViewpointChoice& choice, const
       return (resolved.positions[v] - s.frame.origin).cwiseAbs().maxCoeff() <= 1e-6;
     });
     if (!at_station && !boxes.robust.contains(resolved.positions[v])) {
+      resolved.outside_occupied_space[v] = true;
       resolved.warnings.push_back("viewpoint " + resolved.names[v] + " at " +
                                   position_text(cloud.to_original(resolved.positions[v])) +
                                   " lies outside the occupied space (the robust box from " +

@@ -368,7 +368,8 @@ void bind_jobs(py::module_& m) {
 
 report: the JSON report as a dict, exactly what the CLI prints with --json.
 arrays: the per-element arrays (numpy). Both are readable as attributes:
-result.occlusion_level, result.face_visible_fraction.)doc")
+result.occlusion_level, result.face_visible_fraction. A cloud_occlusion level
+comes with the counts that make it: result.level_counts, and per viewpoint.)doc")
       .def_readonly("report", &JobResult::report)
       .def_readonly("arrays", &JobResult::arrays)
       .def("__getattr__", &result_attribute)
@@ -381,8 +382,14 @@ result.occlusion_level, result.face_visible_fraction.)doc")
              return names;
            })
       .def("__repr__", [](const JobResult& result) {
-        return "<occlusion.Result fields=" +
-               py::repr(py::list(result.report.attr("keys")())).cast<std::string>() +
+        // A -poc level shows with the counts that make it (app/level_counts.hpp).
+        const std::string counts =
+            result.report.contains("level_counts")
+                ? "occlusion_level " + py::str(result.report["level_counts"]).cast<std::string>() +
+                      " "
+                : "";
+        return "<occlusion.Result " + counts +
+               "fields=" + py::repr(py::list(result.report.attr("keys")())).cast<std::string>() +
                " arrays=" + py::repr(py::list(result.arrays.attr("keys")())).cast<std::string>() +
                ">";
       });

@@ -10,6 +10,7 @@
 #include "job_params.hpp"
 #include "loaded_scene.hpp"
 #include "occlusion/app/cloud_occlusion_job.hpp"
+#include "occlusion/app/command_line.hpp"
 #include "occlusion/app/errors.hpp"
 #include "occlusion/app/evaluate_job.hpp"
 #include "occlusion/app/extract_polygons_job.hpp"
@@ -135,6 +136,10 @@ std::vector<Command> job_commands() {
           if (frames != job_frames().end()) frames->second(context, run);
           Json::Value json = run.json;
           context.server.root.relativise(json);
+          // The same run from the CLI or Python, in the data directory (client
+          // paths are relative to it): the viewer offers it beside the result.
+          json["reproduce"]["cli"] = cli_command(job, context.params);
+          json["reproduce"]["python"] = python_call(job, context.params);
           return json;
         }});
   }

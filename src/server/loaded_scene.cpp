@@ -1,5 +1,8 @@
 #include "loaded_scene.hpp"
 
+#include <stdexcept>
+
+#include "occlusion/app/default_viewpoints.hpp"
 #include "occlusion/app/json_output.hpp"
 
 namespace occlusion::server {
@@ -93,6 +96,15 @@ std::shared_ptr<LoadedScene> cloud_scene(const PointCloud& cloud) {
     stations.append(entry);
   }
   summary["stations"] = stations;
+  // What -poc and -fscan take with no viewpoint given, and their warnings:
+  // the viewer's markers start there, so its figures are the CLI's. A cloud
+  // the jobs cannot place viewpoints on still loads (the jobs will say why).
+  try {
+    summary["default_viewpoints"] = default_viewpoints_json(cloud);
+    summary["robust_box"] = summary["default_viewpoints"]["robust_box"];
+  } catch (const std::exception&) {
+    summary.removeMember("default_viewpoints");
+  }
   scene->frames = cloud_frames(cloud);
   return scene;
 }

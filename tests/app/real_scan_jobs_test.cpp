@@ -5,7 +5,9 @@
 #include "io/scratch_directory.hpp"
 #include "occlusion/analysis/scene_frame.hpp"
 #include "occlusion/app/cloud_occlusion_job.hpp"
+#include "occlusion/app/default_viewpoints.hpp"
 #include "occlusion/app/errors.hpp"
+#include "occlusion/app/in_memory_jobs.hpp"
 #include "occlusion/app/scan_job.hpp"
 #include "occlusion/core/random.hpp"
 #include "occlusion/io/cloud_io.hpp"
@@ -179,6 +181,33 @@ TEST(RealScanJobs, GridFollowsUpAndWarnsWhenTheDataDisagree) {
   EXPECT_TRUE(any_warning_has(wrong.warnings,
                               "up is +z, but the largest flat structure is "
                               "perpendicular to y"));
+}
+
+// The defaults the server sends the viewer are -poc's grid, with the up
+// warning the CLI gives (the viewer had shown neither, issue 41).
+TEST(RealScanJobs, TheDefaultsSentToTheViewerCarryTheJobsWarnings) {
+  PointCloud camera;  // the room in a camera frame: y down, z forward
+  testing::add_box_grid(camera, 80, 60, 50, 0.05);
+  for (auto& p : camera.positions) p = Eigen::Vector3f(p.x(), -p.z(), p.y());
+  const Json::Value defaults = default_viewpoints_json(camera);
+  const Json::Value& sent = defaults["cloud_occlusion"];
+  CloudOcclusionRequest request;
+  request.path = "camera";
+  request.primitive = "sphere";
+  request.point_radius = 0.025;
+  request.num_rays_per_vp = 500;
+  const CloudOcclusionReport report = cloud_occlusion_in_memory(camera, request);
+  const Json::Value poc = to_json(report);
+  EXPECT_EQ(sent["viewpoint_source"].asString(), "num_vp 9");
+  EXPECT_EQ(sent["viewpoint_source"], poc["viewpoint_source"]);
+  ASSERT_EQ(sent["viewpoints"].size(), poc["viewpoints"].size());
+  for (Json::ArrayIndex v = 0; v < sent["viewpoints"].size(); ++v) {
+    EXPECT_EQ(sent["viewpoints"][v]["position"], poc["viewpoints"][v]["position"]);
+  }
+  ASSERT_EQ(sent["warnings"].size(), 1u);
+  EXPECT_NE(sent["warnings"][0].asString().find("up is +z"), std::string::npos);
+  EXPECT_TRUE(any_warning_has(report.warnings, sent["warnings"][0].asString()));
+  EXPECT_EQ(defaults["scan"]["viewpoint_source"].asString(), "pattern 7");
 }
 
 TEST(RealScanJobs, RefusesUnknownFrameUpAndFieldOfView) {

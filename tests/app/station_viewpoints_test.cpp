@@ -7,8 +7,10 @@
 
 #include <algorithm>
 #include <string>
+#include <utility>
 
 #include "occlusion/app/cloud_occlusion_job.hpp"
+#include "occlusion/app/default_viewpoints.hpp"
 #include "occlusion/app/errors.hpp"
 #include "occlusion/app/in_memory_jobs.hpp"
 #include "occlusion/app/scan_job.hpp"
@@ -85,6 +87,30 @@ TEST(StationViewpoints, DefaultViewpointsAreTheStations) {
   EXPECT_EQ(poc.viewpoint_names, (std::vector<std::string>{"west", "east"}));
   EXPECT_EQ(to_json(poc)["viewpoints"][0]["position"][0].asDouble(), 1.5);
   EXPECT_FALSE(to_json(poc)["parameters"].isMember("num_vp"));
+}
+
+// What the server sends with a loaded cloud, for the viewer's markers, is
+// what the jobs take: the stations, and no warning at "east" though it stands
+// outside the box (the viewer had warned there, issue 41).
+TEST(StationViewpoints, TheDefaultsSentToTheViewerAreTheJobsViewpoints) {
+  const PointCloud cloud = two_station_room();
+  const Json::Value defaults = default_viewpoints_json(cloud);
+  const Json::Value poc = to_json(cloud_occlusion_in_memory(cloud, sphere_poc()));
+  const Json::Value scan = to_json(scan_in_memory(cloud, sphere_scan()));
+  for (const auto& [job, report] : {std::pair{"cloud_occlusion", poc}, std::pair{"scan", scan}}) {
+    const Json::Value& sent = defaults[job];
+    EXPECT_EQ(sent["viewpoint_source"], report["viewpoint_source"]) << job;
+    ASSERT_EQ(sent["viewpoints"].size(), report["viewpoints"].size()) << job;
+    for (Json::ArrayIndex v = 0; v < sent["viewpoints"].size(); ++v) {
+      EXPECT_EQ(sent["viewpoints"][v]["name"], report["viewpoints"][v]["name"]) << job;
+      EXPECT_EQ(sent["viewpoints"][v]["position"], report["viewpoints"][v]["position"]) << job;
+      EXPECT_FALSE(sent["viewpoints"][v]["outside_occupied_space"].asBool()) << job;
+    }
+    EXPECT_EQ(sent["warnings"].size(), 0u) << job;
+  }
+  EXPECT_GT(defaults["cloud_occlusion"]["viewpoints"][1]["position"][0].asDouble(),
+            defaults["robust_box"]["max"][0].asDouble())
+      << "east is outside the occupied space";
 }
 
 TEST(StationViewpoints, GivenViewpointKeysOverrideTheStations) {

@@ -149,6 +149,16 @@ TEST(CloudCli, KinectFrameFromItsSensor) {
                 poc["outside_view_rays"].asUInt64(),
             3000u);
   EXPECT_LT(poc["occlusion_level"].asDouble(), 0.5);
+  // The text says what the level counts, as the report does: the rays outside
+  // the frame's view apart, and why.
+  const std::string counts = poc["level_counts"].asString();
+  EXPECT_NE(counts.find(std::to_string(poc["outside_view_rays"].asUInt64()) +
+                        " of the 3000 rays are outside the frame's"),
+            std::string::npos)
+      << counts;
+  const CliRun text = run_cli("-poc " + frame + " --num-rays-per-vp 3000 -q");
+  EXPECT_EQ(text.exit_code, 0) << text.err;
+  EXPECT_NE(text.out.find("occlusion level  " + counts + "\n"), std::string::npos) << text.out;
 }
 
 TEST(CloudCli, RealScanRuns) {

@@ -82,6 +82,10 @@ def test_cloud_occlusion_equals_cli():
     for viewpoint, directions in zip(result.viewpoints, escapes):
         assert directions.dtype == np.float32 and directions.shape == (viewpoint["occlusion_rays"], 3)
         np.testing.assert_allclose(np.linalg.norm(directions, axis=1), 1.0, rtol=1e-5)
+    # The level shows with the counts that make it, as the CLI prints them.
+    counts = result.level_counts
+    assert counts.startswith(f"{cli['occlusion_level']:.4f} = {cli['occlusion_rays']} occlusion rays")
+    assert counts in repr(result)
 
 
 def test_scan_equals_cli_and_arrays_match_files(tmp_path):

@@ -135,6 +135,10 @@ TEST_F(RoundTrip, LoadS3disRoomStreamsPointsColoursLabels) {
   EXPECT_EQ(result["kind"].asString(), "cloud");
   EXPECT_EQ(result["points"].asUInt64(), cloud.size());
   EXPECT_EQ(result["class_names"].size(), cloud.class_names.size());
+  // The jobs' defaults on it, for the viewer's markers (station_viewpoints_test covers which).
+  EXPECT_EQ(result["default_viewpoints"]["cloud_occlusion"]["viewpoints"].size(), 9u);
+  EXPECT_EQ(result["default_viewpoints"]["scan"]["viewpoint_source"].asString(), "pattern 7");
+  EXPECT_EQ(result["robust_box"], result["default_viewpoints"]["robust_box"]);
   const auto positions = frame_values<float>(*find_frame(reply, "positions"));
   ASSERT_EQ(positions.size(), 3 * cloud.size());
   EXPECT_EQ(positions[3 * 100 + 2], cloud.positions[100].z());
@@ -242,6 +246,10 @@ TEST_F(RoundTrip, CloudOcclusionEqualsTheCli) {
   ASSERT_TRUE(cli.isObject());
   const Json::Value& result = reply.final["result"];
   expect_same_report(result, cli);
+  // The command line the result offers gives the same report, run in the data directory.
+  const std::string line = result["reproduce"]["cli"].asString();
+  ASSERT_EQ(line.rfind("occlusion -poc ", 0), 0u) << line;
+  expect_same_report(result, run_cli_json(line.substr(10), files().data()));
   EXPECT_EQ(result["parameters"]["polygon_path"].asString(), "s3dis_synthetic/openings.txt");
   ASSERT_EQ(result["viewpoints"].size(), 4u);
   for (std::uint32_t v = 0; v < 4; ++v) {

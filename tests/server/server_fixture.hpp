@@ -56,9 +56,9 @@ class TestServer {
   std::thread thread_;
 };
 
-// Runs the built CLI with `arguments` (shell words); its stdout parsed as JSON
-// (null if it is not).
-Json::Value run_cli_json(const std::string& arguments);
+// Runs the built CLI with `arguments` (shell words), in `directory` when one
+// is given; its stdout parsed as JSON (null if it is not).
+Json::Value run_cli_json(const std::string& arguments, const std::string& directory = "");
 
 // Params object from a JSON literal, e.g. params(R"({"path": "x"})").
 Json::Value params(const std::string& json);

@@ -27,6 +27,19 @@ export interface LoadResult {
   shift?: Vec3;
   /** Where the scanner stood (a cloud's stations or its sensor), in the file's frame. */
   stations?: { name: string; position: Vec3 }[];
+  /** What -poc and -fscan take on this cloud with no viewpoint given (app/default_viewpoints.hpp). */
+  default_viewpoints?: {
+    cloud_occlusion?: DefaultViewpoints;
+    scan?: DefaultViewpoints;
+    robust_box?: Bounds;
+  };
+}
+
+/** One job's default viewpoints, with the warnings the job gives about them. */
+export interface DefaultViewpoints {
+  viewpoint_source: string;
+  viewpoints: { name: string; position: Vec3; outside_occupied_space: boolean }[];
+  warnings: string[];
 }
 
 export interface ViewpointReport {
@@ -35,6 +48,10 @@ export interface ViewpointReport {
   occlusion_level?: number;
   occlusion_rays?: number;
   rays?: number;
+  /** -poc: the rays its level counts (rays - outside_view_rays), and the sentence that adds it up. */
+  rays_in_view?: number;
+  outside_view_rays?: number;
+  level_counts?: string;
   hits?: number;
   through_openings?: number;
   visible_fraction?: number;
@@ -53,6 +70,8 @@ export interface JobReport {
   warnings?: string[];
   parameters?: Record<string, unknown>;
   timings?: Record<string, number>;
+  /** The same run from the data directory (server/job_commands.cpp). */
+  reproduce?: { cli: string; python: string };
   [key: string]: unknown;
 }
 

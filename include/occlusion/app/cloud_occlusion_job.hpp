@@ -13,6 +13,7 @@
 #include "occlusion/analysis/cloud_occlusion.hpp"
 #include "occlusion/analysis/point_spacing.hpp"
 #include "occlusion/app/key.hpp"
+#include "occlusion/app/level_counts.hpp"
 #include "occlusion/app/point_model.hpp"
 #include "occlusion/app/station_filter.hpp"
 #include "occlusion/app/viewpoint_choice.hpp"
@@ -82,6 +83,9 @@ struct CloudOcclusionReport {
   // Set for one laser station's gridded scan (spherical_field_of_view.hpp), and that station.
   std::optional<SphericalFieldOfView> station_field_of_view;
   Station field_of_view_station;
+  // What the rays outside the view (outside_view_rays) are outside of, and
+  // why they are not counted (level_counts.hpp); empty without a field of view.
+  std::string outside_view_why;
   std::optional<ExteriorReport> exterior;
   std::vector<std::string> viewpoint_names;
   std::string viewpoint_source;        // ViewpointChoice::Resolved::source

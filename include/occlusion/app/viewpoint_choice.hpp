@@ -48,6 +48,9 @@ struct ViewpointChoice {
     Json::Value frame;
     // Viewpoints outside the occupied space, data that disagree with up, ...
     std::vector<std::string> warnings;
+    // Per viewpoint, for a cloud (job::resolve_for_cloud): whether it was
+    // warned about as outside the occupied space (a station never is).
+    std::vector<bool> outside_occupied_space;
   };
   // Positions for a scene whose pattern/grid box is [lo, hi], up being
   // coordinate axis `up_axis` (grid_viewpoints).

@@ -21,7 +21,7 @@ import { Legend } from "../ui/legend";
 import { Notices } from "../ui/notices";
 import { OpeningPanel } from "../ui/opening_panel";
 import { renderRayKey } from "../ui/rays_legend";
-import { ViewpointPanel } from "../ui/viewpoint_panel";
+import { ViewpointPanel, defaultsNote } from "../ui/viewpoint_panel";
 import { ResultsPanel } from "../ui/results_panel";
 import { StatsPanel } from "../ui/stats_panel";
 import { Toolbar } from "../ui/toolbar";
@@ -184,7 +184,8 @@ export class App {
     openings.onOpeningsChange = (path) => void this.openingFlow.draw(path);
     gui.onChange = (key) => this.onSetting(key);
     gui.onResetViewpoints = () => {
-      markers.reset(viewer.sceneBounds);
+      if (view.info) view.resetViewpoints();
+      else markers.reset(viewer.sceneBounds);
       viewer.requestRender();
     };
     const viewpointPanel = new ViewpointPanel(byId("viewpoints"), {
@@ -218,10 +219,17 @@ export class App {
             position: view.frame.toFile(position),
             enabled: m.enabled,
             warning: view.info
-              ? viewpointWarning(position, view.info.extent, cloud, this.pointRadiusInUse())
+              ? viewpointWarning(
+                  position,
+                  view.info.extent,
+                  cloud,
+                  this.pointRadiusInUse(),
+                  markers.placedOutside(m.name),
+                )
               : null,
           };
         }),
+        defaultsNote(view.info?.result.default_viewpoints?.cloud_occlusion, markers.atDefaults),
       );
     markers.onChange = () => {
       viewer.requestRender();

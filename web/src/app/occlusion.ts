@@ -1,6 +1,9 @@
 // Compute Occlusion: mesh occlusion for a mesh; point-cloud occlusion (with
 // the escape rays drawn) and, optionally, the visibility scan for a cloud.
-// Viewpoints are the enabled markers, where the user left them.
+// Viewpoints are the enabled markers, where the user left them; on a cloud
+// whose markers are still -poc's defaults, none are sent and each job takes
+// its own defaults, as the CLI does (-fscan's are pattern 7 when the cloud
+// has no stations), so the figures are the CLI's.
 
 import type { EscapeData, FaceFractionData, Vec3, VisibilityData } from "../decode/types";
 import type { JobReport } from "../results";
@@ -48,9 +51,11 @@ export class Occlusion {
     }
     // Only what the user set (a radius with auto off, a primitive, a ray count):
     // the rest takes the server's defaults, as the CLI would.
+    const defaults = markers.atDefaults;
+    const chosen = defaults ? {} : { viewpoints };
     const cloud: Record<string, unknown> = {
       path: info.path,
-      viewpoints,
+      ...chosen,
       ...cloudJobParams(s, "poc"),
       seed: 0,
     };
@@ -58,7 +63,9 @@ export class Occlusion {
     if (openings) cloud.polygon_path = openings;
     const jobs: Promise<void>[] = [this.cloud(cloud, names, colours)];
     if (s.visibilityScan) {
-      jobs.push(this.scan({ path: info.path, viewpoints, ...cloudJobParams(s, "scan") }, names));
+      // At the defaults -fscan names its own viewpoints (they may not be the markers).
+      const scan = { path: info.path, ...chosen, ...cloudJobParams(s, "scan") };
+      jobs.push(this.scan(scan, defaults ? [] : names));
     }
     await Promise.all(jobs);
   }
@@ -126,7 +133,7 @@ export class Occlusion {
     names: string[],
     colours: Vec3[],
   ): Promise<void> {
-    const count = (params.viewpoints as unknown[]).length;
+    const count = (params.viewpoints as unknown[] | undefined)?.length ?? names.length;
     const outcome = await this.ctx.runner.run<JobReport>(
       "Point-cloud occlusion",
       "cloud_occlusion",
@@ -159,7 +166,8 @@ export class Occlusion {
   }
 
   private async scan(params: Record<string, unknown>, names: string[]): Promise<void> {
-    const count = (params.viewpoints as unknown[]).length;
+    const defaults = this.ctx.view.info?.result.default_viewpoints?.scan?.viewpoints;
+    const count = (params.viewpoints as unknown[] | undefined)?.length ?? defaults?.length ?? 1;
     const outcome = await this.ctx.runner.run<JobReport>("Visibility scan", "scan", params, {
       context: () => ({ viewpoints: count }),
     });

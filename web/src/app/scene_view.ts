@@ -114,12 +114,7 @@ export class SceneView {
       this.fitSizes(decoded, extent);
     }
     this.viewer.frame(extent);
-    this.markers.reset(extent);
-    if (result.stations?.length) {
-      this.markers.placeStations(
-        result.stations.map((s) => ({ name: s.name, position: frame.toScene(s.position) })),
-      );
-    }
+    this.resetViewpoints();
     this.applyCut();
     // A new scene is shown whole, whatever the last one hid.
     this.gui.set("showCloud", true);
@@ -129,6 +124,29 @@ export class SceneView {
     this.apply("showMesh");
     this.apply("lightIntensity");
     this.updateLegend();
+  }
+
+  /**
+   * The markers back at the scene's default viewpoints: on a cloud, -poc's as
+   * the server placed them (the CLI's, with no viewpoint given); on a mesh,
+   * pattern 7 on its box (-moc's default).
+   */
+  resetViewpoints(): void {
+    const info = this.info;
+    if (!info) return;
+    const defaults = info.result.default_viewpoints?.cloud_occlusion;
+    if (defaults?.viewpoints.length) {
+      this.markers.placeDefaults(
+        defaults.viewpoints.map((v) => ({
+          name: v.name,
+          position: info.frame.toScene(v.position),
+          outside: v.outside_occupied_space,
+        })),
+        info.extent,
+      );
+    } else {
+      this.markers.reset(info.extent);
+    }
   }
 
   clear(): void {

@@ -41,14 +41,20 @@ export function nearestDistance(positions: Float32Array, count: number, p: Vec3)
 
 const short = (x: number) => Number(x.toPrecision(3));
 
-/** Why this viewpoint is suspect, or null; `radius` null: none known yet (see above). */
+/**
+ * Why this viewpoint is suspect, or null; `radius` null: none known yet (see
+ * above). `outside`: the job's own answer for a default viewpoint the server
+ * placed (a station is never outside, app/default_viewpoints.hpp); without
+ * it, whether `p` lies outside `extent` (the server's robust box, when sent).
+ */
 export function viewpointWarning(
   p: Vec3,
   extent: Bounds,
   cloud: { positions: Float32Array; count: number } | null,
   radius: number | null,
+  outside: boolean | null = null,
 ): string | null {
-  if (!contains(extent, p)) return "outside the occupied space (the scan's robust box)";
+  if (outside ?? !contains(extent, p)) return "outside the occupied space (the scan's robust box)";
   if (!cloud) return null;
   const { positions, count } = cloud;
   const nearest = nearestPoint(positions, count, p);

@@ -1,8 +1,10 @@
-// The viewpoints as light markers: the seed's three (centre, the midpoints
-// towards the bounding box's max and min corners, i.e. patterns C, U and L),
-// each a glowing sphere with a point light, toggled from the GUI and dragged
-// with a transform gizmo before computing. Jobs get the enabled ones as
-// explicit `viewpoints`.
+// The viewpoints as light markers, each a glowing sphere with a point light,
+// toggled from the GUI and dragged with a transform gizmo before computing.
+// On a cloud they start at -poc's default viewpoints as the server places them
+// (its stations, else the grid of the robust frame); on a mesh at the seed's
+// three (centre, the midpoints towards the bounding box's max and min
+// corners, i.e. patterns C, U and L, -moc's pattern 7). Jobs get the enabled
+// ones as explicit `viewpoints`, unless they are still a job's defaults.
 
 import {
   Camera,
@@ -49,6 +51,12 @@ export interface Marker {
   sphere: Mesh<SphereGeometry, MeshBasicMaterial>;
   light: PointLight;
   enabled: boolean;
+  /**
+   * For a job's default viewpoint: where the server placed it (scene frame)
+   * and whether the job warns that it stands outside the occupied space
+   * (app/default_viewpoints.hpp); null for one added or planned.
+   */
+  placed: { position: Vec3; outside: boolean } | null;
 }
 
 function glowTexture(): CanvasTexture {
@@ -76,6 +84,8 @@ export class ViewpointMarkers {
 
   private readonly texture = glowTexture();
   private created = 0;
+  /** Set by placeDefaults, cleared by adding, removing or placing others. */
+  private defaults = false;
 
   constructor(camera: Camera, domElement: HTMLElement, overlays: Object3D) {
     for (const name of VIEWPOINT_NAMES) this.create(name, VIEWPOINT_LABELS[name]);
@@ -110,7 +120,16 @@ export class ViewpointMarkers {
     object.add(sphere, glow, light);
     object.scale.setScalar(this.size);
     this.group.add(object);
-    const marker = { name, label, colour: hex, object, sphere, light, enabled: true };
+    const marker: Marker = {
+      name,
+      label,
+      colour: hex,
+      object,
+      sphere,
+      light,
+      enabled: true,
+      placed: null,
+    };
     this.markers.set(name, marker);
     return marker;
   }
@@ -121,6 +140,7 @@ export class ViewpointMarkers {
     while (this.markers.has(`vp${k}`)) ++k;
     const marker = this.create(`vp${k}`, `Viewpoint ${k}`);
     marker.object.position.set(...position);
+    this.defaults = false;
     this.onChange?.();
     return marker.name;
   }
@@ -130,6 +150,7 @@ export class ViewpointMarkers {
     const marker = this.markers.get(name);
     if (!marker) return;
     if (this.selected === name) this.deselect();
+    this.defaults = false;
     this.setBadge(name, "", "");
     marker.object.removeFromParent();
     marker.sphere.geometry.dispose();
@@ -149,10 +170,10 @@ export class ViewpointMarkers {
     return this.markers.get(name)?.label ?? name;
   }
 
-  /** Puts the markers on the bounds' pattern points, sized to the scene. */
   /** Back to the pattern's three on the bounds' pattern points (added ones go), sized to the scene. */
   reset(bounds: Bounds): void {
     this.deselect();
+    this.defaults = false;
     for (const name of [...this.markers.keys()]) {
       if (!(VIEWPOINT_NAMES as string[]).includes(name)) this.remove(name);
     }
@@ -167,19 +188,63 @@ export class ViewpointMarkers {
     this.onChange?.();
   }
 
-  /**
-   * The markers at a scan's stations instead of the pattern's three (the
-   * default viewpoints of -poc and -fscan for such a cloud), named after them.
-   */
+  /** The markers at planned stations, named after them. */
   placeStations(stations: readonly { name: string; position: Vec3 }[]): void {
+    this.place("station", stations);
+    this.defaults = false;
+    this.onChange?.();
+  }
+
+  /**
+   * The markers at a cloud job's default viewpoints (the server's, which the
+   * CLI takes with no viewpoint given), named as the job names them; `size`
+   * of the scene, as reset takes it.
+   */
+  placeDefaults(
+    viewpoints: readonly { name: string; position: Vec3; outside: boolean }[],
+    bounds: Bounds,
+  ): void {
+    this.size = diagonal(bounds) * 0.012;
+    this.place("default", viewpoints).forEach((marker, k) => {
+      marker.placed = { position: [...viewpoints[k]!.position], outside: viewpoints[k]!.outside };
+    });
+    this.defaults = true;
+    this.onChange?.();
+  }
+
+  /**
+   * Whether the enabled markers are still a job's defaults, all of them, none
+   * moved: then a job may be sent no viewpoints and take its own, as the CLI would.
+   */
+  get atDefaults(): boolean {
+    return (
+      this.defaults &&
+      [...this.markers.values()].every((m) => m.enabled && this.atPlacedPosition(m))
+    );
+  }
+
+  /** Whether the job warns at this marker, when it is still where the server placed it; else null. */
+  placedOutside(name: MarkerId): boolean | null {
+    const marker = this.markers.get(name);
+    return marker && this.atPlacedPosition(marker) ? marker.placed!.outside : null;
+  }
+
+  private atPlacedPosition(marker: Marker): boolean {
+    const placed = marker.placed?.position;
+    return (
+      placed !== undefined && marker.object.position.toArray().every((x, a) => x === placed[a])
+    );
+  }
+
+  private place(prefix: string, list: readonly { name: string; position: Vec3 }[]): Marker[] {
     this.deselect();
     for (const name of [...this.markers.keys()]) this.remove(name);
-    stations.forEach((station, k) => {
-      const marker = this.create(`station${k + 1}`, station.name);
-      marker.object.position.set(...station.position);
+    return list.map((entry, k) => {
+      const marker = this.create(`${prefix}${k + 1}`, entry.name);
+      marker.object.position.set(...entry.position);
       marker.object.scale.setScalar(this.size);
+      return marker;
     });
-    this.onChange?.();
   }
 
   /** Gives a marker another colour (0xRRGGBB): its sphere, glow, light, rays and list entry. */

@@ -5,6 +5,7 @@ import type { JobReport } from "../results";
 import { num } from "../results";
 import { h } from "./dom";
 import { fixed, integer, ms, percent, point } from "./format";
+import { reproduceBlock } from "./reproduce_view";
 import { card, facts, headline, table, warnings } from "./results_panel";
 import type { Heading } from "./results_panel";
 
@@ -95,6 +96,7 @@ export function occlusionCard(report: JobReport, names: string[] = []): HTMLElem
   // -rgoc keeps the estimated mesh's counts under `mesh`.
   const mesh = (report.mesh ?? {}) as Record<string, unknown>;
   const count = (key: string) => integer(num(report[key]) ?? num(mesh[key]));
+  const outside = num(report.outside_view_rays) ?? 0;
   const pairs: [string, string][] = isMesh
     ? [
         ["visible area", `${fixed(num(report.visible_area), 2)} m²`],
@@ -111,11 +113,20 @@ export function occlusionCard(report: JobReport, names: string[] = []): HTMLElem
         ["time", seconds(report)],
       ]
     : [
+        // The counts that make the level (the server's level_counts says it in a sentence).
         ["rays", integer(num(report.rays))],
+        ...(outside > 0
+          ? ([
+              ["outside the view", integer(outside)],
+              ["inside the view", integer(num(report.rays_in_view))],
+            ] as [string, string][])
+          : []),
         ["occlusion rays", integer(num(report.occlusion_rays))],
+        ["hit a point", integer(num(report.hits))],
         ["through openings", integer(num(report.through_openings))],
         ["openings", integer(num(report.openings))],
         ["points", integer(num(report.points))],
+        ["viewpoints", String(report.viewpoint_source ?? "—")],
         ["time", seconds(report)],
       ];
   const polygonPath = report.parameters?.polygon_path;
@@ -125,8 +136,11 @@ export function occlusionCard(report: JobReport, names: string[] = []): HTMLElem
       : [
           names[i] ?? v.name ?? `#${i + 1}`,
           point(v.position),
-          percent(v.occlusion_level, 2),
+          v.level_counts
+            ? h("span", { text: percent(v.occlusion_level, 2), title: v.level_counts })
+            : percent(v.occlusion_level, 2),
           integer(v.occlusion_rays),
+          integer(v.rays_in_view ?? v.rays),
           integer(v.through_openings),
         ],
   );
@@ -135,8 +149,16 @@ export function occlusionCard(report: JobReport, names: string[] = []): HTMLElem
     : [
         "viewpoint",
         "position",
-        { label: "occl.", title: "occlusion level: the share of its rays that escaped" },
+        {
+          label: "occl.",
+          title: "occlusion level: its occlusion rays over the rays it counts (escaped / of)",
+        },
         { label: "escaped", title: "occlusion rays: rays that left through gaps" },
+        {
+          label: "of",
+          title:
+            "the rays the level counts: all it sent, but those outside the view (directions the scan never measured)",
+        },
         { label: "open.", title: "rays that left through the openings" },
       ];
   const groups = isMesh ? groupTable(report) : null;
@@ -148,6 +170,13 @@ export function occlusionCard(report: JobReport, names: string[] = []): HTMLElem
         : "Point-cloud occlusion (-poc)",
     [
       headline("Occlusion level", percent(level, 2), "occlusion-level", level),
+      typeof report.level_counts === "string"
+        ? h("div", {
+            class: "mt-1 text-xs text-slate-300",
+            text: report.level_counts,
+            testid: "level-counts",
+          })
+        : null,
       facts(pairs),
       isMesh ? null : pointModelLine(report),
       typeof polygonPath === "string" && polygonPath
@@ -161,6 +190,7 @@ export function occlusionCard(report: JobReport, names: string[] = []): HTMLElem
       // viewpoint's name and position may wrap.
       h("div", { class: "mt-3" }, [table(head, rows, "viewpoint-table", true, [0, 1])]),
       groups,
+      reproduceBlock(report),
       warnings(report.warnings),
     ],
     "occlusion-card",
@@ -206,6 +236,7 @@ export function scanCard(report: JobReport, names: string[] = []): HTMLElement {
       facts([
         ["visible points", integer(num(report.visible_points))],
         ["points", integer(num(report.points))],
+        ["viewpoints", String(report.viewpoint_source ?? "—")],
         ["time", seconds(report)],
       ]),
       pointModelLine(report),
@@ -234,6 +265,7 @@ export function scanCard(report: JobReport, names: string[] = []): HTMLElement {
             ),
           ])
         : null,
+      reproduceBlock(report),
       warnings(report.warnings),
     ],
     "scan-card",

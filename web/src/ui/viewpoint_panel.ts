@@ -5,6 +5,7 @@
 // the centre of the view.
 
 import type { Vec3 } from "../decode/types";
+import type { DefaultViewpoints } from "../results";
 import { BUTTON_SMALL, clear, h } from "./dom";
 
 export interface ViewpointRow {
@@ -26,8 +27,36 @@ export interface ViewpointActions {
 
 const AXES = ["x", "y", "z"] as const;
 
+/** What the panel says above the list: where the viewpoints come from and the job's warnings. */
+export interface DefaultsNote {
+  text: string;
+  warnings: string[];
+}
+
+/**
+ * The note for a cloud's -poc defaults (null without them): while the markers
+ * are still the defaults, the job's warnings about them, which the CLI gives
+ * for the same defaults (e.g. that the data disagree with up).
+ */
+export function defaultsNote(
+  defaults: DefaultViewpoints | undefined,
+  atDefaults: boolean,
+): DefaultsNote | null {
+  if (!defaults) return null;
+  return atDefaults
+    ? {
+        text: `-poc's default viewpoints (${defaults.viewpoint_source}): the CLI's with none given`,
+        warnings: defaults.warnings,
+      }
+    : {
+        text: `changed from -poc's defaults (${defaults.viewpoint_source}); Reset positions puts them back`,
+        warnings: [],
+      };
+}
+
 export class ViewpointPanel {
   private readonly list = h("div", { class: "space-y-2", testid: "viewpoint-list" });
+  private readonly note = h("div", { class: "mb-2 text-[11px] leading-snug text-slate-400" });
   private shape = "";
 
   constructor(
@@ -35,6 +64,7 @@ export class ViewpointPanel {
     private readonly actions: ViewpointActions,
   ) {
     container.append(
+      this.note,
       this.list,
       h("button", {
         class: `${BUTTON_SMALL} mt-2`,
@@ -46,8 +76,17 @@ export class ViewpointPanel {
     );
   }
 
-  /** Shows the rows; inputs being typed in keep their text. */
-  render(rows: ViewpointRow[]): void {
+  /** Shows the rows and the note; inputs being typed in keep their text. */
+  render(rows: ViewpointRow[], note: DefaultsNote | null = null): void {
+    clear(this.note);
+    if (note) {
+      this.note.append(
+        h("p", { text: note.text, testid: "viewpoint-defaults" }),
+        ...note.warnings.map((w) =>
+          h("p", { class: "text-amber-300", text: `⚠ ${w}`, testid: "viewpoint-defaults-warning" }),
+        ),
+      );
+    }
     const shape = rows.map((r) => `${r.name}:${r.enabled}`).join(",");
     if (shape !== this.shape) {
       this.shape = shape;

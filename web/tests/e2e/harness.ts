@@ -241,57 +241,65 @@ export async function openPage(browser: Browser, url: string) {
   return { page, problems, sent };
 }
 
-/** The CLI flag of each job command (occlusion --help). */
-const CLI_FLAG: Record<string, string> = {
-  cloud_occlusion: "-poc",
-  scan: "-fscan",
-  mesh_occlusion: "-moc",
-  region_growing_occlusion: "-rgoc",
-};
+/** Where the Python module of the server's build is (build/python beside build/occlusion). */
+export const PYTHON_DIR = process.env.OCCLUSION_PYTHON_DIR ?? join(dirname(SERVER_BIN), "python");
 
-/**
- * The command line that runs a request's job with the CLI: the same keys as
- * options (`--num-rays-per-vp 5000`, `--viewpoint X,Y,Z` per viewpoint), the
- * paths inside `dataDir` as the server resolves them, outputs in `outDir`.
- */
-export function cliArgs(
-  request: Pick<SentRequest, "command" | "params">,
-  dataDir: string,
-  outDir: string,
-): string[] {
-  const flag = CLI_FLAG[request.command];
-  if (!flag) throw new Error(`e2e: no CLI command for '${request.command}'`);
-  const { path, ...params } = request.params;
-  const args = [flag, join(dataDir, String(path))];
-  for (const [key, value] of Object.entries(params)) {
-    const option = `--${key.replace(/_/g, "-")}`;
-    if (key === "viewpoints") {
-      for (const v of value as number[][]) args.push("--viewpoint", v.join(","));
-    } else if (key.endsWith("_path")) args.push(option, join(dataDir, String(value)));
-    else if (Array.isArray(value)) args.push(option, value.join(","));
-    else args.push(option, String(value));
-  }
-  return [...args, "--out", outDir, "--json"];
-}
-
-/** Runs the CLI (the server's binary) and returns the report it prints with --json. */
-export function runCli(args: string[], timeoutMs = 120_000): Promise<Record<string, unknown>> {
+function run(
+  file: string,
+  args: string[],
+  options: { cwd: string; env?: NodeJS.ProcessEnv },
+  timeoutMs: number,
+): Promise<Record<string, unknown>> {
   return new Promise((done, fail) => {
     execFile(
-      SERVER_BIN,
+      file,
       args,
-      { timeout: timeoutMs, maxBuffer: 64 << 20 },
+      { ...options, timeout: timeoutMs, maxBuffer: 64 << 20 },
       (error, stdout, stderr) => {
         if (error) {
-          fail(
-            new Error(`e2e: ${SERVER_BIN} ${args.join(" ")} failed: ${error.message}\n${stderr}`),
-          );
+          fail(new Error(`e2e: ${file} ${args.join(" ")} failed: ${error.message}\n${stderr}`));
           return;
         }
         done(JSON.parse(stdout) as Record<string, unknown>);
       },
     );
   });
+}
+
+/**
+ * Runs a command line the viewer shows ("occlusion -poc PATH ..." as the
+ * server wrote it, shell-quoted) in `dir` with the server's binary, and
+ * returns the report it prints with --json.
+ */
+export function runCommandLine(
+  command: string,
+  dir: string,
+  timeoutMs = 120_000,
+): Promise<Record<string, unknown>> {
+  if (!command.startsWith("occlusion ")) throw new Error(`e2e: not a command line: ${command}`);
+  const script = `exec "$0" ${command.slice("occlusion ".length)} --json -q`;
+  return run("/bin/sh", ["-c", script, SERVER_BIN], { cwd: dir }, timeoutMs);
+}
+
+/**
+ * Runs a Python call the viewer shows ("occlusion.cloud_occlusion(...)") in
+ * `dir` with the build's module, and returns its report; null when the build
+ * has no Python module.
+ */
+export function runPythonCall(
+  call: string,
+  dir: string,
+  timeoutMs = 120_000,
+): Promise<Record<string, unknown>> | null {
+  if (!existsSync(PYTHON_DIR)) return null;
+  const script = `import json, occlusion\nprint(json.dumps((${call}).report))`;
+  const env = { ...process.env, PYTHONPATH: PYTHON_DIR };
+  return run("/usr/bin/python3", ["-c", script], { cwd: dir, env }, timeoutMs);
+}
+
+/** Runs the CLI (the server's binary) and returns the report it prints with --json. */
+export function runCli(args: string[], timeoutMs = 120_000): Promise<Record<string, unknown>> {
+  return run(SERVER_BIN, args, { cwd: process.cwd() }, timeoutMs);
 }
 
 export async function screenshot(page: Page, name: string): Promise<string> {

@@ -36,6 +36,8 @@ const app = () => page.evaluate(() => (window as any).__occlusion.app !== undefi
 const markerPosition = (name: string) =>
   page.evaluate((n) => (window as any).__occlusion.app.ctx.markers.position(n) as V, name);
 const row = (name: string) => page.locator(`[data-testid=viewpoint-row][data-viewpoint="${name}"]`);
+/** The markers of -poc's default grid of 9, as the viewer names them. */
+const NAMES = Array.from({ length: 9 }, (_, k) => `default${k + 1}`);
 
 describe("a real-like scan: stray points, no colour (e2e)", () => {
   beforeAll(async () => {
@@ -55,7 +57,7 @@ describe("a real-like scan: stray points, no colour (e2e)", () => {
     await stopAll(browser, server);
   });
 
-  test("frames the room, not the stray points; pattern viewpoints inside the room", async () => {
+  test("frames the room, not the stray points; -poc's default viewpoints inside the room", async () => {
     await expect
       .poll(() => page.locator("[data-testid=status-scene]").textContent(), { timeout: 30_000 })
       .toContain(`${points.toLocaleString("en-US")} points`);
@@ -76,15 +78,18 @@ describe("a real-like scan: stray points, no colour (e2e)", () => {
       expect(Math.abs(view.target[a]! - (ROOM.min[a]! + ROOM.max[a]!) / 2)).toBeLessThan(0.2);
     }
     expect(view.distance).toBeLessThan(20); // the room's diagonal is 8.4 m
-    for (const name of ["centre", "max", "min"]) {
+    // The server's defaults (-poc's grid of 9 at mid-height), as the CLI places them.
+    expect(NAMES.length).toBe(9);
+    for (const name of NAMES) {
       const p = await markerPosition(name);
       p.forEach((x, a) => {
         expect(x).toBeGreaterThan(ROOM.min[a]!);
         expect(x).toBeLessThan(ROOM.max[a]!);
       });
+      expect(Math.abs(p[2] - 1.5)).toBeLessThan(0.1);
     }
-    // Centre: the room's centre (6/2, 5/2, 3/2), within the quantiles' noise.
-    const centre = await markerPosition("centre");
+    // The grid's middle one: the room's centre (6/2, 5/2, 3/2), within the quantiles' noise.
+    const centre = await markerPosition("default5");
     [3, 2.5, 1.5].forEach((c, a) => expect(Math.abs(centre[a]! - c)).toBeLessThan(0.1));
     // Seen from outside, the near walls are cut away (the x and y slabs on the camera's side).
     const cut = () =>
@@ -101,23 +106,23 @@ describe("a real-like scan: stray points, no colour (e2e)", () => {
   });
 
   test("viewpoints: typed coordinates, add, remove, look from, warnings", async () => {
-    await expect.poll(() => page.locator("[data-testid=viewpoint-row]").count()).toBe(3);
+    await expect.poll(() => page.locator("[data-testid=viewpoint-row]").count()).toBe(9);
     // Typing x, y, z moves the marker exactly there.
-    const inputs = row("centre").locator("input[data-axis]");
+    const inputs = row("default5").locator("input[data-axis]");
     await inputs.nth(0).fill("2.25");
     await inputs.nth(1).fill("1.75");
     await inputs.nth(2).fill("1.2");
     await inputs.nth(2).press("Enter");
     await inputs.nth(2).blur();
-    expect(await markerPosition("centre")).toEqual([2.25, 1.75, 1.2]);
+    expect(await markerPosition("default5")).toEqual([2.25, 1.75, 1.2]);
     await expect
-      .poll(() => row("centre").locator("[data-testid=viewpoint-warning]").isVisible())
+      .poll(() => row("default5").locator("[data-testid=viewpoint-warning]").isVisible())
       .toBe(false);
     // Outside the room: warned.
     await inputs.nth(0).fill("9");
     await inputs.nth(0).press("Enter");
     await expect
-      .poll(() => row("centre").locator("[data-testid=viewpoint-warning]").textContent())
+      .poll(() => row("default5").locator("[data-testid=viewpoint-warning]").textContent())
       .toContain("outside the occupied space");
     // Inside an object: on a scanned point of the table top (z 0.75 m), to the millimetre.
     // Of the points at that height, the one nearest the table's centre (3, 2): walls have points at
@@ -141,29 +146,29 @@ describe("a real-like scan: stray points, no colour (e2e)", () => {
     await inputs.nth(2).fill("0.751");
     await inputs.nth(2).press("Enter");
     await expect
-      .poll(() => row("centre").locator("[data-testid=viewpoint-warning]").textContent())
+      .poll(() => row("default5").locator("[data-testid=viewpoint-warning]").textContent())
       .toContain("inside an object");
     await inputs.nth(2).fill("1.5");
     await inputs.nth(2).press("Enter");
     await expect
-      .poll(() => row("centre").locator("[data-testid=viewpoint-warning]").isVisible())
+      .poll(() => row("default5").locator("[data-testid=viewpoint-warning]").isVisible())
       .toBe(false);
     // Add one, then remove it.
     await page.locator("[data-testid=viewpoint-add]").click();
-    await expect.poll(() => page.locator("[data-testid=viewpoint-row]").count()).toBe(4);
+    await expect.poll(() => page.locator("[data-testid=viewpoint-row]").count()).toBe(10);
     await screenshot(page, "real-02-viewpoint-added");
     await page
       .locator("[data-testid=viewpoint-row]")
-      .nth(3)
+      .nth(9)
       .locator("[data-testid=viewpoint-remove]")
       .click();
-    await expect.poll(() => page.locator("[data-testid=viewpoint-row]").count()).toBe(3);
-    // Look from Viewpoint Max: the camera stands on it.
-    await row("max").locator("[data-testid=viewpoint-look]").click();
+    await expect.poll(() => page.locator("[data-testid=viewpoint-row]").count()).toBe(9);
+    // Look from the last viewpoint: the camera stands on it.
+    await row("default9").locator("[data-testid=viewpoint-look]").click();
     const eye = await page.evaluate(
       () => (window as any).__occlusion.app.ctx.viewer.camera.position.toArray() as V,
     );
-    const max = await markerPosition("max");
+    const max = await markerPosition("default9");
     eye.forEach((x, a) => expect(x).toBeCloseTo(max[a]!, 6));
     // From inside the room nothing is cut.
     await page.evaluate(() => (window as any).__occlusion.app.ctx.viewer.nextFrame());
@@ -194,7 +199,7 @@ describe("a real-like scan: stray points, no colour (e2e)", () => {
         total: set.total as number[],
         visible: ctx.rays.visible as boolean,
         colours: ctx.rays.segmentColours() as V[],
-        markers: ["centre", "max", "min"].map((n) => ctx.markers.colour(n) as V),
+        markers: [...ctx.markers.markers.keys()].map((n) => ctx.markers.colour(n) as V),
         positions: Array.from(p),
         extent: ctx.view.info.extent,
       };
@@ -223,7 +228,7 @@ describe("a real-like scan: stray points, no colour (e2e)", () => {
     // Shown when few, hidden when many; a key in the same colours either way.
     const escaped = rays.total.reduce((a, b) => a + b, 0);
     expect(rays.visible).toBe(escaped <= hiddenAbove);
-    expect(await page.locator("[data-testid=rays-legend-row]").count()).toBe(3);
+    expect(await page.locator("[data-testid=rays-legend-row]").count()).toBe(9);
     await screenshot(page, "real-03-escape-rays");
     // A later job replaces the result: its rays go.
     if (

@@ -6,17 +6,18 @@
 // Screenshots of every step go to web/test-artifacts/.
 
 import { existsSync, mkdirSync, readFileSync, writeFileSync } from "node:fs";
-import { dirname, join } from "node:path";
+import { join } from "node:path";
 import type { Browser, Page } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, test } from "vitest";
 import {
   ARTIFACTS,
   canvasForeground,
-  cliArgs,
   launchBrowser,
   openPage,
   prepareData,
   runCli,
+  runCommandLine,
+  runPythonCall,
   screenshot,
   startServer,
   stopAll,
@@ -31,7 +32,7 @@ let page: Page;
 let problems: string[];
 let sent: SentRequest[];
 /** The viewer's and the CLI's figures on the same requests, for test-artifacts/cli-vs-viewer.json. */
-const comparisons: Record<string, unknown>[] = [];
+const comparisons: { cli: Record<string, unknown>; [key: string]: unknown }[] = [];
 
 /** The newest request the page sent for `command`. */
 function lastSent(command: string): SentRequest {
@@ -41,33 +42,50 @@ function lastSent(command: string): SentRequest {
 }
 
 /**
- * Runs the viewer's last -poc and -fscan requests with the CLI and expects its
+ * Runs the command lines the -poc and -fscan cards show (the server's
+ * `reproduce`) in the data directory, and the Python calls, and expects their
  * answers: occlusion_level and visible_fraction as the cards show them (the
- * server's figures, to 1e-12), and the point model the CLI traced with.
+ * server's figures, to 1e-12), the level's counts as the card says them, and
+ * returns the point model the CLI traced with.
  */
 async function expectCliAnswers(label: string): Promise<Record<string, unknown>> {
-  const out = join(dirname(server.dataDir), `cli-${label}`);
-  const poc = lastSent("cloud_occlusion");
-  const scan = lastSent("scan");
-  const cliPoc = await runCli(cliArgs(poc, server.dataDir, out));
-  const cliScan = await runCli(cliArgs(scan, server.dataDir, out));
-  const card = (testid: string, figure: string) =>
-    page.locator(`[data-testid=${testid}] [data-testid=${figure}]`).getAttribute("data-value");
+  const shown = (card: string, testid: string) =>
+    page.locator(`[data-testid=${card}] [data-testid=${testid}]`).first().textContent();
+  const figure = (card: string, testid: string) =>
+    page.locator(`[data-testid=${card}] [data-testid=${testid}]`).getAttribute("data-value");
+  const commands = {
+    poc: (await shown("occlusion-card", "reproduce-cli"))!,
+    scan: (await shown("scan-card", "reproduce-cli"))!,
+  };
+  const cliPoc = await runCommandLine(commands.poc, server.dataDir);
+  const cliScan = await runCommandLine(commands.scan, server.dataDir);
   const viewer = {
-    occlusion_level: Number(await card("occlusion-card", "occlusion-level")),
-    visible_fraction: Number(await card("scan-card", "visible-fraction")),
+    occlusion_level: Number(await figure("occlusion-card", "occlusion-level")),
+    level_counts: await shown("occlusion-card", "level-counts"),
+    visible_fraction: Number(await figure("scan-card", "visible-fraction")),
   };
   const cli = {
     occlusion_level: cliPoc.occlusion_level as number,
+    level_counts: cliPoc.level_counts as string,
     visible_fraction: cliScan.visible_fraction as number,
   };
   const model = cliPoc.point_model as Record<string, unknown>;
-  comparisons.push({ label, poc: poc.params, scan: scan.params, viewer, cli, point_model: model });
-  console.log(`cli vs viewer (${label}): ${JSON.stringify({ viewer, cli })}`);
+  comparisons.push({ label, commands, viewer, cli, point_model: model });
+  console.log(`cli vs viewer (${label}): ${JSON.stringify({ commands, viewer, cli })}`);
   expect(typeof cli.occlusion_level).toBe("number");
   expect(typeof cli.visible_fraction).toBe("number");
   expect(Math.abs(viewer.occlusion_level - cli.occlusion_level)).toBeLessThanOrEqual(1e-12);
+  expect(viewer.level_counts).toBe(cli.level_counts);
   expect(Math.abs(viewer.visible_fraction - cli.visible_fraction)).toBeLessThanOrEqual(1e-12);
+  const python = runPythonCall(
+    (await shown("occlusion-card", "reproduce-python"))!,
+    server.dataDir,
+  );
+  if (python) {
+    const report = await python;
+    expect(report.occlusion_level).toBe(cli.occlusion_level);
+    expect(report.level_counts).toBe(cli.level_counts);
+  }
   return model;
 }
 
@@ -159,7 +177,7 @@ describe("viewer (e2e)", () => {
       await page
         .locator("[data-testid=occlusion-card] [data-testid=viewpoint-table] tbody tr")
         .count(),
-    ).toBe(3);
+    ).toBe(9); // -poc's default: a grid of 9, as the CLI's
     await expect.poll(() => page.locator("[data-testid=job]").count()).toBe(0);
     await screenshot(page, "03-occlusion");
   });
@@ -192,7 +210,7 @@ describe("viewer (e2e)", () => {
         return { left, right, lastCells };
       });
       await screenshot(page, "03-occlusion-1280x800");
-      expect(overflow.lastCells.length).toBe(4); // the heading and three viewpoints
+      expect(overflow.lastCells.length).toBe(10); // the heading and nine viewpoints
       for (const cell of overflow.lastCells) {
         expect(cell.left, JSON.stringify({ cell, overflow })).toBeGreaterThanOrEqual(
           overflow.left - 0.5,
@@ -211,11 +229,24 @@ describe("viewer (e2e)", () => {
     const poc = lastSent("cloud_occlusion");
     const scan = lastSent("scan");
     expect(poc.params.path).toBe(ROOM);
-    for (const key of ["point_radius", "primitive", "num_rays_per_vp"]) {
+    // The markers are still -poc's defaults: no viewpoints either; each job takes its own.
+    for (const key of ["point_radius", "primitive", "num_rays_per_vp", "viewpoints"]) {
       expect(poc.params).not.toHaveProperty(key);
     }
-    for (const key of ["point_radius", "primitive"]) expect(scan.params).not.toHaveProperty(key);
+    for (const key of ["point_radius", "primitive", "viewpoints"]) {
+      expect(scan.params).not.toHaveProperty(key);
+    }
     const model = await expectCliAnswers("defaults");
+    // ... which is the CLI's answer with nothing given but the openings file the viewer uses.
+    const openings = poc.params.polygon_path;
+    const plain = await runCli([
+      "-poc",
+      join(server.dataDir, ROOM),
+      ...(openings ? ["--polygon-path", join(server.dataDir, String(openings))] : []),
+      "--json",
+      "-q",
+    ]);
+    expect(plain.occlusion_level).toBe(comparisons.at(-1)!.cli.occlusion_level);
     expect(model).toMatchObject({ primitive: "disc", point_radius_auto: true });
     // The cards say which model traced the rays.
     const line = page.locator("[data-testid=occlusion-card] [data-testid=point-model]");
@@ -320,20 +351,20 @@ describe("viewer (e2e)", () => {
       page.evaluate(() => {
         const app = (window as any).__occlusion.app;
         const viewer = app.ctx.viewer;
-        const p = app.ctx.markers.vector("centre").project(viewer.camera);
+        const p = app.ctx.markers.vector("default5").project(viewer.camera);
         const r = viewer.renderer.domElement.getBoundingClientRect();
         return { x: r.left + ((p.x + 1) / 2) * r.width, y: r.top + ((1 - p.y) / 2) * r.height };
       });
     const position = () =>
       page.evaluate(
-        () => (window as any).__occlusion.app.ctx.markers.position("centre") as number[],
+        () => (window as any).__occlusion.app.ctx.markers.position("default5") as number[],
       );
     const before = await position();
     const at = await screen();
     await page.mouse.click(at.x, at.y); // selects the marker: a transform gizmo appears
     await expect
       .poll(() => page.evaluate(() => (window as any).__occlusion.app.ctx.markers.selection))
-      .toBe("centre");
+      .toBe("default5"); // the grid's middle one
     await page.mouse.move(at.x, at.y, { steps: 2 });
     await page.mouse.down();
     await page.mouse.move(at.x + 60, at.y + 25, { steps: 10 });
@@ -350,7 +381,7 @@ describe("viewer (e2e)", () => {
         async () => {
           const text = await page
             .locator("[data-testid=occlusion-card] [data-testid=viewpoint-table] tbody tr")
-            .first()
+            .nth(4)
             .textContent();
           return text ?? "";
         },
@@ -601,6 +632,18 @@ describe("viewer (e2e)", () => {
       .locator("input[data-axis]")
       .evaluateAll((inputs) => inputs.map((input) => Number((input as HTMLInputElement).value)));
     expect(south).toEqual([3, 0.5, 1.25]);
+    // Both stand above the scanned floor, outside the box of the points, as
+    // scanners do: no warning at a station, as the CLI gives none (issue 41).
+    const warning = (row: number) =>
+      rows.nth(row).locator("[data-testid=viewpoint-warning]").isVisible();
+    expect([await warning(0), await warning(1)]).toEqual([false, false]);
+    // Moved off its station, the same place warns, as the CLI would there.
+    const z = rows.nth(1).locator("input[data-axis]").nth(2);
+    await z.fill("1.3");
+    await z.press("Enter");
+    await expect
+      .poll(() => rows.nth(1).locator("[data-testid=viewpoint-warning]").textContent())
+      .toContain("outside the occupied space");
   });
 
   test("no uncaught errors in the page", () => {

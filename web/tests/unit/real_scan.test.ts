@@ -10,6 +10,7 @@ import { evenSample, exitDistance, rayGeometry } from "../../src/scene/escape_ra
 import { nearestDistance, viewpointWarning } from "../../src/scene/viewpoint_checks";
 import { SETTINGS, adoptServerKeys } from "../../src/settings_defaults";
 import { significantDecimals } from "../../src/ui/format";
+import { defaultsNote } from "../../src/ui/viewpoint_panel";
 
 const BOX: Bounds = { min: [0, 0, 0], max: [6, 5, 3] };
 
@@ -155,6 +156,29 @@ describe("viewpoint warnings", () => {
     expect(viewpointWarning([7, 2, 1], BOX, cloud, 0.06)).toContain("outside");
     expect(viewpointWarning([3, 2, 0.78], BOX, cloud, 0.06)).toContain("inside an object");
     expect(viewpointWarning([3, 2, 1.5], BOX, cloud, 0.06)).toBeNull();
+  });
+
+  test("a default viewpoint takes the job's answer: a station outside the box is no warning", () => {
+    expect(viewpointWarning([7, 2, 1], BOX, cloud, 0.06, false)).toBeNull();
+    expect(viewpointWarning([3, 2, 1.5], BOX, cloud, 0.06, true)).toContain("outside");
+  });
+});
+
+describe("default viewpoints note", () => {
+  const defaults = {
+    viewpoint_source: "num_vp 9",
+    viewpoints: [
+      { name: "viewpoint_1", position: [1, 2, 3] as Vec3, outside_occupied_space: false },
+    ],
+    warnings: ["up is +z, but the largest flat structure is perpendicular to y"],
+  };
+
+  test("the job's warnings show while the markers are its defaults, and only then", () => {
+    const at = defaultsNote(defaults, true)!;
+    expect(at.text).toContain("num_vp 9");
+    expect(at.warnings).toEqual(defaults.warnings);
+    expect(defaultsNote(defaults, false)!.warnings).toEqual([]);
+    expect(defaultsNote(undefined, true)).toBeNull();
   });
 });
 
