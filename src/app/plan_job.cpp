@@ -476,6 +476,7 @@ PlanReport run_plan(const PlanRequest& request, const Progress& progress) {
     report.load_seconds = load_seconds;
     report.dropped_nan = loaded.dropped_nan;
     report.skipped_lines = loaded.skipped_lines;
+    job::add_read_warnings(loaded, report.warnings);
   }
 
   if (!request.out.empty()) {
