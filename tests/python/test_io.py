@@ -100,6 +100,14 @@ def test_e57_reads():
         occlusion.read_cloud(str(ROOT / "files" / "e57" / "bad-crc.e57"))
 
 
+def test_read_cloud_docstring_names_every_file_kind_it_reads():
+    doc = occlusion.read_cloud.__doc__
+    for path in (PCL_DATA / "room_scan1.pcd", ROOT / "files" / "e57" / "ColouredCubeFloat.e57",
+                 ROOT / "files" / "las" / "simple.las"):
+        assert len(occlusion.read_cloud(str(path))) > 0
+        assert path.suffix in doc, f"{path.suffix} is read but not named: {doc}"
+
+
 def test_las_sample_reads_with_its_classes():
     cloud = occlusion.read_cloud(str(ROOT / "files" / "las" / "simple.las"))
     assert len(cloud) == 1065
