@@ -83,17 +83,19 @@ void write_evaluation_markdown(const std::string& path, const EvaluateReport& re
 namespace occlusion {
 
 std::string no_ground_truth_note(const SegmentationMetrics& metrics) {
-  std::string names;
+  std::size_t none = 0;
   bool predicted = false;
   bool averaged = false;
   for (const auto& c : metrics.classes) {
     if (c.support > 0) continue;
-    names += (names.empty() ? "" : ", ") + c.name;
+    ++none;
     predicted = predicted || c.fp > 0;
     averaged = averaged || c.averaged;
   }
-  if (names.empty()) return "";
-  std::string note = std::string(kNoGroundTruth) + ": no ground-truth point of " + names + ". ";
+  if (none == 0) return "";
+  // The table names them; the note says what their cells mean.
+  std::string note = std::string(kNoGroundTruth) + ": " + std::to_string(none) +
+                     (none == 1 ? " class has" : " classes have") + " no ground-truth point. ";
   note += predicted ? "Predicted, such a class has IoU and F1 0 (false positives alone), as "
                       "ScanNet's script reports it; never predicted, none"
                     : "Never predicted, such a class has no IoU (0/0; ScanNet's script's nan)";

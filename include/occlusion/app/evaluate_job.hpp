@@ -131,7 +131,7 @@ EvaluateReport run_evaluate(const EvaluateRequest& request, const Progress& prog
 
 // The tables (text, Markdown) show a class without ground-truth points as
 // having none (kNoGroundTruth in its IoU and F1 cells) rather than a 0 that
-// reads as a score; this note, empty when every class has some, names them
+// reads as a score; this note, empty when every class has some, counts them
 // and says whether the means take them in (the rule of `metrics`).
 inline constexpr const char* kNoGroundTruth = "no gt";
 std::string no_ground_truth_note(const SegmentationMetrics& metrics);
