@@ -47,6 +47,7 @@ struct CloudArrays {
   std::size_t dropped_nan = 0;
   std::size_t skipped_lines = 0;
   std::vector<std::string> rooms;
+  std::vector<std::string> warnings;  // CloudReadReport::warnings
 };
 
 struct MeshArrays {
@@ -92,6 +93,7 @@ CloudArrays make_cloud_arrays(PointCloud cloud, CloudReadReport report) {
   out.dropped_nan = report.dropped_nan;
   out.skipped_lines = report.skipped_lines;
   out.rooms = std::move(report.rooms);
+  out.warnings = std::move(report.warnings);
   return out;
 }
 
@@ -246,6 +248,10 @@ void bind_io(py::module_& m) {
       .def_readonly("skipped_lines", &CloudArrays::skipped_lines,
                     "Bad text lines skipped (skip_bad_lines=True)")
       .def_readonly("rooms", &CloudArrays::rooms, "S3DIS room folders, in reading order")
+      .def_readonly("warnings", &CloudArrays::warnings,
+                    "What reading found that the user should know, one sentence each (a "
+                    "depth frame's depths beyond what indoor sensors measure); the jobs "
+                    "report the same among their warnings")
       .def("__len__", [](const CloudArrays& c) { return c.positions.shape(0); })
       .def("__repr__", [](const CloudArrays& c) {
         return "<occlusion.Cloud of " + std::to_string(c.positions.shape(0)) + " points>";
