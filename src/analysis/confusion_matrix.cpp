@@ -153,7 +153,8 @@ SegmentationMetrics compute_metrics(const ConfusionMatrix& matrix, MeanOver mean
     metrics.correct += m.tp;
     metrics.other += matrix.count(c, matrix.other_column());
     if (m.support > 0) ++metrics.classes_with_support;
-    if (averaged(m, mean_over)) {
+    m.averaged = averaged(m, mean_over);
+    if (m.averaged) {
       ++metrics.classes_averaged;
       iou_sum += m.iou.value_or(0.0);
       recall_sum += m.recall.value_or(0.0);

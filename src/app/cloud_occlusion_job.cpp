@@ -294,6 +294,7 @@ CloudOcclusionReport run_cloud_occlusion(const CloudOcclusionRequest& request,
       request, progress);
   report.dropped_nan = loaded.dropped_nan;
   report.skipped_lines = loaded.skipped_lines;
+  job::add_read_warnings(loaded, report.warnings);
   report.station_filter = filtered;
   report.load_seconds = load_seconds;
 

@@ -15,10 +15,16 @@ namespace occlusion {
 
 namespace {
 
-Json::Value mapping_json(const ClassMapping& mapping, const EvaluateRequest& q) {
+Json::Value mapping_json(const EvaluateReport& report) {
+  const ClassMapping& mapping = report.mapping;
+  const EvaluateRequest& q = report.request;
   Json::Value json(Json::objectValue);
-  json["builtin"] = q.class_mapping;
-  json["source"] = q.mapping_path.empty() ? "built-in " + q.class_mapping : q.mapping_path;
+  json["builtin"] = report.class_mapping;
+  json["requested"] = q.class_mapping;
+  json["chosen_because"] = report.class_mapping_reason.empty()
+                               ? Json::Value()
+                               : Json::Value(report.class_mapping_reason);
+  json["source"] = q.mapping_path.empty() ? "built-in " + report.class_mapping : q.mapping_path;
   json["ignore"] = mapping.ignore_id();
   json["ignored_classes"] =
       to_json(std::vector<std::string>(mapping.ignored().begin(), mapping.ignored().end()));
@@ -124,9 +130,16 @@ EvaluateReport run_evaluate(const EvaluateRequest& request, const Progress& prog
   const auto start = job::Clock::now();
   EvaluateReport report;
   report.request = request;
-  report.mapping =
-      resolve_mapping(request.class_mapping, request.mapping_path, request.ignored_classes);
-  report.confusion = ConfusionMatrix(report.mapping.evaluation_classes());
+  report.class_mapping = request.class_mapping;
+  // A mapping the request names is checked before any scene is read; one
+  // chosen by the ground truth once the first is.
+  const bool by_ground_truth = request.class_mapping == ClassMapping::kByGroundTruth;
+  const auto use_mapping = [&](const std::string& builtin) {
+    report.class_mapping = builtin;
+    report.mapping = resolve_mapping(builtin, request.mapping_path, request.ignored_classes);
+    report.confusion = ConfusionMatrix(report.mapping.evaluation_classes());
+  };
+  if (!by_ground_truth) use_mapping(request.class_mapping);
 
   const std::size_t count = request.ground_truth.size();
   for (std::size_t k = 0; k < count; ++k) {
@@ -137,6 +150,17 @@ EvaluateReport run_evaluate(const EvaluateRequest& request, const Progress& prog
                         request.class_names_path);
     report.load_seconds += job::seconds_since(load_start);
     progress.check_cancel();
+    if (k == 0 && by_ground_truth) {
+      // A mapping file with its own classes replaces any built-in.
+      const bool own_classes =
+          !request.mapping_path.empty() && mapping_file_has_classes(request.mapping_path);
+      const job::BuiltinMappingChoice choice =
+          own_classes ? job::BuiltinMappingChoice{ClassMapping::kDefaultBuiltin, ""}
+                      : job::choose_builtin_mapping(loaded.input.ground_truth_name,
+                                                    loaded.input.ground_truth);
+      use_mapping(choice.name);
+      report.class_mapping_reason = choice.reason;
+    }
     check_non_finite_predictions(loaded, request.max_distance, report.warnings);
 
     SceneEvaluation scene = evaluate_scene(loaded.input, report.mapping, request.max_distance,
@@ -197,6 +221,7 @@ Json::Value to_json(const SegmentationMetrics& metrics) {
     entry["precision"] = to_json(c.precision);
     entry["recall"] = to_json(c.recall);
     entry["f1"] = to_json(c.f1);
+    entry["averaged"] = c.averaged;
     classes.append(entry);
   }
   json["classes"] = classes;
@@ -240,7 +265,7 @@ Json::Value to_json(const EvaluateReport& report) {
   json["beyond_distance_points"] = Json::UInt64(beyond);
   json["confusion"] = to_json(report.confusion);
   json["scenes"] = scenes;
-  json["mapping"] = mapping_json(report.mapping, q);
+  json["mapping"] = mapping_json(report);
 
   json["parameters"] = parameters_json(evaluate_keys(), q);
 

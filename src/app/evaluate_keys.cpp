@@ -21,7 +21,7 @@ const Keys<EvaluateRequest>& evaluate_keys() {
            .metavar("PRED")
            .doc("the prediction for each ground truth, in the same order: a label file or a "
                 "labelled cloud")},
-      scoring_keys<R>(),
+      scoring_keys<R>(true),
       {key("max_distance", &R::max_distance)
            .range(0, 1e6)
            .unit("scene units")

@@ -161,10 +161,15 @@ SceneEvaluation evaluate_scene(const SceneInput& scene, const ClassMapping& mapp
   result.confusion.add(truth, predicted);
   result.metrics = compute_metrics(result.confusion);
   std::set<std::int32_t> foreign;
-  for (const auto id : predicted) {
+  for (std::size_t i = 0; i < predicted.size(); ++i) {
+    const std::int32_t id = predicted[i];
     if (id < 0) {
       ++result.unlabelled;
-    } else if (id != mapping.ignore_id() && !result.confusion.index_of(id)) {
+    } else if (id != mapping.ignore_id() && !result.confusion.index_of(id) &&
+               result.confusion.index_of(truth[i])) {
+      // Only where it counted: on a skipped ground-truth point (unannotated,
+      // an ignored class) a foreign id is no miss, and warning of one would
+      // not be true.
       foreign.insert(id);
     }
   }
@@ -173,6 +178,14 @@ SceneEvaluation evaluate_scene(const SceneInput& scene, const ClassMapping& mapp
 }
 
 namespace job {
+
+BuiltinMappingChoice choose_builtin_mapping(const std::string& name, const PointCloud& cloud) {
+  if (cloud.class_names != nyu40_class_names()) return {ClassMapping::kDefaultBuiltin, ""};
+  return {"scannet20", name +
+                           " is labelled with NYU40 classes (a ScanNet scene): scored over the "
+                           "ScanNet v2 benchmark's 20 classes, as ScanNet's "
+                           "evaluate_semantic_label.py scores it"};
+}
 
 void check_ground_truth(const std::string& name, const PointCloud& cloud,
                         const ClassMapping& mapping) {
@@ -195,8 +208,8 @@ void check_ground_truth(const std::string& name, const PointCloud& cloud,
   if (nyu40 && mapping.ids() == ClassMapping::seed_table().ids()) {
     throw UsageError(name +
                      ": its labels are NYU40 classes (a ScanNet scene), which the seed's table "
-                     "3.1 does not score: use class_mapping scannet20, or a mapping file with "
-                     "its own classes");
+                     "3.1 does not score: use class_mapping scannet20 (auto, the default, "
+                     "chooses it), or a mapping file with its own classes");
   }
   const auto unmapped = mapping.unmapped_classes(cloud.labels, cloud.class_names);
   if (!unmapped.empty()) {

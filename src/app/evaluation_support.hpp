@@ -16,6 +16,16 @@ struct LoadedScene {
   std::size_t prediction_non_finite = 0;  // prediction points dropped for NaN or infinity
 };
 
+// The built-in mapping for class_mapping ClassMapping::kByGroundTruth: for a
+// ground truth labelled with NYU40 classes (a ScanNet scene, or a cloud naming
+// them), scannet20, as ScanNet's own evaluate_semantic_label.py scores it,
+// with the reason in words; otherwise table3.1, with no reason.
+struct BuiltinMappingChoice {
+  std::string name;
+  std::string reason;
+};
+BuiltinMappingChoice choose_builtin_mapping(const std::string& name, const PointCloud& cloud);
+
 // A ground truth the mapping can score: labels, class names, and every
 // class used mapped. InputError for the first two, UsageError listing the
 // unmapped classes.

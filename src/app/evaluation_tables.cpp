@@ -49,15 +49,23 @@ void write_evaluation_markdown(const std::string& path, const EvaluateReport& re
         << "| " << fixed(m.miou) << " | " << fixed(m.overall_accuracy) << " | "
         << fixed(m.mean_class_accuracy) << " | " << m.points << " | " << report.scenes.size()
         << " |\n\n"
+        << "Class mapping: "
+        << (report.request.mapping_path.empty() ? report.class_mapping
+                                                : report.request.mapping_path)
+        << (report.class_mapping_reason.empty() ? "" : " (" + report.class_mapping_reason + ")")
+        << ".\n\n"
         << "| id | class | support | IoU | precision | recall | F1 |\n"
         << "|---:|---|---:|---:|---:|---:|---:|\n";
     for (const auto& c : m.classes) {
+      const bool none = c.support == 0;
       out << "| " << c.id << " | " << markdown_cell(c.name) << " | " << c.support << " | "
-          << fixed(c.iou) << " | " << fixed(c.precision) << " | " << fixed(c.recall) << " | "
-          << fixed(c.f1) << " |\n";
+          << (none ? kNoGroundTruth : fixed(c.iou)) << " | " << fixed(c.precision) << " | "
+          << fixed(c.recall) << " | " << (none ? kNoGroundTruth : fixed(c.f1)) << " |\n";
     }
-    out << "\nmIoU and mean class accuracy average the classes with support (ground-truth "
-           "points); – marks a figure that is undefined (docs/metrics.md).\n";
+    out << "\nmIoU and mean class accuracy average " << m.classes_averaged << " classes (mean_over "
+        << to_string(m.mean_over) << "); – marks a figure that is undefined (docs/metrics.md).\n";
+    const std::string note = no_ground_truth_note(m);
+    if (!note.empty()) out << '\n' << note << '\n';
     if (report.scenes.size() < 2) return;
     out << "\n## Scenes\n\n"
         << "| scene | points | mIoU | overall accuracy | mean class accuracy | unlabelled |\n"
@@ -71,3 +79,31 @@ void write_evaluation_markdown(const std::string& path, const EvaluateReport& re
 }
 
 }  // namespace occlusion::job
+
+namespace occlusion {
+
+std::string no_ground_truth_note(const SegmentationMetrics& metrics) {
+  std::size_t none = 0;
+  bool predicted = false;
+  bool averaged = false;
+  for (const auto& c : metrics.classes) {
+    if (c.support > 0) continue;
+    ++none;
+    predicted = predicted || c.fp > 0;
+    averaged = averaged || c.averaged;
+  }
+  if (none == 0) return "";
+  // The table names them; the note says what their cells mean.
+  std::string note = std::string(kNoGroundTruth) + ": " + std::to_string(none) +
+                     (none == 1 ? " class has" : " classes have") + " no ground-truth point. ";
+  note += predicted ? "Predicted, such a class has IoU and F1 0 (false positives alone), as "
+                      "ScanNet's script reports it; never predicted, none"
+                    : "Never predicted, such a class has no IoU (0/0; ScanNet's script's nan)";
+  note += averaged ? std::string("; mean_over ") + to_string(metrics.mean_over) +
+                         " averages it in as 0 (docs/metrics.md)."
+                   : std::string("; mean_over ") + to_string(metrics.mean_over) +
+                         " leaves it out of the means (docs/metrics.md).";
+  return note;
+}
+
+}  // namespace occlusion

@@ -268,6 +268,10 @@ void warn_degenerate_faces(const std::string& path, const MeshReadReport& read,
       " skipped: no area to measure, no ray hits them (first, " + read.first_degenerate + ")");
 }
 
+void add_read_warnings(const LoadedCloud& loaded, std::vector<std::string>& warnings) {
+  warnings.insert(warnings.begin(), loaded.warnings.begin(), loaded.warnings.end());
+}
+
 LoadedCloud load_cloud(const std::string& path, bool skip_bad_lines,
                        const std::optional<Eigen::Vector3d>& shift, std::uint64_t max_memory_mb) {
   CloudReadOptions options;
@@ -282,6 +286,7 @@ LoadedCloud load_cloud(const std::string& path, bool skip_bad_lines,
   loaded.rooms = report.rooms;
   loaded.unverified_order = report.unverified_order;
   loaded.annotation_order = std::move(report.annotation_order);
+  loaded.warnings = std::move(report.warnings);
   return loaded;
 }
 

@@ -175,6 +175,7 @@ struct LoadedCloud {
   std::vector<std::string> rooms;
   std::vector<std::string> unverified_order;  // CloudReadReport::unverified_order
   std::vector<std::size_t> annotation_order;  // CloudReadReport::annotation_order
+  std::vector<std::string> warnings;          // CloudReadReport::warnings: the job reports them
 };
 // `shift` fixes the global shift (CloudReadOptions::shift); unset, the
 // reader chooses it. `max_memory_mb` (0: the machine's memory) bounds what
@@ -183,6 +184,9 @@ struct LoadedCloud {
 LoadedCloud load_cloud(const std::string& path, bool skip_bad_lines,
                        const std::optional<Eigen::Vector3d>& shift = std::nullopt,
                        std::uint64_t max_memory_mb = 0);
+// Puts what reading the cloud found (LoadedCloud::warnings) first among a
+// job's warnings: they come before anything the job made of the cloud.
+void add_read_warnings(const LoadedCloud& loaded, std::vector<std::string>& warnings);
 // Names the labels of `cloud` (read from `path`) from the class_names file
 // `class_names_path` (io/class_names_file.hpp); nothing when it is empty.
 void name_classes(PointCloud& cloud, const std::string& path, const std::string& class_names_path);

@@ -373,8 +373,8 @@ void write_candidates(const std::string& path, const PlanReport& report) {
   write_csv(path, table);
 }
 
-ScalarField covered_by_field(const PlanReport& report) {
-  ScalarField field{"covered_by", {}, true};
+ScalarField first_station_field(const PlanReport& report) {
+  ScalarField field{kFirstStationField, {}, true};
   field.values.reserve(report.selection.first_rank.size());
   for (const auto rank : report.selection.first_rank)
     field.values.push_back(static_cast<float>(rank));
@@ -476,6 +476,7 @@ PlanReport run_plan(const PlanRequest& request, const Progress& progress) {
     report.load_seconds = load_seconds;
     report.dropped_nan = loaded.dropped_nan;
     report.skipped_lines = loaded.skipped_lines;
+    job::add_read_warnings(loaded, report.warnings);
   }
 
   if (!request.out.empty()) {
@@ -492,9 +493,9 @@ PlanReport run_plan(const PlanRequest& request, const Progress& progress) {
     if (report.targets == "samples") {
       PointCloud samples;
       for (const auto& p : report.sample_positions) samples.positions.push_back(p.cast<float>());
-      write_cloud(outputs.add(targets_path), samples, {covered_by_field(report)});
+      write_cloud(outputs.add(targets_path), samples, {first_station_field(report)});
     } else {
-      write_cloud(outputs.add(targets_path), cloud, {covered_by_field(report)});
+      write_cloud(outputs.add(targets_path), cloud, {first_station_field(report)});
     }
     job::commit_outputs(outputs, report, json_path,
                         {json_path, curve_path, candidates_path, targets_path}, start);

@@ -141,8 +141,8 @@ const Keys<PlanRequest>& plan_keys() {
        out_key(&R::out,
                "write SCENE.plan.json, SCENE.plan_curve.csv (coverage after each station), "
                "SCENE.plan_candidates.csv (each candidate's coverage alone and gain left) and "
-               "SCENE.plan_targets.ply (every target with covered_by: the rank of the first "
-               "station that sees it, -1 for none)")},
+               "SCENE.plan_targets.ply (every target with first_station: the rank of the "
+               "first station that sees it, -1 for none)")},
   });
   return keys;
 }

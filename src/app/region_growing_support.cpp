@@ -74,6 +74,7 @@ CloudEstimate load_and_estimate(const std::string& path, bool skip_bad_lines,
     throw UsageError(path + ": " + e.what());
   }
   input.warnings = estimation_warnings(input.estimate, options);
+  add_read_warnings(input.loaded, input.warnings);
   return input;
 }
 

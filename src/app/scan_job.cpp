@@ -117,6 +117,7 @@ ScanReport run_scan(const ScanRequest& request, const Progress& progress) {
       progress);
   report.dropped_nan = loaded.dropped_nan;
   report.skipped_lines = loaded.skipped_lines;
+  job::add_read_warnings(loaded, report.warnings);
   report.station_filter = filtered;
   report.load_seconds = load_seconds;
 

@@ -222,7 +222,10 @@ SimulateReport run_simulate(const SimulateRequest& request, const Progress& prog
 
 std::vector<ScalarField> truth_fields(const SimulatedScan& scan) {
   std::vector<ScalarField> fields;
-  const char* names[] = {"true_x", "true_y", "true_z", "true_nx", "true_ny", "true_nz"};
+  // Not true_nx: CloudCompare's PLY reader takes a name holding nx, ny or nz
+  // for the cloud's normal, and shows no scalar field (docs/simulate.md).
+  const char* names[] = {"true_x",        "true_y",        "true_z",
+                         "true_normal_x", "true_normal_y", "true_normal_z"};
   for (int k = 0; k < 6; ++k) {
     ScalarField field{names[k], {}, false};
     const auto& source = k < 3 ? scan.true_points : scan.true_normals;

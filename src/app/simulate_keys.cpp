@@ -34,7 +34,7 @@ const Keys<SimulateRequest>& simulate_keys() {
        seed_key(&R::seed),
        key("truth", &R::truth)
            .doc("also write each point's true surface point (true_x, true_y, true_z), its "
-                "face's normal towards the station (true_nx, true_ny, true_nz) and face")},
+                "face's normal towards the station (true_normal_x, _y, _z) and face")},
       mount(laser_scanner_keys(), &R::laser),
       mount(depth_camera_keys(), &R::camera),
       {cloud_format_key(&R::format, "format of the written cloud"), threads_key(&R::threads),

@@ -46,6 +46,11 @@ void print_human(const EvaluateReport& report, bool confusion) {
   std::size_t unlabelled = 0;
   for (const auto& scene : report.scenes) unlabelled += scene.unlabelled;
   std::printf("segmentation evaluation of %zu scene(s)\n", report.scenes.size());
+  std::printf("  class mapping %s (%zu evaluation classes)%s%s\n",
+              report.request.mapping_path.empty() ? report.class_mapping.c_str()
+                                                  : report.request.mapping_path.c_str(),
+              report.confusion.size(), report.class_mapping_reason.empty() ? "" : ": ",
+              report.class_mapping_reason.c_str());
   std::printf("  mIoU %s   overall accuracy %s   mean class accuracy %s\n", figure(m.miou).c_str(),
               figure(m.overall_accuracy).c_str(), figure(m.mean_class_accuracy).c_str());
   std::printf("  %llu points evaluated, %llu skipped (ground truth ignored), %zu unlabelled\n",
@@ -54,10 +59,16 @@ void print_human(const EvaluateReport& report, bool confusion) {
   std::printf("    %-16s %4s %10s %8s %9s %8s %8s\n", "class", "id", "support", "IoU", "precision",
               "recall", "F1");
   for (const auto& c : m.classes) {
+    const bool none = c.support == 0;
     std::printf("    %-16s %4d %10llu %8s %9s %8s %8s\n", c.name.c_str(), c.id,
-                static_cast<unsigned long long>(c.support), figure(c.iou).c_str(),
-                figure(c.precision).c_str(), figure(c.recall).c_str(), figure(c.f1).c_str());
+                static_cast<unsigned long long>(c.support),
+                none ? kNoGroundTruth : figure(c.iou).c_str(), figure(c.precision).c_str(),
+                figure(c.recall).c_str(), none ? kNoGroundTruth : figure(c.f1).c_str());
   }
+  const std::string note = no_ground_truth_note(m);
+  if (!note.empty()) std::printf("  %s\n", note.c_str());
+  std::printf("  mIoU and mean class accuracy average %zu classes (mean_over %s)\n",
+              m.classes_averaged, to_string(m.mean_over));
   if (report.scenes.size() > 1) {
     std::printf("  scenes:%*s points     mIoU  accuracy\n", 18, "");
     for (const auto& scene : report.scenes) {

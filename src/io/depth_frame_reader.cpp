@@ -1,11 +1,13 @@
 // A depth frame (descriptor + 16-bit depth PNG + optional colour PNG) as an
 // organised cloud seen from its camera, the cloud's sensor and one station.
 
+#include <algorithm>
 #include <cstdint>
 #include <string>
 
 #include "cloud_formats.hpp"
 #include "frame_descriptor.hpp"
+#include "number_text.hpp"
 #include "occlusion/io/input_error.hpp"
 #include "png_image.hpp"
 
@@ -23,7 +25,7 @@ std::uint64_t frame_bytes(std::uint64_t pixels, bool colour) {
 }  // namespace
 
 PointCloud read_depth_frame(const std::string& path, const CloudReadOptions& options,
-                            CloudReadReport& /*report*/) {
+                            CloudReadReport& report) {
   const FrameDescriptor frame = read_frame_descriptor(path);
   const auto within_budget = [&](std::size_t width, std::size_t height) {
     const std::uint64_t pixels = std::uint64_t{width} * height;
@@ -59,6 +61,8 @@ PointCloud read_depth_frame(const std::string& path, const CloudReadOptions& opt
   PointCloud cloud;
   ShiftedPositions shifted(options);
   const Eigen::Matrix3d rotation = frame.rotation.toRotationMatrix();
+  std::size_t beyond_indoor = 0;
+  double deepest = 0.0;
   for (std::size_t v = 0; v < depth.height; ++v) {
     for (std::size_t u = 0; u < depth.width; ++u) {
       const std::size_t pixel = v * depth.width + u;
@@ -67,6 +71,8 @@ PointCloud read_depth_frame(const std::string& path, const CloudReadOptions& opt
       // Pinhole back-projection; pixel (u, v)'s centre is at (u, v), as the
       // datasets' intrinsics (TUM's cx = 319.5 for 640 columns) take it.
       const double z = value / frame.depth_scale;
+      beyond_indoor += z > kMaxIndoorDepthMetres ? 1 : 0;
+      deepest = std::max(deepest, z);
       const Eigen::Vector3d camera((static_cast<double>(u) - frame.cx) * z / frame.fx,
                                    (static_cast<double>(v) - frame.cy) * z / frame.fy, z);
       const Eigen::Vector3d world = rotation * camera + frame.translation;
@@ -83,6 +89,21 @@ PointCloud read_depth_frame(const std::string& path, const CloudReadOptions& opt
     throw InputError(
         path, 0,
         "no points: every pixel of the depth image " + frame.depth_path + " is 0 (no measurement)");
+  }
+  if (beyond_indoor > 0) {
+    const auto number = [](double value) {
+      std::string text;
+      append_significant(text, value, 4);
+      return text;
+    };
+    report.warnings.push_back(
+        path + ": " + std::to_string(beyond_indoor) + " of " + std::to_string(cloud.size()) +
+        " depths of " + frame.depth_path + " lie beyond " + number(kMaxIndoorDepthMetres) +
+        " m (up to " + number(deepest) +
+        " m), farther than indoor depth cameras measure: is depth_scale (" +
+        number(frame.depth_scale) +
+        " values a metre) the dataset's? SUN RGB-D's PNGs rotate each value's bits by three "
+        "places: undo it first, (v >> 3) | (v << 13), in millimetres (docs/formats.md)");
   }
   cloud.shift = shifted.checked_shift(path);
   SensorFrame sensor;

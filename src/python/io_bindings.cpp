@@ -47,6 +47,7 @@ struct CloudArrays {
   std::size_t dropped_nan = 0;
   std::size_t skipped_lines = 0;
   std::vector<std::string> rooms;
+  std::vector<std::string> warnings;  // CloudReadReport::warnings
 };
 
 struct MeshArrays {
@@ -92,6 +93,7 @@ CloudArrays make_cloud_arrays(PointCloud cloud, CloudReadReport report) {
   out.dropped_nan = report.dropped_nan;
   out.skipped_lines = report.skipped_lines;
   out.rooms = std::move(report.rooms);
+  out.warnings = std::move(report.warnings);
   return out;
 }
 
@@ -246,6 +248,10 @@ void bind_io(py::module_& m) {
       .def_readonly("skipped_lines", &CloudArrays::skipped_lines,
                     "Bad text lines skipped (skip_bad_lines=True)")
       .def_readonly("rooms", &CloudArrays::rooms, "S3DIS room folders, in reading order")
+      .def_readonly("warnings", &CloudArrays::warnings,
+                    "What reading found that the user should know, one sentence each (a "
+                    "depth frame's depths beyond what indoor sensors measure); the jobs "
+                    "report the same among their warnings")
       .def("__len__", [](const CloudArrays& c) { return c.positions.shape(0); })
       .def("__repr__", [](const CloudArrays& c) {
         return "<occlusion.Cloud of " + std::to_string(c.positions.shape(0)) + " points>";
@@ -263,15 +269,22 @@ void bind_io(py::module_& m) {
         return "<occlusion.Mesh of " + std::to_string(mesh.faces.shape(0)) + " faces>";
       });
 
-  m.def("read_cloud", &read_cloud_arrays, py::arg("path"), py::kw_only(),
-        py::arg("skip_bad_lines") = false,
-        R"doc(Reads a point cloud: .pcd, .ply, .txt/.xyz/.pts, .las, a depth frame's
-NAME.frame.json, an S3DIS room folder or Area (docs/formats.md).
-
-Points with a coordinate that is not finite are dropped (counted in
+  // The file kinds come from the readers' own table, so none is left out.
+  static const std::string read_cloud_doc = [] {
+    std::string kinds;
+    for (const std::string& suffix : cloud_file_suffixes()) {
+      kinds += (kinds.empty() ? "" : ", ") + suffix;
+    }
+    return "Reads a point cloud: " + kinds +
+           " (a depth frame's descriptor), a ScanNet scene folder or its "
+           "_vh_clean_2.labels.ply, an S3DIS room folder or Area (docs/formats.md).\n\n" +
+           R"doc(Points with a coordinate that is not finite are dropped (counted in
 dropped_nan). skip_bad_lines skips text lines that do not parse (real S3DIS
 has a few). InputError (an OSError and a ValueError) with path and line for a
-malformed file; FileNotFoundError for a missing one.)doc");
+malformed file; FileNotFoundError for a missing one.)doc";
+  }();
+  m.def("read_cloud", &read_cloud_arrays, py::arg("path"), py::kw_only(),
+        py::arg("skip_bad_lines") = false, read_cloud_doc.c_str());
   m.def("write_cloud", &write_cloud_arrays, py::arg("path"), py::arg("positions"), py::kw_only(),
         py::arg("colours") = py::none(), py::arg("labels") = py::none(),
         py::arg("instances") = py::none(), py::arg("class_names") = py::none(),

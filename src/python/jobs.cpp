@@ -431,7 +431,7 @@ comes with the counts that make it: result.level_counts, and per viewpoint.)doc"
                      "(vertices, faces) or (vertices, faces, face_group, group_names).\n"
                      "arrays: cloud, an occlusion.Cloud (labels and instances from the groups, "
                      "stations, station_ids; a single camera's sensor and pixels; with "
-                     "truth=True, fields true_x .. true_nz and face), which scan() and "
+                     "truth=True, fields true_x .. true_normal_z and face), which scan() and "
                      "cloud_occlusion() take as it is.") +
          keys_doc("simulate"))
             .c_str());

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <stdexcept>
+#include <vector>
 
 namespace occlusion {
 namespace {
@@ -122,6 +123,16 @@ TEST(ConfusionMatrix, MeanOverRulesMatchHandComputedValues) {
   EXPECT_EQ(pointcept.classes_averaged, 5u);
   EXPECT_DOUBLE_EQ(*pointcept.miou, 53.0 / 210.0);
   EXPECT_DOUBLE_EQ(*pointcept.mean_class_accuracy, 43.0 / 150.0);
+
+  // Each class says whether its rule took it (by id: wall, floor, chair, sofa, table).
+  const auto averaged = [](const SegmentationMetrics& metrics) {
+    std::vector<bool> flags;
+    for (const auto& c : metrics.classes) flags.push_back(c.averaged);
+    return flags;
+  };
+  EXPECT_EQ(averaged(support), (std::vector<bool>{true, true, true, false, false}));
+  EXPECT_EQ(averaged(scannet), (std::vector<bool>{true, true, true, false, true}));
+  EXPECT_EQ(averaged(pointcept), (std::vector<bool>{true, true, true, true, true}));
 
   for (const auto* metrics : {&scannet, &pointcept}) {
     EXPECT_DOUBLE_EQ(*metrics->overall_accuracy, 0.5);

@@ -184,7 +184,7 @@ TEST(PlanJob, ACloudsOwnStationsArePlacedFirstUnlessTurnedOff) {
   EXPECT_TRUE(plan_cloud(cloud, off).placed.empty());
 }
 
-TEST(PlanJob, WritesTheReportTheCurveTheCandidatesAndTheTargetsWithCoveredBy) {
+TEST(PlanJob, WritesTheReportTheCurveTheCandidatesAndTheTargetsWithTheirFirstStation) {
   testing::ScratchDirectory dir;
   const std::string scene = (dir.path() / "rooms.ply").string();
   // A PLY with faces is a mesh (a PLY of points would be a cloud).
@@ -203,8 +203,10 @@ TEST(PlanJob, WritesTheReportTheCurveTheCandidatesAndTheTargetsWithCoveredBy) {
   std::ifstream ply(report.outputs[3]);
   std::string header((std::istreambuf_iterator<char>(ply)), {});
   header = header.substr(0, header.find("end_header"));
-  // The writers' name for a per-point value (CloudCompare shows it as covered_by).
-  EXPECT_NE(header.find("property int scalar_covered_by"), std::string::npos) << header;
+  // The writers' name for a per-point value (CloudCompare shows it as first_station).
+  EXPECT_NE(header.find("property int scalar_" + std::string(kFirstStationField) + "\n"),
+            std::string::npos)
+      << header;
   EXPECT_NE(header.find("element vertex " + std::to_string(report.target_count)), std::string::npos)
       << header;
   const Json::Value json = to_json(report);

@@ -13,6 +13,7 @@
 #include "io/scratch_directory.hpp"
 #include "occlusion/app/errors.hpp"
 #include "occlusion/app/evaluate_job.hpp"
+#include "occlusion/io/cloud_io.hpp"
 #include "occlusion/io/input_error.hpp"
 #include "support/scannet_scene.hpp"
 
@@ -99,13 +100,63 @@ TEST(ScanNetEvaluation, Scannet20GivesTheBenchmarkScriptsFigures) {
   EXPECT_DOUBLE_EQ(*s.overall_accuracy, 6.0 / 12.0);
 }
 
-TEST(ScanNetEvaluation, TheSeedTableSaysToUseScannet20) {
+// ScanNet's script scores its 20 classes from a labels file without being
+// told: so does -eval by default (class_mapping auto), and says why.
+TEST(ScanNetEvaluation, ByDefaultANyu40GroundTruthIsScoredAsScanNetScoresIt) {
+  testing::ScratchDirectory dir;
+  const fs::path scene = write_scene(dir.path());
+  testing::write_text(dir.file("pred.txt"), kPrediction);
+  EvaluateRequest request;
+  request.ground_truth = {(scene / "scene0011_00_vh_clean_2.labels.ply").string()};
+  request.predictions = {dir.file("pred.txt")};
+  ASSERT_EQ(request.class_mapping, ClassMapping::kByGroundTruth);
+  const EvaluateReport chosen = run_evaluate(request);
+  EXPECT_EQ(chosen.class_mapping, "scannet20");
+  EXPECT_NE(chosen.class_mapping_reason.find("NYU40"), std::string::npos)
+      << chosen.class_mapping_reason;
+  const Json::Value json = to_json(chosen);
+  EXPECT_EQ(json["mapping"]["builtin"].asString(), "scannet20");
+  EXPECT_EQ(json["mapping"]["requested"].asString(), "auto");
+  EXPECT_EQ(json["mapping"]["chosen_because"].asString(), chosen.class_mapping_reason);
+
+  request.class_mapping = "scannet20";
+  const EvaluateReport named = run_evaluate(request);
+  EXPECT_TRUE(named.class_mapping_reason.empty());
+  EXPECT_TRUE(to_json(named)["mapping"]["chosen_because"].isNull());
+  EXPECT_EQ(chosen.confusion.size(), named.confusion.size());
+  for (std::size_t r = 0; r < named.confusion.size(); ++r) {
+    for (std::size_t c = 0; c <= named.confusion.size(); ++c) {
+      EXPECT_EQ(chosen.confusion.count(r, c), named.confusion.count(r, c));
+    }
+  }
+  EXPECT_EQ(chosen.metrics.miou, named.metrics.miou);
+}
+
+TEST(ScanNetEvaluation, AnS3disGroundTruthStaysWithTheSeedTable) {
+  testing::ScratchDirectory dir;
+  PointCloud cloud;
+  cloud.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  cloud.labels = {0, 1, 1};
+  cloud.class_names = {"wall", "floor"};
+  write_cloud(dir.file("room.ply"), cloud);
+  testing::write_text(dir.file("pred.txt"), "0\n1\n1\n");
+  EvaluateRequest request;
+  request.ground_truth = {dir.file("room.ply")};
+  request.predictions = {dir.file("pred.txt")};
+  const EvaluateReport report = run_evaluate(request);
+  EXPECT_EQ(report.class_mapping, "table3.1");
+  EXPECT_TRUE(report.class_mapping_reason.empty());
+  EXPECT_DOUBLE_EQ(*report.metrics.miou, 1.0);
+}
+
+TEST(ScanNetEvaluation, TheSeedTableNamedSaysToUseScannet20) {
   testing::ScratchDirectory dir;
   const fs::path scene = write_scene(dir.path());
   testing::write_text(dir.file("pred.txt"), kPrediction);
   EvaluateRequest request;
   request.ground_truth = {scene.string()};
   request.predictions = {dir.file("pred.txt")};
+  request.class_mapping = "table3.1";
   try {
     run_evaluate(request);
     ADD_FAILURE() << "table 3.1 cannot map NYU40 classes";
@@ -126,6 +177,7 @@ TEST(ScanNetEvaluation, TheSeedTableRefusesNyu40EvenWhenItKnowsEveryName) {
   EvaluateRequest request;
   request.ground_truth = {folder.string()};
   request.predictions = {dir.file("pred.txt")};
+  request.class_mapping = "table3.1";
   EXPECT_THROW(run_evaluate(request), UsageError);
   request.class_mapping = "scannet20";
   EXPECT_DOUBLE_EQ(*run_evaluate(request).metrics.miou, 1.0);

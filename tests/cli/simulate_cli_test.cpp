@@ -55,7 +55,7 @@ TEST(SimulateCli, ALaserScanIsWrittenWithItsStationsLabelsAndTruth) {
   for (const auto& name : cloud.class_names) bookcases += name == "bookcase" ? 1 : 0;
   EXPECT_EQ(bookcases, 1u);
   // Every point lies within a few sigma (3 mm) of its true surface point.
-  ASSERT_EQ(read.extra_fields.size(), 7u);  // true_x .. true_nz, face
+  ASSERT_EQ(read.extra_fields.size(), 7u);  // true_x .. true_normal_z, face
   EXPECT_EQ(read.extra_fields[0].name, "true_x");
   double worst = 0.0;
   for (std::size_t i = 0; i < cloud.size(); ++i) {

@@ -19,45 +19,24 @@
 #include "io/scratch_directory.hpp"
 #include "occlusion/io/cloud_io.hpp"
 #include "occlusion/io/ply_mesh_writer.hpp"
+#include "support/third_party_programs.hpp"
 
 namespace occlusion {
 namespace {
 
 namespace fs = std::filesystem;
 
-// A program that hangs must not hang the suite: each gets this long.
-constexpr const char* kTimeout = "timeout 180 ";
-
-struct ProgramRun {
-  int exit_code = -1;
-  std::string output;  // stdout and stderr
-};
-
-ProgramRun run(const std::string& command) {
-  ProgramRun result;
-  FILE* pipe = ::popen((command + " 2>&1").c_str(), "r");
-  if (pipe == nullptr) return result;
-  std::array<char, 4096> buffer{};
-  std::size_t got = 0;
-  while ((got = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) {
-    result.output.append(buffer.data(), got);
-  }
-  const int status = ::pclose(pipe);
-  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return result;
-}
-
-bool have(const std::string& program) {
-  return run("command -v " + program + " >/dev/null").exit_code == 0;
-}
-
-std::string quoted(const std::string& path) {
-  return "'" + path + "'";
-}
+using testing::have_program;
+using testing::kProgramTimeout;
+using testing::ProgramRun;
+using testing::run_program;
+using testing::words_of;
 
 // Four points with every attribute (a laser scan's intensity and station
-// included) and the per-point values the jobs write: -fscan's visible_count,
-// -poc's visible_fraction, the region growing's cluster.
+// included) and per-point values as the jobs write them (-fscan's
+// visible_count, a fraction, the region growing's cluster): every format and
+// program here. tests/cli/third_party_outputs_test.cpp opens every field
+// each job really writes in CloudCompare and Open3D.
 PointCloud cloud() {
   PointCloud c;
   c.positions = {{0.5f, 1.25f, 2.0f}, {1.5f, 0.25f, 0.75f}, {2.5f, 2.0f, 1.0f}, {0, 0, 3}};
@@ -157,41 +136,15 @@ std::string line_after(const std::string& path, const std::string& prefix) {
   return "";
 }
 
-std::vector<std::string> words(const std::string& text) {
-  std::istringstream in(text);
-  std::vector<std::string> out;
-  for (std::string word; in >> word;) out.push_back(word);
-  return out;
-}
-
-// The file CloudCompare saved for `stem` (it appends a time stamp).
-std::string saved_by_cloudcompare(const fs::path& dir, const std::string& stem,
-                                  const std::string& extension) {
-  for (const auto& entry : fs::directory_iterator(dir)) {
-    const std::string name = entry.path().filename().string();
-    if (name.rfind(stem + "_", 0) == 0 && entry.path().extension() == extension) {
-      return entry.path().string();
-    }
-  }
-  return "";
-}
-
 // Columns of CloudCompare's ASCII export (header `//X Y Z R G B <fields>`),
 // checked value by value against what we wrote.
 void expect_cloudcompare_columns(const std::string& asc, const std::string& source) {
   ASSERT_FALSE(asc.empty()) << "CloudCompare saved nothing for " << source;
-  std::istringstream in(testing::read_bytes(asc));
-  std::string header;
-  std::getline(in, header);
-  ASSERT_EQ(header.rfind("//", 0), 0u) << header;
-  const std::vector<std::string> columns = words(header.substr(2));
-  std::vector<std::vector<double>> rows;
-  for (std::string line; std::getline(in, line);) {
-    std::istringstream values(line);
-    std::vector<double> row;
-    for (double v = 0; values >> v;) row.push_back(v);
-    if (!row.empty()) rows.push_back(row);
-  }
+  const testing::CloudCompareTable table = testing::read_cloudcompare_ascii(asc);
+  const std::string& header = table.header;
+  const std::vector<std::string>& columns = table.columns;
+  const std::vector<std::vector<double>>& rows = table.rows;
+  ASSERT_FALSE(columns.empty()) << header;
   ASSERT_EQ(rows.size(), cloud().size()) << source;
   for (const auto& [name, values] : expected_values()) {
     const auto at = std::find(columns.begin(), columns.end(), name);
@@ -205,21 +158,22 @@ void expect_cloudcompare_columns(const std::string& asc, const std::string& sour
 }
 
 TEST_F(ThirdPartyReaders, CloudCompareSeesEveryScalarFieldOfOurPly) {
-  if (!have("CloudCompare") || !have("xvfb-run")) {
+  if (!have_program("CloudCompare") || !have_program("xvfb-run")) {
     GTEST_SKIP() << "CloudCompare or xvfb-run is not installed (apt-get install cloudcompare "
                     "xvfb xauth; src/scripts/setup.sh installs them)";
   }
   const ProgramRun cc =
-      run("cd " + quoted(dir_.path().string()) + " && " + kTimeout +
-          "xvfb-run -a CloudCompare -SILENT -AUTO_SAVE OFF -O cloud.ply -O "
-          "cloud_ascii.ply -O mesh.ply -C_EXPORT_FMT ASC -ADD_HEADER -SAVE_CLOUDS "
-          "-M_EXPORT_FMT PLY -PLY_EXPORT_FMT ASCII -SAVE_MESHES");
+      run_program("cd " + testing::shell_word(dir_.path().string()) + " && " + kProgramTimeout +
+                  "xvfb-run -a CloudCompare -SILENT -AUTO_SAVE OFF -O cloud.ply -O "
+                  "cloud_ascii.ply -O mesh.ply -C_EXPORT_FMT ASC -ADD_HEADER -SAVE_CLOUDS "
+                  "-M_EXPORT_FMT PLY -PLY_EXPORT_FMT ASCII -SAVE_MESHES");
   ASSERT_EQ(cc.exit_code, 0) << cc.output;
-  expect_cloudcompare_columns(saved_by_cloudcompare(dir_.path(), "cloud", ".asc"), "cloud.ply");
-  expect_cloudcompare_columns(saved_by_cloudcompare(dir_.path(), "cloud_ascii", ".asc"),
+  expect_cloudcompare_columns(testing::saved_by_cloudcompare(dir_.path(), "cloud", ".asc"),
+                              "cloud.ply");
+  expect_cloudcompare_columns(testing::saved_by_cloudcompare(dir_.path(), "cloud_ascii", ".asc"),
                               "cloud_ascii.ply");
   // The mesh comes back as CloudCompare writes scalar fields: scalar_<name>.
-  const std::string saved_mesh = saved_by_cloudcompare(dir_.path(), "mesh", ".ply");
+  const std::string saved_mesh = testing::saved_by_cloudcompare(dir_.path(), "mesh", ".ply");
   ASSERT_FALSE(saved_mesh.empty()) << cc.output;
   const std::string head = testing::read_bytes(saved_mesh);
   EXPECT_NE(head.find("property float scalar_visible_fraction\n"), std::string::npos) << head;
@@ -229,7 +183,7 @@ TEST_F(ThirdPartyReaders, CloudCompareSeesEveryScalarFieldOfOurPly) {
 
 TEST_F(ThirdPartyReaders, Open3dTensorApiSeesEveryField) {
   const std::string python = "/usr/bin/python3";
-  if (run(python + " -c 'import open3d'").exit_code != 0) {
+  if (run_program(python + " -c 'import open3d'").exit_code != 0) {
     GTEST_SKIP() << "Open3D is not installed for " << python
                  << " (apt-get install python3-open3d; src/scripts/setup.sh installs it)";
   }
@@ -244,9 +198,10 @@ for path in sys.argv[1:]:
 )");
   std::string files;
   for (const char* name : {"cloud.ply", "cloud_ascii.ply", "cloud.pcd", "cloud_ascii.pcd"}) {
-    files += " " + quoted(dir_.file(name));
+    files += " " + testing::shell_word(dir_.file(name));
   }
-  const ProgramRun o3d = run(kTimeout + python + " " + quoted(dir_.file("fields.py")) + files);
+  const ProgramRun o3d = run_program(kProgramTimeout + python + " " +
+                                     testing::shell_word(dir_.file("fields.py")) + files);
   ASSERT_EQ(o3d.exit_code, 0) << o3d.output;
   for (const std::string file : {"cloud.ply", "cloud_ascii.ply", "cloud.pcd", "cloud_ascii.pcd"}) {
     const std::string prefix = file.find(".ply") != std::string::npos ? "scalar_" : "";
@@ -259,7 +214,7 @@ for path in sys.argv[1:]:
       ASSERT_FALSE(line.empty()) << file << ": Open3D shows no field " << stored_name(name, prefix)
                                  << "\n"
                                  << o3d.output;
-      const std::vector<std::string> got = words(line);
+      const std::vector<std::string> got = words_of(line);
       ASSERT_EQ(got.size(), 2 + values.size()) << line;
       for (std::size_t i = 0; i < values.size(); ++i) {
         EXPECT_NEAR(std::stod(got[2 + i]), as_stored(name, prefix, values[i]), 1e-6) << line;
@@ -269,29 +224,30 @@ for path in sys.argv[1:]:
 }
 
 TEST_F(ThirdPartyReaders, PclToolsSeeEveryField) {
-  if (!have("pcl_ply2pcd") || !have("pcl_convert_pcd_ascii_binary")) {
+  if (!have_program("pcl_ply2pcd") || !have_program("pcl_convert_pcd_ascii_binary")) {
     GTEST_SKIP() << "PCL's tools are not installed (apt-get install pcl-tools; "
                     "src/scripts/setup.sh installs them)";
   }
   // Our PLY through PCL's PLY reader, our binary_compressed PCD through its
   // PCD reader; both written back as ascii PCD, whose header lists the fields.
-  const ProgramRun ply =
-      run(kTimeout + std::string("pcl_ply2pcd -format 0 ") + quoted(dir_.file("cloud.ply")) + " " +
-          quoted(dir_.file("from_ply.pcd")));
+  const ProgramRun ply = run_program(kProgramTimeout + std::string("pcl_ply2pcd -format 0 ") +
+                                     testing::shell_word(dir_.file("cloud.ply")) + " " +
+                                     testing::shell_word(dir_.file("from_ply.pcd")));
   ASSERT_EQ(ply.exit_code, 0) << ply.output;
   const ProgramRun pcd =
-      run(kTimeout + std::string("pcl_convert_pcd_ascii_binary ") + quoted(dir_.file("cloud.pcd")) +
-          " " + quoted(dir_.file("from_pcd.pcd")) + " 0");
+      run_program(kProgramTimeout + std::string("pcl_convert_pcd_ascii_binary ") +
+                  testing::shell_word(dir_.file("cloud.pcd")) + " " +
+                  testing::shell_word(dir_.file("from_pcd.pcd")) + " 0");
   ASSERT_EQ(pcd.exit_code, 0) << pcd.output;
   for (const auto& [file, prefix] : std::vector<std::pair<std::string, std::string>>{
            {"from_ply.pcd", "scalar_"}, {"from_pcd.pcd", ""}}) {
-    const std::vector<std::string> fields = words(line_after(dir_.file(file), "FIELDS "));
+    const std::vector<std::string> fields = words_of(line_after(dir_.file(file), "FIELDS "));
     // The data rows, to check the values too.
     std::istringstream in(testing::read_bytes(dir_.file(file)));
     std::vector<std::vector<std::string>> rows;
     bool data = false;
     for (std::string line; std::getline(in, line);) {
-      if (data && !line.empty()) rows.push_back(words(line));
+      if (data && !line.empty()) rows.push_back(words_of(line));
       if (line.rfind("DATA ascii", 0) == 0) data = true;
     }
     ASSERT_EQ(rows.size(), cloud().size()) << file;

@@ -100,6 +100,46 @@ def test_e57_reads():
         occlusion.read_cloud(str(ROOT / "files" / "e57" / "bad-crc.e57"))
 
 
+def test_read_cloud_docstring_names_every_file_kind_it_reads():
+    doc = occlusion.read_cloud.__doc__
+    for path in (PCL_DATA / "room_scan1.pcd", ROOT / "files" / "e57" / "ColouredCubeFloat.e57",
+                 ROOT / "files" / "las" / "simple.las"):
+        assert len(occlusion.read_cloud(str(path))) > 0
+        assert path.suffix in doc, f"{path.suffix} is read but not named: {doc}"
+
+
+def write_depth_png(path, depth):
+    """A 16-bit greyscale PNG of `depth` (uint16, rows x columns)."""
+    import struct
+    import zlib
+
+    def chunk(kind, data):
+        return (struct.pack(">I", len(data)) + kind + data
+                + struct.pack(">I", zlib.crc32(kind + data) & 0xFFFFFFFF))
+
+    rows, columns = depth.shape
+    raw = b"".join(b"\x00" + row.astype(">u2").tobytes() for row in depth)
+    path.write_bytes(b"\x89PNG\r\n\x1a\n"
+                     + chunk(b"IHDR", struct.pack(">IIBBBBB", columns, rows, 16, 0, 0, 0, 0))
+                     + chunk(b"IDAT", zlib.compress(raw)) + chunk(b"IEND", b""))
+
+
+def test_a_depth_frame_beyond_indoor_range_reads_with_a_warning(tmp_path):
+    # A wall 3.6 m away in millimetres, then with SUN RGB-D's bits rotated
+    # by three places (28.8 m): only the second is beyond what sensors measure.
+    wall = np.full((12, 16), 3600, dtype=np.uint16)
+    rotated = ((wall.astype(np.uint32) << 3) | (wall >> 13)).astype(np.uint16)
+    for name, depth in (("wall", wall), ("rotated", rotated)):
+        write_depth_png(tmp_path / f"{name}.png", depth)
+        (tmp_path / f"{name}.frame.json").write_text(
+            f'{{"depth": "{name}.png", "depth_scale": 1000, '
+            '"intrinsics": {"fx": 10, "fy": 10, "cx": 7.5, "cy": 5.5}}')
+    assert occlusion.read_cloud(str(tmp_path / "wall.frame.json")).warnings == []
+    warnings = occlusion.read_cloud(str(tmp_path / "rotated.frame.json")).warnings
+    assert len(warnings) == 1
+    assert "192 of 192 depths" in warnings[0] and "SUN RGB-D" in warnings[0]
+
+
 def test_las_sample_reads_with_its_classes():
     cloud = occlusion.read_cloud(str(ROOT / "files" / "las" / "simple.las"))
     assert len(cloud) == 1065

@@ -27,6 +27,9 @@ class ClassMapping {
   static constexpr std::int32_t kDefaultIgnoreId = 255;
   // The built-in mapping jobs score with when none is named.
   static constexpr const char* kDefaultBuiltin = "table3.1";
+  // Not a mapping: a job's request to take the built-in that fits its ground
+  // truth's class names (app/evaluate_job.hpp, choose_builtin_mapping).
+  static constexpr const char* kByGroundTruth = "auto";
 
   // ids: ground-truth class name -> evaluation id (>= 0, not ignore_id).
   // names: names of evaluation ids; an id without one is named by its

@@ -92,6 +92,8 @@ struct ClassMetrics {
   // 2 tp / (2 tp + fp + fn), the harmonic mean of precision and recall where
   // both exist; absent exactly when iou is.
   std::optional<double> f1;
+  // Whether mIoU and mean class accuracy average this class (MeanOver below).
+  bool averaged = false;
 };
 
 // Which classes mIoU and mean class accuracy average over. The per-class

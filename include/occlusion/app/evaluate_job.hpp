@@ -26,9 +26,11 @@ namespace occlusion {
 struct EvaluateRequest {
   std::vector<std::string> ground_truth;  // labelled clouds with class names, one per scene
   std::vector<std::string> predictions;   // same count and order: clouds or label files
-  std::string class_mapping = ClassMapping::kDefaultBuiltin;  // a built-in: table3.1 or scannet20
-  std::string mapping_path;                                   // empty: class_mapping as it is
-  std::vector<std::string> ignored_classes;                   // skipped on top of the mapping's
+  // A built-in (table3.1 or scannet20), or ClassMapping::kByGroundTruth:
+  // chosen by the first ground truth's class names (choose_builtin_mapping).
+  std::string class_mapping = ClassMapping::kByGroundTruth;
+  std::string mapping_path;                  // empty: class_mapping as it is
+  std::vector<std::string> ignored_classes;  // skipped on top of the mapping's
   double max_distance = 0.05;  // for label transfer; 0: points must be the ground truth's
   // Which classes mIoU and mean class accuracy average over (confusion_matrix.hpp).
   MeanOver mean_over = MeanOver::support;
@@ -76,7 +78,9 @@ struct SceneEvaluation {
   std::size_t beyond_distance = 0;    // of those, for want of a point within max_distance
   double max_matched_distance = 0.0;
   double transfer_seconds = 0.0;
-  std::vector<std::int32_t> foreign_predictions;  // predicted ids that are no evaluation class
+  // Predicted ids that are no evaluation class, on points that count (ground
+  // truth in an evaluation class): each such prediction is a miss.
+  std::vector<std::int32_t> foreign_predictions;
   ConfusionMatrix confusion;
   SegmentationMetrics metrics;
   std::size_t dropped_nan = 0;
@@ -85,6 +89,10 @@ struct SceneEvaluation {
 
 struct EvaluateReport {
   EvaluateRequest request;
+  // The built-in mapping used (the request's, or the one chosen for its
+  // ground truth) and, when chosen, why: the report says so.
+  std::string class_mapping;
+  std::string class_mapping_reason;
   ClassMapping mapping = ClassMapping::seed_table();
   std::vector<SceneEvaluation> scenes;
   ConfusionMatrix confusion;  // the scenes' matrices summed
@@ -120,6 +128,13 @@ SceneEvaluation evaluate_scene(const SceneInput& scene, const ClassMapping& mapp
                                const Progress& progress = {});
 
 EvaluateReport run_evaluate(const EvaluateRequest& request, const Progress& progress = {});
+
+// The tables (text, Markdown) show a class without ground-truth points as
+// having none (kNoGroundTruth in its IoU and F1 cells) rather than a 0 that
+// reads as a score; this note, empty when every class has some, counts them
+// and says whether the means take them in (the rule of `metrics`).
+inline constexpr const char* kNoGroundTruth = "no gt";
+std::string no_ground_truth_note(const SegmentationMetrics& metrics);
 
 // Headline: miou (null when no class has ground truth).
 Json::Value to_json(const EvaluateReport& report);

@@ -251,15 +251,24 @@ KeyBuilder<R> cloud_format_key(std::string R::*field, std::string doc) {
 
 // How a segmentation is scored: -eval and the study. (-eval's max_distance,
 // which transfers labels from other points, is its own: the study pairs a
-// prediction with its scan point by point, evaluate_keys.cpp.)
+// prediction with its scan point by point, evaluate_keys.cpp.) With
+// `by_ground_truth`, class_mapping also takes ClassMapping::kByGroundTruth
+// (-eval, which reads its ground truth before it scores; the study's baseline
+// predicts table 3.1's ids whatever the scene).
 template <class R>
-Keys<R> scoring_keys() {
+Keys<R> scoring_keys(bool by_ground_truth = false) {
+  std::vector<std::string> mappings = ClassMapping::builtin_names();
+  std::string doc =
+      "built-in class mapping: table3.1 (the seed's, S3DIS names) or scannet20 (the ScanNet v2 "
+      "benchmark's 20 classes over NYU40 names, scored as their NYU40 ids)";
+  if (by_ground_truth) {
+    mappings.insert(mappings.begin(), ClassMapping::kByGroundTruth);
+    doc +=
+        ", or auto: scannet20 for a ground truth labelled with NYU40 classes (a ScanNet "
+        "scene), as ScanNet's own script scores it, table3.1 otherwise";
+  }
   return {
-      key("class_mapping", &R::class_mapping)
-          .choices(ClassMapping::builtin_names())
-          .doc("built-in class mapping: table3.1 (the seed's, S3DIS names) or scannet20 (the "
-               "ScanNet v2 benchmark's 20 classes over NYU40 names, scored as their NYU40 ids); "
-               "docs/metrics.md"),
+      key("class_mapping", &R::class_mapping).choices(mappings).doc(doc + "; docs/metrics.md"),
       key("mapping_path", &R::mapping_path)
           .path()
           .alias("--mapping")

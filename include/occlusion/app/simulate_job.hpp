@@ -57,7 +57,7 @@ SimulateReport run_simulate(const SimulateRequest& request, const Progress& prog
 // The same on a mesh in memory (Python's arrays); nothing is read or written.
 SimulateReport run_simulate_on(const TriangleMesh& mesh, const SimulateRequest& request,
                                const Progress& progress = {});
-// The truth as extra per-point fields (true_x .. true_nz, face), for writers.
+// The truth as extra per-point fields (true_x .. true_normal_z, face), for writers.
 std::vector<ScalarField> truth_fields(const SimulatedScan& scan);
 // Headline: points.
 Json::Value to_json(const SimulateReport& report);

@@ -105,7 +105,19 @@ struct CloudReadReport {
   // PLY and PCD properties other than those the cloud holds, in file order,
   // one value per kept point (points dropped for NaN are dropped here too).
   std::vector<ScalarField> extra_fields;
+  // What the reader read but the user should know, one sentence each, naming
+  // the file: a depth frame with depths beyond kMaxIndoorDepthMetres. Jobs
+  // report them with their own warnings.
+  std::vector<std::string> warnings;
 };
+
+// No indoor depth sensor reports depths beyond about 10 m (Kinect v1 through
+// OpenNI 10 m, RealSense D400 about 10 m, Kinect v2 8 m, Azure Kinect 5.5 m;
+// TUM's 5000 values a metre cannot exceed 13.1 m). A depth frame with depths
+// beyond twice that is read with a warning: its depth_scale is wrong, or its
+// values are encoded (SUN RGB-D's PNGs rotate each value's bits by three
+// places, which reads as about 8 times the depth, up to 65 m).
+inline constexpr double kMaxIndoorDepthMetres = 20.0;
 
 // read_cloud's refusal of a file with more points than
 // CloudReadOptions::max_points.

@@ -164,6 +164,7 @@ class Cloud:
     dropped_nan: int
     skipped_lines: int
     rooms: list[str]
+    warnings: list[str]  # what reading found, one sentence each (far depths of a depth frame)
     def __len__(self) -> int: ...
 
 class Mesh:
