@@ -105,17 +105,24 @@ namespace {
 // one between every two candidates, through the octree over `primitives`.
 WorkEstimate plan_work(std::uint64_t targets, const char* what, std::uint64_t primitives,
                        const char* primitive_name, std::size_t candidates, bool intervisible,
-                       const std::string& keys) {
+                       std::size_t refine_positions, const std::string& keys) {
   const std::uint64_t pairs =
       intervisible ? times(candidates, candidates > 0 ? candidates - 1 : 0) / 2 : 0;
   const std::uint64_t coverage = times(targets, candidates);
-  const std::uint64_t rays = coverage > kMax - pairs ? kMax : coverage + pairs;
-  std::string text = count(rays) + " shadow rays (" + count(targets) + " " + what + " x " +
-                     count(candidates) + " candidates" +
-                     (intervisible ? ", and " + count(pairs) + " between candidates" : "") + ")";
+  const std::uint64_t refine = times(targets, refine_positions);
+  std::uint64_t rays = coverage > kMax - pairs ? kMax : coverage + pairs;
+  rays = rays > kMax - refine ? kMax : rays + refine;
+  std::string text =
+      count(rays) + " shadow rays (" + count(targets) + " " + what + " x " + count(candidates) +
+      " candidates" + (intervisible ? ", and " + count(pairs) + " between candidates" : "") +
+      (refine_positions > 0
+           ? ", and x " + count(refine_positions) + " positions the refinement may try"
+           : "") +
+      ")";
   return estimate(rays, text, ray_cost(primitives, primitive_name, true),
                   keys + "fewer candidates: a larger spacing or a shorter candidates file" +
-                      (intervisible ? ", or no intervisible" : ""));
+                      (intervisible ? ", or no intervisible" : "") +
+                      (refine_positions > 0 ? ", or no refine" : ""));
 }
 
 }  // namespace
@@ -140,13 +147,17 @@ WorkEstimate one_after_the_other(const WorkEstimate& first, const WorkEstimate& 
 }
 
 WorkEstimate plan_mesh_work(const TriangleMesh& mesh, double samples_per_unit_area,
-                            std::size_t candidates, bool intervisible) {
+                            std::size_t candidates, bool intervisible,
+                            std::size_t refine_positions) {
   return plan_work(total_samples(mesh, samples_per_unit_area), "samples", mesh.face_count(),
-                   "faces", candidates, intervisible, "samples_per_unit_area, or ");
+                   "faces", candidates, intervisible, refine_positions,
+                   "samples_per_unit_area, or ");
 }
 
-WorkEstimate plan_cloud_work(std::size_t points, std::size_t candidates, bool intervisible) {
-  return plan_work(points, "points", points, "points", candidates, intervisible, "");
+WorkEstimate plan_cloud_work(std::size_t points, std::size_t candidates, bool intervisible,
+                             std::size_t refine_positions) {
+  return plan_work(points, "points", points, "points", candidates, intervisible, refine_positions,
+                   "");
 }
 
 }  // namespace occlusion
