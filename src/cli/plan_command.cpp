@@ -40,7 +40,7 @@ void print_human(const PlanReport& report) {
           q.out_of_reach == "most" ? " (all that can be reached)" : "", s.share_stations,
           100.0 * s.share_coverage, 100.0 * q.target_coverage,
           100.0 * q.target_coverage * s.reachable_coverage,
-          q.out_of_reach == "most" ? "; --out-of-reach share stops there" : "");
+          q.out_of_reach == "most" ? "; --out-of-reach share aims there instead" : "");
     } else {
       std::printf("NOT reached (aimed at %.1f %%)\n", 100.0 * s.aimed_coverage);
     }
