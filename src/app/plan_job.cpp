@@ -288,10 +288,10 @@ PlanReport plan_cloud_impl(const PointCloud& cloud, const PlanRequest& request,
   report.frame["lo"] = to_json(box.lo + cloud.shift);
   report.frame["hi"] = to_json(box.hi + cloud.shift);
 
-  const auto filter_work = [&](std::size_t positions) {
-    return plan_filter_work(positions, cloud.size(), false);
-  };
   const std::vector<Station> stations = scan_stations(cloud);
+  const auto filter_work = [&](std::size_t positions) {
+    return plan_filter_work(positions, cloud.size(), false, stations.size());
+  };
   std::vector<Eigen::Vector3d> origins;
   for (const Station& station : stations) origins.push_back(station.frame.origin);
   std::optional<FreeSpace> free_space;
@@ -374,7 +374,7 @@ PlanReport plan_mesh_impl(const TriangleMesh& mesh, const PlanRequest& request,
   report.frame["hi"] = to_json(box.hi);
 
   const auto filter_work = [&](std::size_t positions) {
-    return plan_filter_work(positions, mesh.face_count(), true);
+    return plan_filter_work(positions, mesh.face_count(), true, 0);
   };
   std::optional<FreeSpace> free_space;
   const std::vector<Eigen::Vector3d> all =

@@ -127,17 +127,21 @@ WorkEstimate plan_work(std::uint64_t targets, const char* what, std::uint64_t pr
 
 }  // namespace
 
-WorkEstimate plan_filter_work(std::size_t positions, std::uint64_t primitives, bool mesh) {
+WorkEstimate plan_filter_work(std::size_t positions, std::uint64_t primitives, bool mesh,
+                              std::size_t stations) {
   // Each position's probes (every one of the sphere's directions at most),
-  // and its clearance: one kd-tree query, or a test of every face.
-  const std::uint64_t probes = times(positions, kOutsideProbeRays + (mesh ? kInsideProbeRays : 0));
+  // two rays to and past each of a cloud's stations (what they saw empty),
+  // and its clearance: a look-up in the points' cells, or a test of every face.
+  const std::uint64_t per_position =
+      kOutsideProbeRays + (mesh ? kInsideProbeRays : 0) + 2 * std::uint64_t{stations};
+  const std::uint64_t probes = times(positions, per_position);
   const RayCost cost = ray_cost(primitives, mesh ? "faces" : "points", true);
   const std::uint64_t clearance = times(positions, mesh ? primitives : cost.steps);
   const std::uint64_t steps = times(probes, cost.steps);
   return {steps > kMax - clearance ? kMax : steps + clearance,
           count(positions) + " positions' free-space probes (" + count(probes) + " rays x " +
               cost.text + ") and clearance (" + count(clearance) +
-              (mesh ? " face tests)" : " kd-tree steps)"),
+              (mesh ? " face tests)" : " point-cell steps)"),
           "a larger spacing or a shorter candidates file"};
 }
 
