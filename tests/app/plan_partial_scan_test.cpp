@@ -8,18 +8,22 @@
 
 #include <string>
 
+#include "io/scratch_directory.hpp"
 #include "occlusion/app/errors.hpp"
 #include "occlusion/app/plan_job.hpp"
+#include "support/e57_writer.hpp"
 #include "support/mesh_truth.hpp"
 #include "support/plan_request.hpp"
 
 namespace occlusion {
 namespace {
 
-// The furnished 6 x 5 x 3 room scanned from (1.5, 2.5, 1.5) over part of a
-// turn: azimuths from 0 (+x) to `span` (half a turn: the half y > 2.5).
+const Eigen::Vector3d kOrigin(1.5, 2.5, 1.5);
+
+// The furnished 6 x 5 x 3 room scanned from kOrigin over part of a turn:
+// azimuths from 0 (+x) to `span` (half a turn: the half y > 2.5).
 PointCloud partial_scan(double span, bool with_station) {
-  const Eigen::Vector3d origin(1.5, 2.5, 1.5);
+  const Eigen::Vector3d origin = kOrigin;
   PointCloud cloud =
       testing::station_scan(testing::furnished_room(), origin, 0.015, 0.015, span).cloud;
   if (with_station) {
@@ -56,6 +60,42 @@ TEST(PlanPartialScan, TheStationKeepsTheCandidatesItsScanSawEmpty) {
   ASSERT_EQ(report.selection.stations.size(), 2u);
   EXPECT_TRUE(report.selection.stations[0].existing);
   EXPECT_GT(report.selection.stations[1].gain, 0.0);
+}
+
+TEST(PlanPartialScan, AnE57FileOfHalfATurnPlansItsNextStation) {
+  // As a scanner's file holds it: the points in the scanner's frame, the
+  // pose placing it at the station.
+  const PointCloud scan = partial_scan(M_PI, false);
+  std::vector<double> x, y, z;
+  for (const Eigen::Vector3f& p : scan.positions) {
+    const Eigen::Vector3d local = p.cast<double>() - kOrigin;
+    x.push_back(local.x());
+    y.push_back(local.y());
+    z.push_back(local.z());
+  }
+  test::E57ScanSpec spec;
+  spec.name = "Station 01";
+  spec.rotation = Eigen::Quaterniond::Identity();
+  spec.translation = kOrigin;
+  spec.fields = {test::e57_double("cartesianX", x), test::e57_double("cartesianY", y),
+                 test::e57_double("cartesianZ", z)};
+  spec.packets = 64;  // a data packet holds at most 64 KiB
+  const testing::ScratchDirectory dir;
+  const std::string path = dir.file("station.e57");
+  test::E57FileSpec file;
+  file.scans = {spec};
+  test::write_e57(path, file);
+
+  PlanRequest request = best_one();
+  request.path = path;
+  const PlanReport report = run_plan(request);
+  // Without what the station saw empty half the grid was outside.
+  EXPECT_LT(report.candidates.rejected.outside, report.candidates.tested / 10);
+  EXPECT_GT(report.candidates.positions.size(), 100u);
+  ASSERT_EQ(report.placed.size(), 1u);
+  EXPECT_EQ(report.candidate_names.at(report.placed[0]), "Station 01");
+  ASSERT_EQ(report.selection.stations.size(), 2u);
+  EXPECT_FALSE(report.selection.stations[1].existing);
 }
 
 TEST(PlanPartialScan, TheRefusalSaysWhatToDoForEachReason) {
