@@ -9,9 +9,6 @@ namespace {
 
 using Bits = std::vector<std::uint64_t>;
 
-// As station_selection.cpp: this much of the total is rounding, not coverage.
-constexpr double kRelativeTolerance = 1e-12;
-
 void add_row(Bits& covered, const std::uint64_t* row) {
   for (std::size_t word = 0; word < covered.size(); ++word) covered[word] |= row[word];
 }
@@ -23,7 +20,7 @@ Refinement refine_stations(const CoverageMatrix& matrix, const StationSelection&
                            const TracePositions& trace, const FreePositions& free,
                            const RefinementOptions& options, const Progress& progress) {
   const double total = matrix.total_weight();
-  const double tolerance = kRelativeTolerance * total;
+  const double tolerance = kWeightRounding * total;
   const std::size_t words = matrix.words_per_row();
   Refinement out;
   std::vector<std::size_t> ranks;  // of the new stations, 0-based

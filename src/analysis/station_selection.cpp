@@ -12,9 +12,7 @@ namespace {
 
 using Bits = std::vector<std::uint64_t>;
 
-// Sums of weights are formed in different orders by different moves; this
-// much (relative to the total) is rounding, not coverage.
-constexpr double kRelativeTolerance = 1e-12;
+constexpr double kRelativeTolerance = kWeightRounding;
 static_assert(kLeastTargetCoverage > 2 * kRelativeTolerance, "a target must exceed rounding");
 // Matrix words read between two progress reports: a few milliseconds. A
 // large matrix's rows are read for seconds between greedy's steps or the
