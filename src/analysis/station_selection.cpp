@@ -203,6 +203,7 @@ class Selector {
   std::size_t join_slot(std::size_t candidate) const;
   void greedy();
   void improve();
+  std::size_t stations_for_all() const;
   bool drop_one();
   bool two_for_one();
   bool swap_one();
@@ -415,6 +416,31 @@ bool Selector::swap_one() {
   return false;
 }
 
+std::size_t Selector::stations_for_all() const {
+  // Plain greedy from the chosen stations on, until nothing reachable is left.
+  Bits covered = union_except(chosen_);
+  std::vector<bool> in_set = in_set_;
+  std::size_t count = chosen_.size();
+  while (matrix_.weight_of(covered) < reachable_weight_ - tolerance_) {
+    progress_.check_cancel();
+    std::size_t best = SIZE_MAX;
+    double best_gain = tolerance_;
+    for (std::size_t c = 0; c < matrix_.candidates(); ++c) {
+      if (in_set[c]) continue;
+      const double g = matrix_.gain(c, covered);
+      if (g > best_gain) {
+        best = c;
+        best_gain = g;
+      }
+    }
+    if (best == SIZE_MAX) break;
+    add_row(covered, matrix_, best);
+    in_set[best] = true;
+    ++count;
+  }
+  return count;
+}
+
 void Selector::improve() {
   // Each move lowers the count or raises coverage by more than the
   // tolerance, so the pass ends.
@@ -554,6 +580,10 @@ StationSelection Selector::run() {
   result.aimed_coverage = target_mode() ? target_weight_ / total : 0.0;
 
   state_stations(StationRows{matrix_}, options_, result);
+  if (scaled_) {
+    result.most_stations =
+        options_.out_of_reach == OutOfReach::kShare ? stations_for_all() : chosen_.size();
+  }
   if (target_mode()) {
     const double asked = target_weight_ - placed_weight_;
     std::size_t fewest = 0;

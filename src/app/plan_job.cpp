@@ -658,6 +658,7 @@ Json::Value to_json(const PlanReport& report) {
     Json::Value out_of_reach(Json::objectValue);
     out_of_reach["chosen"] = q.out_of_reach;
     out_of_reach["most_coverage"] = s.reachable_coverage;
+    out_of_reach["most_reached_by_new_stations"] = Json::UInt64(s.most_stations);
     out_of_reach["share_coverage"] = q.target_coverage * s.reachable_coverage;
     out_of_reach["share_reached_by_first_new_stations"] = Json::UInt64(s.share_stations);
     out_of_reach["share_reached_at"] = s.share_coverage;

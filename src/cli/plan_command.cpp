@@ -33,14 +33,17 @@ void print_human(const PlanReport& report) {
       // What was asked, what can be reached, what was chosen, and the other choice.
       std::printf("NOT reachable: the candidates see %.1f %% at most\n",
                   100.0 * s.reachable_coverage);
+      std::printf("  chosen      %s: aimed at %.1f %%%s\n", q.out_of_reach.c_str(),
+                  100.0 * s.aimed_coverage,
+                  q.out_of_reach == "most" ? " (all that can be reached)" : "");
       std::printf(
-          "  chosen      %s: aimed at %.1f %%%s; the first %zu new station(s) reach %.1f %% "
-          "(%.0f %% of the reachable: %.1f %%%s)\n",
-          q.out_of_reach.c_str(), 100.0 * s.aimed_coverage,
-          q.out_of_reach == "most" ? " (all that can be reached)" : "", s.share_stations,
-          100.0 * s.share_coverage, 100.0 * q.target_coverage,
-          100.0 * q.target_coverage * s.reachable_coverage,
-          q.out_of_reach == "most" ? "; --out-of-reach share aims there instead" : "");
+          "  the choice  all %.1f %% with %zu new station(s)%s; %.0f %% of it (%.1f %%) "
+          "reached by the first %zu (at %.1f %%)%s\n",
+          100.0 * s.reachable_coverage, s.most_stations,
+          q.out_of_reach == "share" ? " (greedy from these on: --out-of-reach most)" : "",
+          100.0 * q.target_coverage, 100.0 * q.target_coverage * s.reachable_coverage,
+          s.share_stations, 100.0 * s.share_coverage,
+          q.out_of_reach == "most" ? " (--out-of-reach share aims there instead)" : "");
     } else {
       std::printf("NOT reached (aimed at %.1f %%)\n", 100.0 * s.aimed_coverage);
     }

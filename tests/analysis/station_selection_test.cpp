@@ -273,6 +273,8 @@ TEST(StationSelection, AnUnreachableTargetsShareTakesFewerStationsWhenAsked) {
   EXPECT_DOUBLE_EQ(selection.coverage, 0.85);
   EXPECT_EQ(new_stations(selection), (std::vector<std::size_t>{1, 2}));
   EXPECT_EQ(selection.share_stations, 2u);
+  // All of the reachable takes a third: candidate 3's last 5 %.
+  EXPECT_EQ(selection.most_stations, 3u);
   EXPECT_NE(selection.guarantee.find("out_of_reach share"), std::string::npos)
       << selection.guarantee;
   // The same with the most asked: a third station for the last 5 %.
@@ -280,6 +282,7 @@ TEST(StationSelection, AnUnreachableTargetsShareTakesFewerStationsWhenAsked) {
   const StationSelection most = select_stations(matrix, options);
   EXPECT_EQ(new_stations(most), (std::vector<std::size_t>{1, 2, 3}));
   EXPECT_EQ(most.share_stations, 2u);
+  EXPECT_EQ(most.most_stations, 3u);
   EXPECT_DOUBLE_EQ(most.share_coverage, 0.85);
 }
 

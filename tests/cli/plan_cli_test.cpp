@@ -57,9 +57,16 @@ TEST(PlanCli, ATargetOutOfReachSaysWhatWasAskedReachableAndChosen) {
   EXPECT_GE(refinement["coverage_after"].asDouble(), refinement["coverage_before"].asDouble());
   EXPECT_TRUE(json["candidates"]["spacing_auto"].asBool());
 
+  EXPECT_EQ(json["out_of_reach"]["most_reached_by_new_stations"].asUInt64(),
+            json["stations"].size());
+  EXPECT_TRUE(has(text.out, "the choice  all")) << text.out;
+
   const Json::Value share = run_json(ask + " --out-of-reach share");
   EXPECT_EQ(share["out_of_reach"]["chosen"].asString(), "share");
   EXPECT_DOUBLE_EQ(share["aimed_coverage"].asDouble(), 0.99 * reachable);
+  // The most takes at least the stations the share takes.
+  EXPECT_GE(share["out_of_reach"]["most_reached_by_new_stations"].asUInt64(),
+            share["stations"].size());
 }
 
 TEST(PlanCli, NoFreeCandidateIsRefusedSayingWhatToDo) {

@@ -92,6 +92,9 @@ struct StationSelection {
   double aimed_coverage = 0.0;
   double share_coverage = 0.0;
   std::size_t share_stations = 0;
+  // And the other way (OutOfReach::kShare): how many new stations reach all
+  // of the reachable, these and those greedy adds to them (kMost: these).
+  std::size_t most_stations = 0;
   // Greedy's answer before the improvement pass.
   std::vector<SelectedStation> greedy;
   double greedy_coverage = 0.0;
