@@ -4,11 +4,12 @@
 #include <atomic>
 #include <cmath>
 #include <functional>
+#include <limits>
+#include <memory>
 #include <stdexcept>
 #include <thread>
 
 #include "occlusion/analysis/inside_solid.hpp"
-#include "occlusion/analysis/label_transfer.hpp"
 #include "occlusion/analysis/point_spacing.hpp"
 #include "occlusion/core/parallel.hpp"
 #include "occlusion/core/sphere_octree.hpp"
@@ -85,23 +86,29 @@ double squared_distance(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
 // over a large mesh takes seconds.
 constexpr std::size_t kFaceTestsPerReport = std::size_t{1} << 22;
 
-// Positions with nothing nearer than `clearance` among the mesh's faces.
-std::vector<bool> clear_of_faces(const TriangleMesh& mesh,
-                                 const std::vector<Eigen::Vector3d>& positions, double clearance,
-                                 unsigned threads, const Progress& progress) {
-  struct Face {
-    Eigen::Vector3d a, b, c, lo, hi;
-  };
-  std::vector<Face> faces(mesh.face_count());
+// A face with its box grown by the clearance (a quick rejection).
+struct ClearanceFace {
+  Eigen::Vector3d a, b, c, lo, hi;
+};
+
+std::vector<ClearanceFace> clearance_faces(const TriangleMesh& mesh, double clearance) {
+  std::vector<ClearanceFace> faces(mesh.face_count());
   for (std::size_t f = 0; f < faces.size(); ++f) {
     const auto& v = mesh.faces[f];
-    Face& face = faces[f];
+    ClearanceFace& face = faces[f];
     face.a = mesh.vertices[v[0]];
     face.b = mesh.vertices[v[1]];
     face.c = mesh.vertices[v[2]];
     face.lo = face.a.cwiseMin(face.b).cwiseMin(face.c).array() - clearance;
     face.hi = face.a.cwiseMax(face.b).cwiseMax(face.c).array() + clearance;
   }
+  return faces;
+}
+
+// Positions with nothing nearer than `clearance` among the mesh's faces.
+std::vector<bool> clear_of_faces(const std::vector<ClearanceFace>& faces,
+                                 const std::vector<Eigen::Vector3d>& positions, double clearance,
+                                 unsigned threads, const Progress& progress) {
   const double limit = clearance * clearance;
   std::vector<char> clear(positions.size(), 1);
   std::atomic<bool> cancelled{false};
@@ -119,7 +126,7 @@ std::vector<bool> clear_of_faces(const TriangleMesh& mesh,
     }
     for (std::size_t i = begin; i < end; ++i) {
       const Eigen::Vector3d& p = positions[i];
-      for (const Face& face : faces) {
+      for (const ClearanceFace& face : faces) {
         if ((p.array() < face.lo.array()).any() || (p.array() > face.hi.array()).any()) continue;
         if (squared_distance(p, face.a, face.b, face.c) < limit) {
           clear[i] = 0;
@@ -137,23 +144,59 @@ std::vector<bool> clear_of_faces(const TriangleMesh& mesh,
   return {clear.begin(), clear.end()};
 }
 
-// Positions with no point nearer than `clearance` (a kd-tree's nearest neighbour).
-std::vector<bool> clear_of_points(const PointCloud& cloud,
-                                  const std::vector<Eigen::Vector3d>& positions, double clearance,
-                                  unsigned threads, const Progress& progress) {
-  std::vector<bool> clear(positions.size(), true);
-  if (clearance <= 0.0 || positions.empty()) return clear;
-  std::vector<Eigen::Vector3f> targets;
-  for (const auto& p : positions) targets.push_back(p.cast<float>());
-  LabelTransferOptions options;
-  options.max_distance = clearance;
-  options.threads = threads;
-  // A position that gets a label has a point within the clearance.
-  const LabelTransfer nearest = transfer_labels(
-      cloud.positions, std::vector<std::int32_t>(cloud.size(), 0), targets, options, progress);
-  for (std::size_t i = 0; i < positions.size(); ++i) clear[i] = nearest.labels[i] < 0;
-  return clear;
-}
+// A cloud's points by cells of the clearance's size: every point nearer
+// than the clearance to a position lies in its cell or one of the 26 around
+// it. Built once, asked for a few positions at a time by a refinement as for
+// a grid of thousands.
+class PointCells {
+ public:
+  PointCells(const PointCloud& cloud, double clearance)
+      : points_(cloud.positions), cell_(clearance) {
+    if (clearance <= 0.0) return;
+    entries_.reserve(cloud.size());
+    for (std::size_t i = 0; i < cloud.size(); ++i) {
+      entries_.push_back(
+          {key(cell_of(cloud.positions[i].cast<double>())), static_cast<std::uint32_t>(i)});
+    }
+    std::sort(entries_.begin(), entries_.end());
+  }
+
+  // Is a point nearer than the clearance to p?
+  bool near(const Eigen::Vector3d& p) const {
+    if (cell_ <= 0.0) return false;
+    const Eigen::Array3d centre = cell_of(p);
+    const double limit = cell_ * cell_;
+    for (int dx = -1; dx <= 1; ++dx) {
+      for (int dy = -1; dy <= 1; ++dy) {
+        for (int dz = -1; dz <= 1; ++dz) {
+          const std::uint64_t k = key(centre + Eigen::Array3d(dx, dy, dz));
+          auto it = std::lower_bound(entries_.begin(), entries_.end(), Entry{k, 0});
+          for (; it != entries_.end() && it->first == k; ++it) {
+            if ((points_[it->second].cast<double>() - p).squaredNorm() < limit) return true;
+          }
+        }
+      }
+    }
+    return false;
+  }
+
+ private:
+  using Entry = std::pair<std::uint64_t, std::uint32_t>;
+  Eigen::Array3d cell_of(const Eigen::Vector3d& p) const { return (p.array() / cell_).floor(); }
+  // Cells hash to 64 bits; two that collide share a run, which the distance test sorts out.
+  static std::uint64_t key(const Eigen::Array3d& cell) {
+    std::uint64_t h = 0;
+    for (int axis = 0; axis < 3; ++axis) {
+      h = (h ^ static_cast<std::uint64_t>(static_cast<std::int64_t>(cell[axis]))) *
+          0x9E3779B97F4A7C15ull;
+    }
+    return h;
+  }
+
+  const std::vector<Eigen::Vector3f>& points_;
+  double cell_;
+  std::vector<Entry> entries_;
+};
 
 // Positions between two progress reports of the probes.
 constexpr std::size_t kProbedPerReport = 64;
@@ -163,12 +206,14 @@ constexpr std::size_t kProbedPerReport = 64;
 // checked between positions for both. Positions are probed on `threads`
 // threads (a few hundred single rays each: 100,000 took 30 s on one), the
 // calling thread reporting; the kept ones stay in their order.
+// `seen_empty` (clouds with stations; else null) keeps a position the probes
+// call outside.
 template <class Tree>
 StationCandidates keep(std::vector<Eigen::Vector3d> positions, const std::vector<bool>& clear,
                        const std::function<bool(const Eigen::Vector3d&)>& in_solid,
-                       const Tree& tree, const UpAxis& up, unsigned threads,
-                       const Progress& progress) {
-  const auto directions = probe_directions(up);
+                       const std::function<bool(const Eigen::Vector3d&)>& seen_empty,
+                       const Tree& tree, const std::vector<Eigen::Vector3f>& directions,
+                       unsigned threads, const Progress& progress) {
   enum Verdict : std::uint8_t { kKept, kClearance, kInsideSolid, kOutside };
   std::vector<std::uint8_t> verdict(positions.size(), kKept);
   const std::thread::id caller = std::this_thread::get_id();
@@ -181,7 +226,8 @@ StationCandidates keep(std::vector<Eigen::Vector3d> positions, const std::vector
         verdict[i] = kClearance;
       } else if (in_solid && in_solid(positions[i])) {
         verdict[i] = kInsideSolid;
-      } else if (escapes(tree, positions[i], directions)) {
+      } else if (escapes(tree, positions[i], directions) &&
+                 !(seen_empty && seen_empty(positions[i]))) {
         verdict[i] = kOutside;
       }
     }
@@ -221,7 +267,41 @@ void check_positions(const std::vector<Eigen::Vector3d>& positions, double clear
   }
 }
 
+// Does a station's line of sight pass through `position` to a point beyond
+// it? The segment from the station is clear, and the ray on meets the scene.
+template <class Tree>
+bool seen_empty_from(const Tree& tree, const std::vector<Eigen::Vector3d>& stations,
+                     const Eigen::Vector3d& position) {
+  for (const auto& station : stations) {
+    const Eigen::Vector3d offset = position - station;
+    const double distance = offset.norm();
+    if (!(distance > 0.0)) return true;
+    Ray ray;
+    ray.origin = station.cast<float>();
+    ray.direction = (offset / distance).cast<float>();
+    ray.t_max = static_cast<float>(distance);
+    if (tree.occluded(ray)) continue;
+    ray.t_min = ray.t_max;
+    ray.t_max = std::numeric_limits<float>::infinity();
+    if (tree.occluded(ray)) return true;
+  }
+  return false;
+}
+
 }  // namespace
+
+double auto_grid_spacing(const Box& frame, const UpAxis& up) {
+  const int a = up.axis, u = (a + 1) % 3, v = (a + 2) % 3;
+  const double eu = frame.hi[u] - frame.lo[u], ev = frame.hi[v] - frame.lo[v];
+  const double n = static_cast<double>(kAutoGridPositions);
+  double spacing = std::sqrt(eu * ev / n);
+  // A floor plan that is a line: its length over the positions.
+  if (!(spacing > 0.0)) spacing = std::max(eu, ev) / n;
+  if (!(spacing > 0.0) || !std::isfinite(spacing)) {
+    throw std::invalid_argument("station candidates: the frame has no extent across up");
+  }
+  return spacing;
+}
 
 std::vector<Eigen::Vector3d> floor_grid(const Box& frame, const UpAxis& up, double spacing,
                                         double height) {
@@ -261,32 +341,91 @@ std::vector<Eigen::Vector3d> floor_grid(const Box& frame, const UpAxis& up, doub
   return positions;
 }
 
+struct FreeSpace::Impl {
+  double clearance = 0.0;
+  unsigned threads = 0;
+  std::vector<Eigen::Vector3f> directions;
+  // A cloud's: its point cells, its probe spheres and stations.
+  std::unique_ptr<PointCells> cells;
+  std::unique_ptr<SphereOctree> spheres;
+  std::vector<Eigen::Vector3d> stations;
+  // A mesh's: its faces for the clearance, and its octree.
+  std::vector<ClearanceFace> faces;
+  std::unique_ptr<TriangleOctree> triangles;
+};
+
+FreeSpace::FreeSpace(const PointCloud& cloud, double clearance, const UpAxis& up,
+                     std::vector<Eigen::Vector3d> stations, unsigned threads,
+                     const Progress& progress)
+    : impl_(std::make_unique<Impl>()) {
+  if (cloud.size() == 0) throw std::invalid_argument("station candidates: the cloud is empty");
+  check_positions({}, clearance);
+  impl_->clearance = clearance;
+  impl_->threads = threads;
+  impl_->directions = probe_directions(up);
+  impl_->cells = std::make_unique<PointCells>(cloud, clearance);
+  const double radius = kProbeRadiusPerSpacing * measure_point_spacing(cloud, threads).spacing;
+  impl_->spheres = std::make_unique<SphereOctree>(
+      make_spheres(cloud.positions, static_cast<float>(radius)), sphere_octree_options(), progress);
+  impl_->stations = std::move(stations);
+}
+
+FreeSpace::FreeSpace(const TriangleMesh& mesh, double clearance, const UpAxis& up, unsigned threads,
+                     const Progress& progress)
+    : impl_(std::make_unique<Impl>()) {
+  if (mesh.face_count() == 0)
+    throw std::invalid_argument("station candidates: the mesh has no faces");
+  check_positions({}, clearance);
+  impl_->clearance = clearance;
+  impl_->threads = threads;
+  impl_->directions = probe_directions(up);
+  impl_->faces = clearance_faces(mesh, clearance);
+  impl_->triangles =
+      std::make_unique<TriangleOctree>(pack_triangles(mesh.triangles()), OctreeOptions{}, progress);
+}
+
+FreeSpace::~FreeSpace() = default;
+FreeSpace::FreeSpace(FreeSpace&&) noexcept = default;
+FreeSpace& FreeSpace::operator=(FreeSpace&&) noexcept = default;
+
+StationCandidates FreeSpace::keep(std::vector<Eigen::Vector3d> positions,
+                                  const Progress& progress) const {
+  const Impl& s = *impl_;
+  check_positions(positions, s.clearance);
+  if (s.triangles) {
+    const std::vector<bool> clear =
+        clear_of_faces(s.faces, positions, s.clearance, s.threads, progress);
+    const auto in_solid = [&](const Eigen::Vector3d& position) {
+      return back_face_shares(*s.triangles, {position}).front() > kInsideBackFaceShare;
+    };
+    return occlusion::keep(std::move(positions), clear, in_solid, nullptr, *s.triangles,
+                           s.directions, s.threads, progress);
+  }
+  std::vector<bool> clear(positions.size());
+  for (std::size_t i = 0; i < positions.size(); ++i) clear[i] = !s.cells->near(positions[i]);
+  std::function<bool(const Eigen::Vector3d&)> seen_empty;
+  if (!s.stations.empty()) {
+    seen_empty = [&](const Eigen::Vector3d& p) {
+      return seen_empty_from(*s.spheres, s.stations, p);
+    };
+  }
+  return occlusion::keep(std::move(positions), clear, nullptr, seen_empty, *s.spheres, s.directions,
+                         s.threads, progress);
+}
+
 StationCandidates keep_free_positions(const PointCloud& cloud,
                                       std::vector<Eigen::Vector3d> positions, double clearance,
                                       const UpAxis& up, unsigned threads,
                                       const Progress& progress) {
-  if (cloud.size() == 0) throw std::invalid_argument("station candidates: the cloud is empty");
-  check_positions(positions, clearance);
-  const std::vector<bool> clear = clear_of_points(cloud, positions, clearance, threads, progress);
-  const double radius = kProbeRadiusPerSpacing * measure_point_spacing(cloud, threads).spacing;
-  const SphereOctree tree(make_spheres(cloud.positions, static_cast<float>(radius)),
-                          sphere_octree_options(), progress);
-  return keep(std::move(positions), clear, nullptr, tree, up, threads, progress);
+  return FreeSpace(cloud, clearance, up, {}, threads, progress)
+      .keep(std::move(positions), progress);
 }
 
 StationCandidates keep_free_positions(const TriangleMesh& mesh,
                                       std::vector<Eigen::Vector3d> positions, double clearance,
                                       const UpAxis& up, unsigned threads,
                                       const Progress& progress) {
-  if (mesh.face_count() == 0)
-    throw std::invalid_argument("station candidates: the mesh has no faces");
-  check_positions(positions, clearance);
-  const std::vector<bool> clear = clear_of_faces(mesh, positions, clearance, threads, progress);
-  const TriangleOctree tree(pack_triangles(mesh.triangles()), {}, progress);
-  const auto in_solid = [&](const Eigen::Vector3d& position) {
-    return back_face_shares(tree, {position}).front() > kInsideBackFaceShare;
-  };
-  return keep(std::move(positions), clear, in_solid, tree, up, threads, progress);
+  return FreeSpace(mesh, clearance, up, threads, progress).keep(std::move(positions), progress);
 }
 
 }  // namespace occlusion

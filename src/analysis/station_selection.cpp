@@ -12,18 +12,19 @@ namespace {
 
 using Bits = std::vector<std::uint64_t>;
 
-// Sums of weights are formed in different orders by different moves; this
-// much (relative to the total) is rounding, not coverage.
-constexpr double kRelativeTolerance = 1e-12;
+constexpr double kRelativeTolerance = kWeightRounding;
 static_assert(kLeastTargetCoverage > 2 * kRelativeTolerance, "a target must exceed rounding");
 // Matrix words read between two progress reports: a few milliseconds. A
 // large matrix's rows are read for seconds between greedy's steps or the
 // improvement pass's moves, and a report is where Python polls Ctrl-C.
 constexpr std::size_t kWordsPerReport = std::size_t{1} << 22;
 
-void add_row(Bits& covered, const CoverageMatrix& matrix, std::size_t candidate) {
-  const std::uint64_t* row = matrix.row(candidate);
+void add_row(Bits& covered, const std::uint64_t* row) {
   for (std::size_t word = 0; word < covered.size(); ++word) covered[word] |= row[word];
+}
+
+void add_row(Bits& covered, const CoverageMatrix& matrix, std::size_t candidate) {
+  add_row(covered, matrix.row(candidate));
 }
 
 std::string percent(double share) {
@@ -53,6 +54,109 @@ struct EntryOrder {
     return a.candidate > b.candidate;
   }
 };
+
+// The rows stations are read from: the matrix's candidates, then those of
+// stations moved off them (restate_moved).
+struct StationRows {
+  const CoverageMatrix& matrix;
+  const CoverageMatrix* moved = nullptr;
+  std::size_t count() const { return matrix.candidates() + (moved ? moved->candidates() : 0); }
+  const std::uint64_t* row(std::size_t c) const {
+    return c < matrix.candidates() ? matrix.row(c) : moved->row(c - matrix.candidates());
+  }
+  double gain(std::size_t c, const Bits& covered) const {
+    return c < matrix.candidates() ? matrix.gain(c, covered)
+                                   : moved->gain(c - matrix.candidates(), covered);
+  }
+  double alone(std::size_t c) const {
+    return c < matrix.candidates() ? matrix.seen_weight(c)
+                                   : moved->seen_weight(c - matrix.candidates());
+  }
+};
+
+// `chosen` reordered so that each adds the most to the placed ones and those before it.
+std::vector<std::size_t> greedy_order(const StationRows& rows,
+                                      const std::vector<std::size_t>& placed,
+                                      std::vector<std::size_t> chosen) {
+  Bits covered(rows.matrix.words_per_row(), 0);
+  for (std::size_t p : placed) add_row(covered, rows.row(p));
+  std::vector<std::size_t> order;
+  while (!chosen.empty()) {
+    std::size_t best = 0;
+    double best_gain = -1.0;
+    for (std::size_t i = 0; i < chosen.size(); ++i) {
+      const double g = rows.gain(chosen[i], covered);
+      if (g > best_gain) {
+        best = i;
+        best_gain = g;
+      }
+    }
+    order.push_back(chosen[best]);
+    add_row(covered, rows.row(chosen[best]));
+    chosen.erase(chosen.begin() + static_cast<std::ptrdiff_t>(best));
+  }
+  return order;
+}
+
+// The placed stations, then `chosen`, each with its gain and the coverage so far.
+std::vector<SelectedStation> ranked(const StationRows& rows, const std::vector<std::size_t>& placed,
+                                    const std::vector<std::size_t>& chosen) {
+  const double total = rows.matrix.total_weight();
+  std::vector<SelectedStation> stations;
+  Bits covered(rows.matrix.words_per_row(), 0);
+  double weight = 0.0;
+  const auto add = [&](std::size_t candidate, bool existing) {
+    const double g = rows.gain(candidate, covered);
+    add_row(covered, rows.row(candidate));
+    weight += g;
+    stations.push_back({candidate, existing, g / total, weight / total});
+  };
+  for (std::size_t p : placed) add(p, true);
+  for (std::size_t c : chosen) add(c, false);
+  return stations;
+}
+
+// What the stations make of the targets and candidates: first_rank, coverage,
+// gain_left, coverage_alone; and, for a target out of reach, the fewest
+// leading new stations that reach its share of the reachable.
+void state_stations(const StationRows& rows, const SelectionOptions& options,
+                    StationSelection& result) {
+  const CoverageMatrix& matrix = rows.matrix;
+  const double total = matrix.total_weight();
+  Bits covered(matrix.words_per_row(), 0);
+  result.first_rank.assign(matrix.targets(), -1);
+  for (std::size_t r = 0; r < result.stations.size(); ++r) {
+    const std::uint64_t* row = rows.row(result.stations[r].candidate);
+    for (std::size_t word = 0; word < covered.size(); ++word) {
+      std::uint64_t added = row[word] & ~covered[word];
+      covered[word] |= row[word];
+      while (added != 0) {
+        const int bit = __builtin_ctzll(added);
+        result.first_rank[word * 64 + static_cast<std::size_t>(bit)] =
+            static_cast<std::int32_t>(r + 1);
+        added &= added - 1;
+      }
+    }
+  }
+  result.coverage = matrix.weight_of(covered) / total;
+  result.gain_left.resize(rows.count());
+  result.coverage_alone.resize(rows.count());
+  for (std::size_t c = 0; c < rows.count(); ++c) {
+    result.gain_left[c] = rows.gain(c, covered) / total;
+    result.coverage_alone[c] = rows.alone(c) / total;
+  }
+  result.share_stations = 0;
+  result.share_coverage = 0.0;
+  if (options.stations == 0 &&
+      options.target_coverage > result.reachable_coverage + kRelativeTolerance) {
+    const double share = options.target_coverage * result.reachable_coverage;
+    for (const SelectedStation& station : result.stations) {
+      if (!station.existing) ++result.share_stations;
+      result.share_coverage = station.coverage;
+      if (station.coverage >= share - kRelativeTolerance) break;
+    }
+  }
+}
 
 class Selector {
  public:
@@ -99,11 +203,10 @@ class Selector {
   std::size_t join_slot(std::size_t candidate) const;
   void greedy();
   void improve();
+  std::size_t stations_for_all() const;
   bool drop_one();
   bool two_for_one();
   bool swap_one();
-  std::vector<std::size_t> greedy_order(std::vector<std::size_t> chosen) const;
-  std::vector<SelectedStation> ranked(const std::vector<std::size_t>& chosen) const;
   void describe(StationSelection& result) const;
 
   const CoverageMatrix& matrix_;
@@ -313,6 +416,31 @@ bool Selector::swap_one() {
   return false;
 }
 
+std::size_t Selector::stations_for_all() const {
+  // Plain greedy from the chosen stations on, until nothing reachable is left.
+  Bits covered = union_except(chosen_);
+  std::vector<bool> in_set = in_set_;
+  std::size_t count = chosen_.size();
+  while (matrix_.weight_of(covered) < reachable_weight_ - tolerance_) {
+    progress_.check_cancel();
+    std::size_t best = SIZE_MAX;
+    double best_gain = tolerance_;
+    for (std::size_t c = 0; c < matrix_.candidates(); ++c) {
+      if (in_set[c]) continue;
+      const double g = matrix_.gain(c, covered);
+      if (g > best_gain) {
+        best = c;
+        best_gain = g;
+      }
+    }
+    if (best == SIZE_MAX) break;
+    add_row(covered, matrix_, best);
+    in_set[best] = true;
+    ++count;
+  }
+  return count;
+}
+
 void Selector::improve() {
   // Each move lowers the count or raises coverage by more than the
   // tolerance, so the pass ends.
@@ -328,44 +456,6 @@ void Selector::improve() {
     }
     break;
   }
-}
-
-std::vector<std::size_t> Selector::greedy_order(std::vector<std::size_t> chosen) const {
-  // The chain constraint holds for the pass's order, not necessarily another.
-  if (options_.intervisible) return chosen;
-  Bits covered = union_except({});
-  std::vector<std::size_t> order;
-  while (!chosen.empty()) {
-    std::size_t best = 0;
-    double best_gain = -1.0;
-    for (std::size_t i = 0; i < chosen.size(); ++i) {
-      const double g = matrix_.gain(chosen[i], covered);
-      if (g > best_gain) {
-        best = i;
-        best_gain = g;
-      }
-    }
-    order.push_back(chosen[best]);
-    add_row(covered, matrix_, chosen[best]);
-    chosen.erase(chosen.begin() + static_cast<std::ptrdiff_t>(best));
-  }
-  return order;
-}
-
-std::vector<SelectedStation> Selector::ranked(const std::vector<std::size_t>& chosen) const {
-  const double total = matrix_.total_weight();
-  std::vector<SelectedStation> stations;
-  Bits covered(matrix_.words_per_row(), 0);
-  double weight = 0.0;
-  const auto add = [&](std::size_t candidate, bool existing) {
-    const double g = matrix_.gain(candidate, covered);
-    add_row(covered, matrix_, candidate);
-    weight += g;
-    stations.push_back({candidate, existing, g / total, weight / total});
-  };
-  for (std::size_t p : options_.placed) add(p, true);
-  for (std::size_t c : chosen) add(c, false);
-  return stations;
 }
 
 void Selector::describe(StationSelection& result) const {
@@ -403,12 +493,15 @@ void Selector::describe(StationSelection& result) const {
     return;
   }
   const std::string target = percent(target_weight_ / total);
-  const std::string prefix =
-      scaled_ ? "The target " + percent(options_.target_coverage) +
-                    " cannot be reached: all the candidates together" + placed + " cover " +
-                    percent(reachable_weight_ / total) + ", so the stations aim at " +
-                    percent(options_.target_coverage) + " of that, " + target + ". "
-              : std::string();
+  const std::string most =
+      options_.out_of_reach == OutOfReach::kMost
+          ? "all of that (out_of_reach most)"
+          : percent(options_.target_coverage) + " of that, " + target + " (out_of_reach share)";
+  const std::string prefix = scaled_ ? "The target " + percent(options_.target_coverage) +
+                                           " cannot be reached: all the candidates together" +
+                                           placed + " cover " + percent(reachable_weight_ / total) +
+                                           ", so the stations aim at " + most + ". "
+                                     : std::string();
   if (!greedy_reached_) {
     result.guarantee = prefix + chain + "the target " + target +
                        " was not reached: greedy stopped at " + percent(greedy_weight_ / total) +
@@ -453,12 +546,13 @@ StationSelection Selector::run() {
     }
     reachable_weight_ = matrix_.weight_of(all);
   }
-  // A target beyond what the candidates can see at all would have greedy add
-  // stations for a few targets each, to no end: aim at its share of what can
-  // be seen instead, and say so.
+  // A target beyond what the candidates can see at all: aim at all they see,
+  // or at the target's share of it (fewer stations), and say so.
   if (target_mode() && target_weight_ > reachable_weight_ + tolerance_) {
     scaled_ = true;
-    target_weight_ = options_.target_coverage * reachable_weight_;
+    target_weight_ = options_.out_of_reach == OutOfReach::kShare
+                         ? options_.target_coverage * reachable_weight_
+                         : reachable_weight_;
   }
   greedy();
   chosen_ = greedy_chosen_;
@@ -469,12 +563,14 @@ StationSelection Selector::run() {
   const bool reached = greedy_reached_ && !scaled_;
   const std::size_t greedy_evaluations = evaluations_;
   if (options_.improve) improve();
-  chosen_ = greedy_order(chosen_);
+  // The chain constraint holds for the pass's order, not necessarily another.
+  if (!options_.intervisible)
+    chosen_ = greedy_order(StationRows{matrix_}, options_.placed, chosen_);
 
   StationSelection result;
-  result.greedy = ranked(greedy_chosen_);
+  result.greedy = ranked(StationRows{matrix_}, options_.placed, greedy_chosen_);
   result.greedy_coverage = greedy_weight_ / total;
-  result.stations = ranked(chosen_);
+  result.stations = ranked(StationRows{matrix_}, options_.placed, chosen_);
   result.improvement_moves = moves_;
   result.greedy_evaluations = greedy_evaluations;
   result.evaluations = evaluations_;
@@ -483,27 +579,10 @@ StationSelection Selector::run() {
   result.reachable_coverage = reachable_weight_ / total;
   result.aimed_coverage = target_mode() ? target_weight_ / total : 0.0;
 
-  Bits covered(matrix_.words_per_row(), 0);
-  result.first_rank.assign(matrix_.targets(), -1);
-  for (std::size_t r = 0; r < result.stations.size(); ++r) {
-    const std::uint64_t* row = matrix_.row(result.stations[r].candidate);
-    for (std::size_t word = 0; word < covered.size(); ++word) {
-      std::uint64_t added = row[word] & ~covered[word];
-      covered[word] |= row[word];
-      while (added != 0) {
-        const int bit = __builtin_ctzll(added);
-        result.first_rank[word * 64 + static_cast<std::size_t>(bit)] =
-            static_cast<std::int32_t>(r + 1);
-        added &= added - 1;
-      }
-    }
-  }
-  result.coverage = matrix_.weight_of(covered) / total;
-  result.gain_left.resize(matrix_.candidates());
-  result.coverage_alone.resize(matrix_.candidates());
-  for (std::size_t c = 0; c < matrix_.candidates(); ++c) {
-    result.gain_left[c] = matrix_.gain(c, covered) / total;
-    result.coverage_alone[c] = alone_[c] / total;
+  state_stations(StationRows{matrix_}, options_, result);
+  if (scaled_) {
+    result.most_stations =
+        options_.out_of_reach == OutOfReach::kShare ? stations_for_all() : chosen_.size();
   }
   if (target_mode()) {
     const double asked = target_weight_ - placed_weight_;
@@ -543,6 +622,27 @@ Intervisible intervisibility_from_matrix(std::vector<std::uint8_t> matrix, std::
   return [matrix = std::move(matrix), n](std::size_t a, std::size_t b) {
     return matrix.at(a * n + b) != 0;
   };
+}
+
+void restate_moved(StationSelection& selection, const CoverageMatrix& matrix,
+                   const CoverageMatrix& moved, const std::vector<std::size_t>& moved_rank,
+                   const SelectionOptions& options) {
+  if (moved.candidates() != moved_rank.size() || moved.targets() != matrix.targets()) {
+    throw std::invalid_argument("station selection: the moved rows do not match");
+  }
+  std::vector<std::size_t> chosen;
+  for (std::size_t r = 0; r < selection.stations.size(); ++r) {
+    if (selection.stations[r].existing) continue;
+    std::size_t candidate = selection.stations[r].candidate;
+    for (std::size_t j = 0; j < moved_rank.size(); ++j) {
+      if (moved_rank[j] == r + 1) candidate = matrix.candidates() + j;
+    }
+    chosen.push_back(candidate);
+  }
+  const StationRows rows{matrix, &moved};
+  if (!options.intervisible) chosen = greedy_order(rows, options.placed, chosen);
+  selection.stations = ranked(rows, options.placed, chosen);
+  state_stations(rows, options, selection);
 }
 
 StationSelection select_stations(const CoverageMatrix& matrix, const SelectionOptions& options,

@@ -24,13 +24,40 @@ namespace occlusion {
 namespace {
 
 // A scene's own part of planning: where candidates may stand (KeepFree), and
-// what each sees (SceneSide, once its targets are made).
+// what each sees (SceneSide, once its targets are made): the grid's
+// candidates, then the positions the refinement tries.
 using KeepFree = std::function<StationCandidates(std::vector<Eigen::Vector3d>)>;
 struct SceneSide {
-  std::function<CoverageMatrix(const std::vector<Eigen::Vector3d>&, const Progress&)> coverage;
+  TracePositions coverage;
   std::function<std::vector<std::uint8_t>(const std::vector<Eigen::Vector3d>&, const Progress&)>
       intervisibility;
+  FreePositions free;
 };
+
+// The positions a refinement may trace: a whole search for each new station
+// asked (K); for a target, whose station count is not known before, as many
+// as the candidates (so it at most doubles the coverage's rays). None with
+// intervisible: a move could break the chain of stations that see each other.
+std::size_t refine_budget(const PlanRequest& request, std::size_t candidates) {
+  if (!request.refine || request.intervisible) return 0;
+  if (request.stations > 0) return request.stations * kRefinePositionsPerStation;
+  return std::max(kRefinePositionsPerStation, candidates);
+}
+
+// FreeSpace::keep as one flag per position (the kept stay in order).
+FreePositions free_flags(const FreeSpace& space) {
+  return [&space](const std::vector<Eigen::Vector3d>& positions, const Progress& progress) {
+    const StationCandidates kept = space.keep(positions, progress);
+    std::vector<bool> flags(positions.size(), false);
+    for (std::size_t i = 0, k = 0; i < positions.size() && k < kept.positions.size(); ++i) {
+      if (kept.positions[k] == positions[i]) {
+        flags[i] = true;
+        ++k;
+      }
+    }
+    return flags;
+  };
+}
 
 // Weights of targets outside the chosen classes go to 0. `class_of` gives a
 // target's class name ("" for none); `available` lists the names, for the message.
@@ -50,6 +77,13 @@ void keep_classes(const PlanRequest& request, std::vector<double>& weight,
   for (std::size_t t = 0; t < weight.size(); ++t) {
     if (chosen.count(class_of(t)) == 0) weight[t] = 0.0;
   }
+}
+
+// CSV numbers: ten significant digits (shares and positions to well below a millimetre).
+std::string decimal(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.10g", value);
+  return text;
 }
 
 [[noreturn]] void refuse_candidates_file(const PlanRequest& request) {
@@ -84,6 +118,33 @@ std::vector<Eigen::Vector3d> file_candidates(const PlanRequest& request,
   return positions;
 }
 
+// No position is free: what each reason's count means, and what to do about it.
+[[noreturn]] void refuse_no_free_candidate(const PlanReport& report) {
+  const CandidateRejections& no = report.candidates.rejected;
+  const bool grid = report.candidate_source == "grid";
+  std::string text =
+      "no candidate position is free: of " + std::to_string(report.candidates.tested) + " tested,";
+  if (no.clearance > 0) {
+    text += "\n  " + std::to_string(no.clearance) +
+            " are nearer than --clearance to the scene (a point or face within " +
+            decimal(report.request.clearance) + "): lower --clearance if the scanner fits nearer" +
+            (grid ? ", or a finer --spacing to find the gaps" : "");
+  }
+  if (no.inside_solid > 0) {
+    text += "\n  " + std::to_string(no.inside_solid) +
+            " are inside closed solids (most probe rays meet the back of faces): check --up "
+            "(the floor's side) and --height";
+  }
+  if (no.outside > 0) {
+    text += "\n  " + std::to_string(no.outside) +
+            " are outside the scene (over a quarter of their probe rays, horizontal and down, "
+            "meet nothing): check --up and --height (a grid above the ceiling or below the "
+            "floor); a partial scan with its own stations keeps what they saw empty, without "
+            "them give --candidates with positions inside it";
+  }
+  throw UsageError(text);
+}
+
 // Every candidate, in the scene's local frame: the grid's (or the file's)
 // positions that keep_free keeps, then the placed stations and the scene's own.
 std::vector<Eigen::Vector3d> place_candidates(PlanReport& report, const Box& box,
@@ -92,13 +153,18 @@ std::vector<Eigen::Vector3d> place_candidates(PlanReport& report, const Box& box
   const PlanRequest& request = report.request;
   const UpAxis up = job::parse_up(request.up);
   const auto start = job::Clock::now();
+  try {
+    report.spacing = request.spacing ? *request.spacing : auto_grid_spacing(box, up);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--spacing: ") + e.what());
+  }
   std::vector<Eigen::Vector3d> positions;
   if (!request.candidates_path.empty()) {
     positions = file_candidates(request, report.shift);
     report.candidate_source = request.candidates_path;
   } else {
     try {
-      positions = floor_grid(box, up, request.spacing, request.height);
+      positions = floor_grid(box, up, report.spacing, request.height);
     } catch (const std::invalid_argument& e) {
       throw UsageError(std::string("--spacing/--height: ") + e.what());
     }
@@ -122,13 +188,8 @@ std::vector<Eigen::Vector3d> place_candidates(PlanReport& report, const Box& box
       report.candidate_names.push_back(station.name);
     }
   }
-  const CandidateRejections& no = report.candidates.rejected;
   if (all.size() == report.placed.size() && report.candidates.tested > 0) {
-    throw UsageError(
-        "no candidate position is free: of " + std::to_string(report.candidates.tested) + ", " +
-        std::to_string(no.clearance) + " are nearer than --clearance to the scene, " +
-        std::to_string(no.inside_solid) + " inside solids, " + std::to_string(no.outside) +
-        " outside it; lower --clearance or --spacing, or check --up and --height");
+    refuse_no_free_candidate(report);
   }
   for (const auto& p : all) report.candidate_positions.push_back(p + report.shift);
   return all;
@@ -144,13 +205,43 @@ void check_budgets(const PlanRequest& request, const MemoryEstimate& model, std:
   check_work_budget(work, request.max_work);
 }
 
+// Moves each new station where it adds the most (station_refinement.hpp);
+// their new places join the candidates.
+void refine(PlanReport& report, const CoverageMatrix& matrix,
+            const std::vector<Eigen::Vector3d>& all, const SelectionOptions& options,
+            const SceneSide& side, const Progress& progress) {
+  const auto start = job::Clock::now();
+  const UpAxis up = job::parse_up(report.request.up);
+  RefinementOptions refine_options;
+  refine_options.first_step = report.spacing / 2.0;
+  refine_options.u = Eigen::Vector3d::Unit((up.axis + 1) % 3);
+  refine_options.v = Eigen::Vector3d::Unit((up.axis + 2) % 3);
+  refine_options.max_positions = report.refine_budget;
+  Refinement refinement = refine_stations(matrix, report.selection, all, side.coverage, side.free,
+                                          refine_options, progress);
+  // The moved stations' rows come in rank order: so do their places.
+  std::vector<std::size_t> moved_rank;
+  for (const RefinedStation& station : refinement.stations) {
+    if (station.row == SIZE_MAX) continue;
+    moved_rank.push_back(station.rank);
+    report.candidate_positions.push_back(station.to + report.shift);
+    report.candidate_names.emplace_back();
+  }
+  for (const RefinedStation& station : refinement.stations) {
+    report.refined_stations += station.refined ? 1 : 0;
+  }
+  restate_moved(report.selection, matrix, refinement.rows, moved_rank, options);
+  report.refinement = std::move(refinement);
+  report.refine_seconds = job::seconds_since(start);
+}
+
 // What the candidates see, and the stations chosen among them.
 void cover_and_select(PlanReport& report, const std::vector<Eigen::Vector3d>& all,
                       const SceneSide& side, const Progress& progress) {
   const PlanRequest& request = report.request;
   auto start = job::Clock::now();
   const CoverageMatrix matrix = side.coverage(all, progress);
-  report.coverage_seconds = job::seconds_since(start);
+  report.coverage_seconds += job::seconds_since(start);
   if (!(matrix.total_weight() > 0.0)) {
     throw UsageError("no target to cover: the chosen classes have no points or faces in " +
                      request.path);
@@ -165,12 +256,14 @@ void cover_and_select(PlanReport& report, const std::vector<Eigen::Vector3d>& al
   options.target_coverage = request.stations > 0 ? 0.0 : request.target_coverage;
   options.placed = report.placed;
   options.improve = request.improve;
+  options.out_of_reach = request.out_of_reach == "share" ? OutOfReach::kShare : OutOfReach::kMost;
   if (request.intervisible) {
     options.intervisible =
         intervisibility_from_matrix(side.intervisibility(all, progress), all.size());
   }
   report.selection = select_stations(matrix, options, progress);
   report.selection_seconds = job::seconds_since(start);
+  if (report.refine_budget > 0 && side.free) refine(report, matrix, all, options, side, progress);
 }
 
 void check_not_writing(const PlanRequest& request) {
@@ -195,19 +288,25 @@ PlanReport plan_cloud_impl(const PointCloud& cloud, const PlanRequest& request,
   report.frame["lo"] = to_json(box.lo + cloud.shift);
   report.frame["hi"] = to_json(box.hi + cloud.shift);
 
+  const std::vector<Station> stations = scan_stations(cloud);
   const auto filter_work = [&](std::size_t positions) {
-    return plan_filter_work(positions, cloud.size(), false);
+    return plan_filter_work(positions, cloud.size(), false, stations.size());
   };
+  std::vector<Eigen::Vector3d> origins;
+  for (const Station& station : stations) origins.push_back(station.frame.origin);
+  std::optional<FreeSpace> free_space;
   const std::vector<Eigen::Vector3d> all =
-      place_candidates(report, box, scan_stations(cloud), [&](std::vector<Eigen::Vector3d> p) {
+      place_candidates(report, box, stations, [&](std::vector<Eigen::Vector3d> p) {
         check_work_budget(filter_work(p.size()), request.max_work);
-        return keep_free_positions(cloud, std::move(p), request.clearance, up, request.threads,
-                                   progress);
+        free_space.emplace(cloud, request.clearance, up, origins, request.threads, progress);
+        return free_space->keep(std::move(p), progress);
       });
+  report.refine_budget = refine_budget(request, all.size());
   check_budgets(
       request, scan_memory(cloud.size(), 1, request.primitive == "disc"), cloud.size(), all.size(),
-      one_after_the_other(filter_work(report.grid_positions),
-                          plan_cloud_work(cloud.size(), all.size(), request.intervisible)));
+      one_after_the_other(
+          filter_work(report.grid_positions + report.refine_budget),
+          plan_cloud_work(cloud.size(), all.size(), request.intervisible, report.refine_budget)));
 
   const auto start = job::Clock::now();
   const job::PointModel model = job::choose_point_model(cloud, job::point_settings(request),
@@ -243,13 +342,17 @@ PlanReport plan_cloud_impl(const PointCloud& cloud, const PlanRequest& request,
   options.self_tolerance = request.self_tolerance;
   options.threads = request.threads;
   const StationLimits limits = station_limits(request);
+  const auto tracing = job::Clock::now();
+  const CloudStationVisibility visibility(cloud, weight, options, limits, progress);
+  report.coverage_seconds = job::seconds_since(tracing);
   SceneSide side;
   side.coverage = [&](const std::vector<Eigen::Vector3d>& candidates, const Progress& p) {
-    return cloud_station_coverage(cloud, candidates, weight, options, limits, p);
+    return visibility.coverage(candidates, p);
   };
   side.intervisibility = [&](const std::vector<Eigen::Vector3d>& candidates, const Progress& p) {
-    return cloud_candidate_intervisibility(cloud, candidates, options, p);
+    return visibility.intervisibility(candidates, p);
   };
+  if (free_space) side.free = free_flags(*free_space);
   cover_and_select(report, all, side, progress);
   return report;
 }
@@ -271,19 +374,21 @@ PlanReport plan_mesh_impl(const TriangleMesh& mesh, const PlanRequest& request,
   report.frame["hi"] = to_json(box.hi);
 
   const auto filter_work = [&](std::size_t positions) {
-    return plan_filter_work(positions, mesh.face_count(), true);
+    return plan_filter_work(positions, mesh.face_count(), true, 0);
   };
+  std::optional<FreeSpace> free_space;
   const std::vector<Eigen::Vector3d> all =
       place_candidates(report, box, {}, [&](std::vector<Eigen::Vector3d> p) {
         check_work_budget(filter_work(p.size()), request.max_work);
-        return keep_free_positions(mesh, std::move(p), request.clearance, up, request.threads,
-                                   progress);
+        free_space.emplace(mesh, request.clearance, up, request.threads, progress);
+        return free_space->keep(std::move(p), progress);
       });
+  report.refine_budget = refine_budget(request, all.size());
   check_budgets(request, mesh_occlusion_memory(mesh, request.samples_per_unit_area, 1),
                 total_samples(mesh, request.samples_per_unit_area), all.size(),
-                one_after_the_other(filter_work(report.grid_positions),
+                one_after_the_other(filter_work(report.grid_positions + report.refine_budget),
                                     plan_mesh_work(mesh, request.samples_per_unit_area, all.size(),
-                                                   request.intervisible)));
+                                                   request.intervisible, report.refine_budget)));
 
   const auto start = job::Clock::now();
   const MeshSamples samples =
@@ -307,13 +412,17 @@ PlanReport plan_mesh_impl(const TriangleMesh& mesh, const PlanRequest& request,
   options.seed = request.seed;
   options.threads = request.threads;
   const StationLimits limits = station_limits(request);
+  const auto tracing = job::Clock::now();
+  const MeshStationVisibility visibility(mesh, samples, weight, options, limits, progress);
+  report.coverage_seconds = job::seconds_since(tracing);
   SceneSide side;
   side.coverage = [&](const std::vector<Eigen::Vector3d>& candidates, const Progress& p) {
-    return mesh_station_coverage(mesh, samples, candidates, weight, options, limits, p);
+    return visibility.coverage(candidates, p);
   };
   side.intervisibility = [&](const std::vector<Eigen::Vector3d>& candidates, const Progress& p) {
-    return mesh_candidate_intervisibility(mesh, candidates, options, p);
+    return visibility.intervisibility(candidates, p);
   };
+  if (free_space) side.free = free_flags(*free_space);
   cover_and_select(report, all, side, progress);
   return report;
 }
@@ -327,13 +436,6 @@ PlanReport as_usage_errors(F&& body) {
   } catch (const std::invalid_argument& e) {
     throw UsageError(std::string("plan: ") + e.what());
   }
-}
-
-// CSV numbers: ten significant digits (shares and positions to well below a millimetre).
-std::string decimal(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.10g", value);
-  return text;
 }
 
 std::string station_name(const PlanReport& report, const SelectedStation& station,
@@ -408,6 +510,35 @@ Json::Value stations_json(const PlanReport& report, const std::vector<SelectedSt
     list.append(entry);
   }
   return list;
+}
+
+// Each new station's search: where it stood on the grid, where it went, what
+// it added before and after; null when there was none.
+Json::Value refinement_json(const PlanReport& report) {
+  if (!report.refinement) return Json::Value();
+  const Refinement& r = *report.refinement;
+  Json::Value json(Json::objectValue);
+  json["coverage_before"] = r.coverage_before;
+  json["coverage_after"] = r.coverage_after;
+  json["positions_traced"] = Json::UInt64(r.positions_traced);
+  json["positions_budget"] = Json::UInt64(report.refine_budget);
+  json["stations_refined"] = Json::UInt64(report.refined_stations);
+  json["first_step"] = report.spacing / 2.0;
+  Json::Value stations(Json::arrayValue);
+  for (const RefinedStation& station : r.stations) {
+    Json::Value entry(Json::objectValue);
+    entry["rank_before"] = Json::UInt64(station.rank);
+    entry["refined"] = station.refined;
+    entry["from"] = to_json(station.from + report.shift);
+    entry["to"] = to_json(station.to + report.shift);
+    entry["moved"] = (station.to - station.from).norm();
+    entry["moves"] = Json::UInt64(station.moves);
+    entry["gain_before"] = station.gain_before;
+    entry["gain_after"] = station.gain_after;
+    stations.append(entry);
+  }
+  json["stations"] = stations;
+  return json;
 }
 
 }  // namespace
@@ -520,13 +651,22 @@ Json::Value to_json(const PlanReport& report) {
   json["stations_asked"] = q.stations > 0 ? Json::Value(Json::UInt64(q.stations)) : Json::Value();
   json["target_reached"] = s.target_reached;
   // What all the candidates together see, and (target mode) what the stations aimed at:
-  // the target, or its share of the reachable when the target is out of reach.
+  // the target, or for one out of reach all of the reachable or the target's share of it
+  // (out_of_reach); the other choice's figures come with it.
   json["reachable_coverage"] = s.reachable_coverage;
   json["aimed_coverage"] = q.stations > 0 ? Json::Value() : Json::Value(s.aimed_coverage);
-  // What all the candidates together see, and (target mode) what the stations aimed at:
-  // the target, or its share of the reachable when the target is out of reach.
-  json["reachable_coverage"] = s.reachable_coverage;
-  json["aimed_coverage"] = q.stations > 0 ? Json::Value() : Json::Value(s.aimed_coverage);
+  if (q.stations == 0 && s.share_stations > 0) {
+    Json::Value out_of_reach(Json::objectValue);
+    out_of_reach["chosen"] = q.out_of_reach;
+    out_of_reach["most_coverage"] = s.reachable_coverage;
+    out_of_reach["most_reached_by_new_stations"] = Json::UInt64(s.most_stations);
+    out_of_reach["share_coverage"] = q.target_coverage * s.reachable_coverage;
+    out_of_reach["share_reached_by_first_new_stations"] = Json::UInt64(s.share_stations);
+    out_of_reach["share_reached_at"] = s.share_coverage;
+    json["out_of_reach"] = out_of_reach;
+  } else {
+    json["out_of_reach"] = Json::Value();
+  }
   json["guarantee"] = s.guarantee;
   Json::Value bounds(Json::objectValue);
   if (q.stations > 0) {
@@ -561,11 +701,13 @@ Json::Value to_json(const PlanReport& report) {
   candidates["tested"] = Json::UInt64(report.candidates.tested);
   candidates["kept"] = Json::UInt64(report.candidates.positions.size());
   candidates["placed"] = Json::UInt64(report.placed.size());
-  candidates["spacing"] = q.spacing;
+  candidates["spacing"] = report.spacing;
+  candidates["spacing_auto"] = !q.spacing.has_value();
   candidates["height"] = q.height;
   candidates["clearance"] = q.clearance;
   json["candidates"] = candidates;
 
+  json["refinement"] = refinement_json(report);
   json["targets"] = report.targets;
   json["target_count"] = Json::UInt64(report.target_count);
   json["weighted_targets"] = Json::UInt64(report.weighted_targets);
@@ -582,6 +724,7 @@ Json::Value to_json(const PlanReport& report) {
       report.model_seconds;
   timings["coverage_seconds"] = report.coverage_seconds;
   timings["selection_seconds"] = report.selection_seconds;
+  timings["refine_seconds"] = report.refine_seconds;
   timings["total_seconds"] = report.total_seconds;
   json["timings"] = timings;
   job::add_outputs_and_warnings(report, json);

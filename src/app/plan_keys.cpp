@@ -3,6 +3,7 @@
 #include <string>
 
 #include "occlusion/analysis/station_candidates.hpp"
+#include "occlusion/analysis/station_refinement.hpp"
 #include "occlusion/analysis/station_selection.hpp"
 #include "occlusion/app/plan_job.hpp"
 #include "occlusion/app/shared_keys.hpp"
@@ -95,6 +96,11 @@ const Keys<PlanRequest>& plan_keys() {
       {key("improve", &R::improve)
            .doc("after greedy, drop, merge (two into one) and swap stations while the target "
                 "holds or coverage rises"),
+       key("out_of_reach", &R::out_of_reach)
+           .choices({"most", "share"})
+           .doc("a target_coverage beyond what all the candidates together see: aim at all of "
+                "that (most) or at the target's share of it (share: fewer stations); the report "
+                "gives both figures"),
        key("intervisible", &R::intervisible)
            .doc("every station sees the one before it (registration needs overlap); no "
                 "approximation guarantee then"),
@@ -103,7 +109,14 @@ const Keys<PlanRequest>& plan_keys() {
            .unit("scene units")
            .metavar("S")
            .doc("candidates: grid step over the floor plan of the frame (at most " +
-                std::to_string(kMaxCandidates) + " positions)"),
+                std::to_string(kMaxCandidates) + " positions); auto: about " +
+                std::to_string(kAutoGridPositions) + " positions over it, finer in a smaller room"),
+       key("refine", &R::refine)
+           .doc("move each new station by a local search (a shrinking pattern from half the "
+                "spacing, at most " +
+                std::to_string(kRefinePositionsPerStation) +
+                " positions each, clearance and free space kept) to where it adds the most; not "
+                "with intervisible"),
        key("height", &R::height)
            .positive_up_to(1e6)
            .unit("scene units")

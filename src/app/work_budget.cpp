@@ -105,32 +105,43 @@ namespace {
 // one between every two candidates, through the octree over `primitives`.
 WorkEstimate plan_work(std::uint64_t targets, const char* what, std::uint64_t primitives,
                        const char* primitive_name, std::size_t candidates, bool intervisible,
-                       const std::string& keys) {
+                       std::size_t refine_positions, const std::string& keys) {
   const std::uint64_t pairs =
       intervisible ? times(candidates, candidates > 0 ? candidates - 1 : 0) / 2 : 0;
   const std::uint64_t coverage = times(targets, candidates);
-  const std::uint64_t rays = coverage > kMax - pairs ? kMax : coverage + pairs;
-  std::string text = count(rays) + " shadow rays (" + count(targets) + " " + what + " x " +
-                     count(candidates) + " candidates" +
-                     (intervisible ? ", and " + count(pairs) + " between candidates" : "") + ")";
+  const std::uint64_t refine = times(targets, refine_positions);
+  std::uint64_t rays = coverage > kMax - pairs ? kMax : coverage + pairs;
+  rays = rays > kMax - refine ? kMax : rays + refine;
+  std::string text =
+      count(rays) + " shadow rays (" + count(targets) + " " + what + " x " + count(candidates) +
+      " candidates" + (intervisible ? ", and " + count(pairs) + " between candidates" : "") +
+      (refine_positions > 0
+           ? ", and x " + count(refine_positions) + " positions the refinement may try"
+           : "") +
+      ")";
   return estimate(rays, text, ray_cost(primitives, primitive_name, true),
                   keys + "fewer candidates: a larger spacing or a shorter candidates file" +
-                      (intervisible ? ", or no intervisible" : ""));
+                      (intervisible ? ", or no intervisible" : "") +
+                      (refine_positions > 0 ? ", or no refine" : ""));
 }
 
 }  // namespace
 
-WorkEstimate plan_filter_work(std::size_t positions, std::uint64_t primitives, bool mesh) {
+WorkEstimate plan_filter_work(std::size_t positions, std::uint64_t primitives, bool mesh,
+                              std::size_t stations) {
   // Each position's probes (every one of the sphere's directions at most),
-  // and its clearance: one kd-tree query, or a test of every face.
-  const std::uint64_t probes = times(positions, kOutsideProbeRays + (mesh ? kInsideProbeRays : 0));
+  // two rays to and past each of a cloud's stations (what they saw empty),
+  // and its clearance: a look-up in the points' cells, or a test of every face.
+  const std::uint64_t per_position =
+      kOutsideProbeRays + (mesh ? kInsideProbeRays : 0) + 2 * std::uint64_t{stations};
+  const std::uint64_t probes = times(positions, per_position);
   const RayCost cost = ray_cost(primitives, mesh ? "faces" : "points", true);
   const std::uint64_t clearance = times(positions, mesh ? primitives : cost.steps);
   const std::uint64_t steps = times(probes, cost.steps);
   return {steps > kMax - clearance ? kMax : steps + clearance,
           count(positions) + " positions' free-space probes (" + count(probes) + " rays x " +
               cost.text + ") and clearance (" + count(clearance) +
-              (mesh ? " face tests)" : " kd-tree steps)"),
+              (mesh ? " face tests)" : " point-cell steps)"),
           "a larger spacing or a shorter candidates file"};
 }
 
@@ -140,13 +151,17 @@ WorkEstimate one_after_the_other(const WorkEstimate& first, const WorkEstimate& 
 }
 
 WorkEstimate plan_mesh_work(const TriangleMesh& mesh, double samples_per_unit_area,
-                            std::size_t candidates, bool intervisible) {
+                            std::size_t candidates, bool intervisible,
+                            std::size_t refine_positions) {
   return plan_work(total_samples(mesh, samples_per_unit_area), "samples", mesh.face_count(),
-                   "faces", candidates, intervisible, "samples_per_unit_area, or ");
+                   "faces", candidates, intervisible, refine_positions,
+                   "samples_per_unit_area, or ");
 }
 
-WorkEstimate plan_cloud_work(std::size_t points, std::size_t candidates, bool intervisible) {
-  return plan_work(points, "points", points, "points", candidates, intervisible, "");
+WorkEstimate plan_cloud_work(std::size_t points, std::size_t candidates, bool intervisible,
+                             std::size_t refine_positions) {
+  return plan_work(points, "points", points, "points", candidates, intervisible, refine_positions,
+                   "");
 }
 
 }  // namespace occlusion

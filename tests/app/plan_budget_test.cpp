@@ -48,6 +48,7 @@ TEST(PlanBudget, WorkBeyondTheBudgetIsRefusedBeforeAnySampleIsDrawn) {
   PlanRequest request = testing::plan_mesh_request();
   request.samples_per_unit_area = 2000.0;
   request.max_work = 1e-3;  // a million ray steps
+  request.spacing = 0.5;    // a grid whose free-space test fits the budget: the samples do not
   Stages stages;
   try {
     plan_mesh(testing::two_rooms(), request, stages.progress());

@@ -116,7 +116,8 @@ TEST(Hardening, MinSamplesIsInTheMemoryBudget) {
 // plan drew its samples before it checked its budgets: 1e6 samples per unit
 // area over sample_room.obj (266 million) ran the server out of memory and
 // was answered `internal` (issue 44, 2.5). Both budgets now hold before a
-// sample is drawn, naming plan's own keys.
+// sample is drawn, naming plan's own keys. (The second asks a 0.5 grid, whose
+// free-space test fits the work budget where the automatic grid's does not.)
 TEST(Hardening, APlanBeyondTheBudgetsIsRefusedBeforeItsSamplesAreDrawn) {
   server::ServerOptions options = TestServer::quiet_options();
   options.max_memory_mb = 400;
@@ -125,7 +126,7 @@ TEST(Hardening, APlanBeyondTheBudgetsIsRefusedBeforeItsSamplesAreDrawn) {
   int id = 1;
   for (const char* request : {R"({"path": "sample_room.obj", "samples_per_unit_area": 1e6})",
                               R"({"path": "sample_room.obj", "samples_per_unit_area": 1e4,
-                                  "max_work": 0.01})"}) {
+                                  "max_work": 0.01, "spacing": 0.5})"}) {
     const Reply reply = client->request(id++, "plan", params(request), kHangGuard);
     EXPECT_EQ(reply.error_code(), "invalid_request") << reply.final;
     const std::string message = reply.final["message"].asString();

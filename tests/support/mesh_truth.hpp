@@ -116,13 +116,15 @@ inline SampledCloud grid_sample_room(const TriangleMesh& mesh, double row_step, 
 
 // What a terrestrial laser scanner at `station` records: the first surface on
 // each ray of a grid of azimuth steps `azimuth_step` and elevation steps
-// `elevation_step` (radians; elevations from -85 to +85 degrees).
+// `elevation_step` (radians; elevations from -85 to +85 degrees), over the
+// azimuths [0, azimuth_span) (less than 2 pi: a partial scan).
 inline SampledCloud station_scan(const TriangleMesh& mesh, const Eigen::Vector3d& station,
-                                 double azimuth_step, double elevation_step) {
+                                 double azimuth_step, double elevation_step,
+                                 double azimuth_span = 2.0 * M_PI) {
   const TriangleOctree tree(pack_triangles(mesh.triangles()));
   SampledCloud out;
   const double limit = 85.0 * M_PI / 180.0;
-  for (double azimuth = 0.0; azimuth < 2.0 * M_PI; azimuth += azimuth_step) {
+  for (double azimuth = 0.0; azimuth < azimuth_span; azimuth += azimuth_step) {
     for (double elevation = -limit; elevation <= limit; elevation += elevation_step) {
       const Eigen::Vector3d d(std::cos(elevation) * std::cos(azimuth),
                               std::cos(elevation) * std::sin(azimuth), std::sin(elevation));

@@ -51,6 +51,41 @@ inline TriangleMesh two_rooms() {
   return mesh;
 }
 
+// Two rooms joined by a door as a survey meets them: A = [0, 6] x [0, 5] and
+// B = [6.2, 10] x [0, 5], 3 high, the wall between them 0.2 thick (x 6 to
+// 6.2) with a door 0.8 wide (y 2.25 to 3.05) and 2.1 high, and a 1 x 0.6 x 2
+// cabinet in each room. The best single station stands in the door, in a
+// strip 0.2 wide (the door less 0.3 of clearance on each side), where a
+// 0.5 grid does not fall.
+inline TriangleMesh two_rooms_thick_wall() {
+  TriangleMesh mesh;
+  add_facing_box(mesh, {0, 0, 0}, {10, 5, 3}, true, "room");
+  const Eigen::Vector3d x = Eigen::Vector3d::UnitX(), y = Eigen::Vector3d::UnitY(),
+                        z = Eigen::Vector3d::UnitZ();
+  // The wall's two sides around the door (A's facing -x, B's +x), its jambs
+  // and the lintel's underside: no face lies on another (the room's walls,
+  // floor and ceiling meet it edge to edge).
+  for (const auto& [lo, width, height] : {std::tuple{Eigen::Vector3d(6, 0, 0), 2.25, 3.0},
+                                          std::tuple{Eigen::Vector3d(6, 3.05, 0), 1.95, 3.0},
+                                          std::tuple{Eigen::Vector3d(6, 2.25, 2.1), 0.8, 0.9}}) {
+    add_quad(mesh, lo, height * z, width * y, "wall");
+    add_quad(mesh, lo + 0.2 * x, width * y, height * z, "wall");
+  }
+  add_quad(mesh, {6, 2.25, 0}, 2.1 * z, 0.2 * x, "wall");
+  add_quad(mesh, {6, 3.05, 0}, 0.2 * x, 2.1 * z, "wall");
+  add_quad(mesh, {6, 2.25, 2.1}, 0.8 * y, 0.2 * x, "wall");
+  // Cabinets: four sides and a top, facing out (their bottoms would lie on the floor).
+  for (const Eigen::Vector3d& lo : {Eigen::Vector3d(2, 3.6, 0), Eigen::Vector3d(8, 1, 0)}) {
+    const Eigen::Vector3d dx = 1.0 * x, dy = 0.6 * y, dz = 2.0 * z;
+    add_quad(mesh, lo + dz, dx, dy, "cabinet");
+    add_quad(mesh, lo, dz, dy, "cabinet");
+    add_quad(mesh, lo + dx, dy, dz, "cabinet");
+    add_quad(mesh, lo, dx, dz, "cabinet");
+    add_quad(mesh, lo + dy, dz, dx, "cabinet");
+  }
+  return mesh;
+}
+
 // A 6 x 6 x 3 room with a 0.8 x 0.8 pillar in its middle, floor to ceiling:
 // the floor and ceiling stop at the pillar, which has only its four sides, so
 // every surface can be seen from somewhere.

@@ -15,6 +15,10 @@
 
 namespace occlusion {
 
+// Sums of weights are formed in different orders by different moves (of a
+// selection, of a refinement); this much of the total is rounding, not coverage.
+inline constexpr double kWeightRounding = 1e-12;
+
 class CoverageMatrix {
  public:
   CoverageMatrix() = default;

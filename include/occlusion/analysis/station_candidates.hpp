@@ -17,7 +17,8 @@
 //    L-shaped room's bounding box every ray down and the horizontal ones
 //    facing away from the L escape: at least 35 % of them right at its inner
 //    corner (the L of station_candidates_test.cpp), half and more elsewhere.
-//    Upward rays are left out: scans often miss the ceiling.
+//    Upward rays are left out: scans often miss the ceiling. A cloud's own
+//    stations keep what their scans saw to be empty (FreeSpace).
 // For the probes a cloud's points are spheres of kProbeRadiusPerSpacing
 // times its measured spacing (point_spacing.hpp): on a surface sampled at
 // random, spheres of the spacing itself leave about half of it open (the
@@ -25,6 +26,7 @@
 // three times that leaves under 0.1 %.
 
 #include <Eigen/Core>
+#include <memory>
 #include <vector>
 
 #include "occlusion/analysis/scene_frame.hpp"
@@ -45,6 +47,13 @@ inline constexpr std::size_t kOutsideProbeRays = 256;  // over the whole sphere,
 // with them.
 inline constexpr std::size_t kMaxCandidates = 100000;
 
+// The automatic grid: about this many positions over the frame's floor plan
+// (before the free-space test keeps those in the room), a spacing that
+// follows the room's size: 0.22 over 10 x 5 m, 0.5 over 500 m^2. The
+// coverage matrix's budget holds a thousand candidates (README, Scan
+// planning: 999 x 226,584 points in 8 to 11 s).
+inline constexpr std::size_t kAutoGridPositions = 1000;
+
 struct CandidateRejections {
   std::size_t clearance = 0;
   std::size_t inside_solid = 0;
@@ -57,6 +66,11 @@ struct StationCandidates {
   std::size_t tested = 0;
 };
 
+// The spacing that puts kAutoGridPositions over the floor plan of `frame`
+// (the plane normal to `up`). std::invalid_argument for a frame with no extent
+// across `up`.
+double auto_grid_spacing(const Box& frame, const UpAxis& up);
+
 // Positions `spacing` apart over the floor plan of `frame` (the plane normal
 // to `up`), centred in it, at `height` above the frame's low end along up
 // (its floor). std::invalid_argument for spacing or height not > 0 and
@@ -64,13 +78,45 @@ struct StationCandidates {
 std::vector<Eigen::Vector3d> floor_grid(const Box& frame, const UpAxis& up, double spacing,
                                         double height);
 
-// Keeps the positions with free space around them in a cloud (positions in
-// its local frame). std::invalid_argument for an empty cloud or clearance < 0.
+// The free-space test of a scene, built once (its octree, a cloud's point
+// cells for the clearance) and asked for any positions: the grid's, then
+// those a refinement tries around a chosen station (station_refinement.hpp).
+// Its answers depend on the positions only, not on how they are batched.
+//
+// A cloud scanned from known stations (an E57 file's scans, a PCD sensor:
+// `stations`, in its local frame) also keeps a position the probes call
+// outside when some station's line of sight passes through it to a point
+// beyond (the space that scan measured empty): one station's partial scan
+// leaves most directions from a position unmeasured, so its probes escape
+// though it stands in the room the scan saw.
+class FreeSpace {
+ public:
+  // std::invalid_argument for an empty cloud or clearance < 0.
+  FreeSpace(const PointCloud& cloud, double clearance, const UpAxis& up,
+            std::vector<Eigen::Vector3d> stations = {}, unsigned threads = 0,
+            const Progress& progress = {});
+  // std::invalid_argument for a mesh without faces or clearance < 0.
+  FreeSpace(const TriangleMesh& mesh, double clearance, const UpAxis& up, unsigned threads = 0,
+            const Progress& progress = {});
+  ~FreeSpace();
+  FreeSpace(FreeSpace&&) noexcept;
+  FreeSpace& operator=(FreeSpace&&) noexcept;
+
+  // The positions with free space around them, and the others' reasons.
+  // std::invalid_argument for a position that is not finite.
+  StationCandidates keep(std::vector<Eigen::Vector3d> positions,
+                         const Progress& progress = {}) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// One FreeSpace asked once.
 StationCandidates keep_free_positions(const PointCloud& cloud,
                                       std::vector<Eigen::Vector3d> positions, double clearance,
                                       const UpAxis& up, unsigned threads = 0,
                                       const Progress& progress = {});
-// The same in a mesh. std::invalid_argument for a mesh without faces.
 StationCandidates keep_free_positions(const TriangleMesh& mesh,
                                       std::vector<Eigen::Vector3d> positions, double clearance,
                                       const UpAxis& up, unsigned threads = 0,

@@ -45,6 +45,11 @@ Intervisible intervisibility_from_matrix(std::vector<std::uint8_t> matrix, std::
 // takes a station that covers something.
 inline constexpr double kLeastTargetCoverage = 1e-9;
 
+// A target beyond what all the candidates together see: aim at the most they
+// see (kMost), or at the target's share of that (kShare: 90 % asked of a
+// reachable 86 % is 77.5 %, with fewer stations).
+enum class OutOfReach { kMost, kShare };
+
 struct SelectionOptions {
   // Exactly one of the two questions: stations > 0 (the best K new stations)
   // or target_coverage in [kLeastTargetCoverage, 1] (the fewest new stations
@@ -55,6 +60,7 @@ struct SelectionOptions {
   // order, ahead of the chosen ones, and counted as covering first.
   std::vector<std::size_t> placed;
   bool improve = true;
+  OutOfReach out_of_reach = OutOfReach::kMost;
   // Set: every station sees the one before it in the order (the first new
   // one sees the last placed one, when any is). Greedy keeps the new
   // stations as such a chain, putting each where it sees both neighbours (at
@@ -77,10 +83,18 @@ struct StationSelection {
   double coverage = 0.0;  // share of the total weight the stations cover
   // Target mode: coverage >= target_coverage. A target beyond what all the
   // candidates together see (reachable_coverage) is not reached; the stations
-  // then aim at its share of that (aimed_coverage = target x reachable).
+  // then aim (aimed_coverage) at all of that, or at the target's share of it
+  // (OutOfReach). Either way the first share_stations new stations (in rank
+  // order) are the fewest of them that reach the share, share_coverage: the
+  // choice between the most and fewer stations, in figures.
   bool target_reached = true;
   double reachable_coverage = 1.0;
   double aimed_coverage = 0.0;
+  double share_coverage = 0.0;
+  std::size_t share_stations = 0;
+  // And the other way (OutOfReach::kShare): how many new stations reach all
+  // of the reachable, these and those greedy adds to them (kMost: these).
+  std::size_t most_stations = 0;
   // Greedy's answer before the improvement pass.
   std::vector<SelectedStation> greedy;
   double greedy_coverage = 0.0;
@@ -111,5 +125,16 @@ struct StationSelection {
 // a matrix whose targets weigh nothing. Checks progress's cancel flag.
 StationSelection select_stations(const CoverageMatrix& matrix, const SelectionOptions& options,
                                  const Progress& progress = {});
+
+// The selection after new stations moved off their candidates (a local
+// refinement, station_refinement.hpp): the new station at rank moved_rank[j]
+// (1-based) now sees moved.row(j) and becomes candidate matrix.candidates() +
+// j. Its stations (in greedy order again, unless options.intervisible),
+// coverage, first_rank, gain_left and coverage_alone (over the matrix's
+// candidates, then the moved rows) are restated; greedy's answer, the bounds
+// and the guarantee stay those among the candidates.
+void restate_moved(StationSelection& selection, const CoverageMatrix& matrix,
+                   const CoverageMatrix& moved, const std::vector<std::size_t>& moved_rank,
+                   const SelectionOptions& options);
 
 }  // namespace occlusion

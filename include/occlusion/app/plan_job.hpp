@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "occlusion/analysis/station_candidates.hpp"
+#include "occlusion/analysis/station_refinement.hpp"
 #include "occlusion/analysis/station_selection.hpp"
 #include "occlusion/analysis/station_visibility.hpp"
 #include "occlusion/app/key.hpp"
@@ -31,8 +32,13 @@ struct PlanRequest {
   double target_coverage = 0.99;  // > 0: the fewest new stations that cover this share
   bool improve = true;
   bool intervisible = false;
+  std::string out_of_reach = "most";  // a target beyond the candidates: "most" or "share"
+  // Each new station moved by a local search to where it adds the most
+  // (analysis/station_refinement.hpp).
+  bool refine = true;
   // Candidates: a grid over the floor plan, or positions from a cloud file.
-  double spacing = 0.5;
+  // No spacing: auto, kAutoGridPositions over the frame's floor plan.
+  std::optional<double> spacing;
   double height = 1.5;
   double clearance = 0.3;
   std::string candidates_path;
@@ -79,7 +85,13 @@ struct PlanReport {
   StationCandidates candidates;              // the filter's counts (positions local)
   std::size_t grid_positions = 0;            // before the filter
   std::string candidate_source;              // "grid" or the file
+  double spacing = 0.0;                      // the grid's (auto or given)
   StationSelection selection;
+  // With refine: each new station's search; its moved places are candidates
+  // (candidate_positions) after the others.
+  std::optional<Refinement> refinement;
+  std::size_t refine_budget = 0;  // positions the refinement may trace (in the work estimate)
+  std::size_t refined_stations = 0;
   std::optional<PointModelReport> point_model;  // clouds
   // Meshes: the samples (their positions) the PLY of targets holds.
   std::vector<Eigen::Vector3d> sample_positions;
@@ -90,7 +102,7 @@ struct PlanReport {
   std::vector<std::string> outputs;
   std::vector<std::string> warnings;
   double load_seconds = 0.0, candidate_seconds = 0.0, model_seconds = 0.0, coverage_seconds = 0.0,
-         selection_seconds = 0.0, total_seconds = 0.0;
+         selection_seconds = 0.0, refine_seconds = 0.0, total_seconds = 0.0;
 };
 
 void validate(const PlanRequest& request);

@@ -47,16 +47,22 @@ WorkEstimate mesh_occlusion_work(const TriangleMesh& mesh, double samples_per_un
 WorkEstimate scan_work(std::size_t points, std::size_t viewpoints, bool accelerated);
 // plan's free-space filter (analysis/station_candidates.hpp) of `positions`:
 // each one's probe rays (outside, and inside solids for a mesh) through the
-// octree over `primitives`, and its clearance, a kd-tree query among a
-// cloud's points or a test of every face of a mesh. Known before the filter.
-WorkEstimate plan_filter_work(std::size_t positions, std::uint64_t primitives, bool mesh);
+// octree over `primitives`, two rays to and past each of a cloud's
+// `stations` (the space they saw empty), and its clearance, a look-up among
+// a cloud's points or a test of every face of a mesh. Known before the filter.
+WorkEstimate plan_filter_work(std::size_t positions, std::uint64_t primitives, bool mesh,
+                              std::size_t stations);
 // The work of `first`, then `then`'s: named by then's keys.
 WorkEstimate one_after_the_other(const WorkEstimate& first, const WorkEstimate& then);
 // plan: a shadow ray from every target (-moc's samples of a mesh, a cloud's
-// points) to every candidate, and with `intervisible` one between every two
-// candidates. Known before any sample is drawn or point model made.
+// points) to every candidate, with `intervisible` one between every two
+// candidates, and to each of the `refine_positions` a refinement may try
+// (analysis/station_refinement.hpp; their free-space test is the caller's
+// plan_filter_work). Known before any sample is drawn or point model made.
 WorkEstimate plan_mesh_work(const TriangleMesh& mesh, double samples_per_unit_area,
-                            std::size_t candidates, bool intervisible);
-WorkEstimate plan_cloud_work(std::size_t points, std::size_t candidates, bool intervisible);
+                            std::size_t candidates, bool intervisible,
+                            std::size_t refine_positions);
+WorkEstimate plan_cloud_work(std::size_t points, std::size_t candidates, bool intervisible,
+                             std::size_t refine_positions);
 
 }  // namespace occlusion
