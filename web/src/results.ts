@@ -19,6 +19,8 @@ export interface LoadResult {
   bounds?: Bounds;
   dropped_nan?: number;
   skipped_lines?: number;
+  /** What reading the file found that the user should know (e.g. depths beyond indoor sensors'). */
+  warnings?: string[];
   cached?: boolean;
   /** The server's robust frame (issue 12), when it sends one. */
   robust_box?: Bounds;
@@ -86,6 +88,18 @@ export interface ClassMetrics {
   precision: number | null;
   recall: number | null;
   f1: number | null;
+  /** Whether mIoU and mean class accuracy average this class (by the report's mean_over). */
+  averaged?: boolean;
+}
+
+/** The built-in mapping used and why (`class_mapping auto` chooses by the ground truth). */
+export interface EvaluationMapping {
+  builtin?: string;
+  requested?: string;
+  chosen_because?: string | null;
+  /** "built-in <name>" or the mapping file's path. */
+  source?: string;
+  evaluation_classes?: { id: number; name: string }[];
 }
 
 export interface Confusion {
@@ -102,6 +116,9 @@ export interface EvaluationReport extends JobReport {
   classes: ClassMetrics[];
   confusion: Confusion;
   points?: number;
+  mean_over?: string;
+  classes_averaged?: number;
+  mapping?: EvaluationMapping;
   scenes?: { name?: string; ground_truth?: string; prediction?: string; transfer?: string }[];
 }
 

@@ -2,10 +2,12 @@
 // recall, and the confusion matrix as a heat map (rows: ground truth,
 // columns: prediction, the last column the points left without one).
 
+import { averagedLine, classRow, mappingLine } from "../evaluation_table";
 import type { EvaluationReport } from "../results";
 import { num } from "../results";
 import { h } from "./dom";
 import { integer, percent } from "./format";
+import { reproduceBlock } from "./reproduce_view";
 import { card, facts, headline, table, warnings } from "./results_panel";
 
 /** Heat colour of a row share in [0, 1]: dark slate to sky blue, red off the diagonal. */
@@ -64,6 +66,7 @@ export function evaluationCards(report: EvaluationReport): HTMLElement[] {
   const miou = report.miou ?? undefined;
   const classes = report.classes ?? [];
   const scene = report.scenes?.[0];
+  const mapping = mappingLine(report);
   const summary = card(
     "Segmentation evaluation (-eval)",
     [
@@ -73,10 +76,15 @@ export function evaluationCards(report: EvaluationReport): HTMLElement[] {
         ["mean class accuracy", percent(report.mean_class_accuracy ?? undefined)],
         ["points", integer(num(report.points))],
         ["classes with support", integer(num(report.classes_with_support))],
+        ["means average", averagedLine(report) ?? "—"],
         ["ground truth", scene?.ground_truth ?? "—"],
         ["prediction", scene?.prediction ?? "—"],
       ]),
+      mapping
+        ? h("p", { class: "mt-2 text-xs text-slate-300", text: mapping, testid: "eval-mapping" })
+        : null,
       warnings(report.warnings),
+      reproduceBlock(report),
     ],
     "evaluation-summary",
   );
@@ -89,15 +97,9 @@ export function evaluationCards(report: EvaluationReport): HTMLElement[] {
         { label: "prec.", title: "precision" },
         "recall",
         { label: "support", title: "ground-truth points of the class" },
+        { label: "mean", title: "whether mIoU and mean class accuracy average the class" },
       ],
-      classes.map((c) => [
-        c.name,
-        percent(c.iou ?? undefined),
-        percent(c.f1 ?? undefined),
-        percent(c.precision ?? undefined),
-        percent(c.recall ?? undefined),
-        integer(c.support),
-      ]),
+      classes.map(classRow),
       "eval-table",
       true,
     ),

@@ -467,6 +467,33 @@ describe("viewer (e2e)", () => {
     const miou = Number(await page.locator("[data-testid=miou]").getAttribute("data-value"));
     expect(miou).toBeGreaterThan(0);
     expect(miou).toBeLessThanOrEqual(1);
+    // The CLI's answer to the card's own command line: the same classes, "no gt"
+    // exactly where a class has no ground-truth point (as the CLI's table), the
+    // means' members as its per-class "averaged", and its class mapping.
+    const summary = "[data-testid=evaluation-summary]";
+    const command = await page.locator(`${summary} [data-testid=reproduce-cli]`).textContent();
+    const cli = await runCommandLine(command!, server.dataDir);
+    const classes = cli.classes as { name: string; support: number; averaged: boolean }[];
+    const rows = await page
+      .locator("[data-testid=eval-table] tbody tr")
+      .evaluateAll((trs) =>
+        trs.map((tr) => [...tr.querySelectorAll("td")].map((td) => td.textContent ?? "")),
+      );
+    expect(rows.map((r) => r[0])).toEqual(classes.map((c) => c.name));
+    rows.forEach((row, i) => {
+      const none = classes[i]!.support === 0;
+      expect([row[1] === "no gt", row[2] === "no gt"]).toEqual([none, none]);
+      expect(row[6]).toBe(classes[i]!.averaged ? "yes" : "no");
+    });
+    const mapping = cli.mapping as { builtin: string; chosen_because: string | null };
+    const line = await page.locator(`${summary} [data-testid=eval-mapping]`).textContent();
+    expect(line).toContain(
+      `class mapping ${mapping.builtin} (${classes.length} evaluation classes)`,
+    );
+    if (mapping.chosen_because) expect(line).toContain(mapping.chosen_because);
+    console.log(
+      `eval: ${classes.filter((c) => c.support === 0).length} of ${classes.length} classes no gt; ${line}`,
+    );
     await screenshot(page, "05-evaluation");
     await page.locator("[data-testid=tab-study]").click();
     expect(await page.locator("[data-testid=study-scatter] circle").count()).toBe(1);
