@@ -27,8 +27,46 @@ export interface PlanCandidates {
   coverageAlone: number[];
   /** Grid step and scanner height (null for candidates from a file). */
   spacing: number | null;
+  /** The grid's spacing was chosen by the server (spacing auto). */
+  spacingAuto: boolean;
   height: number | null;
   rejected: Record<string, number>;
+}
+
+/**
+ * A target beyond what all the candidates see (report.out_of_reach): what
+ * was chosen (out_of_reach: most or share) and both choices' figures.
+ */
+export interface PlanOutOfReach {
+  chosen: string;
+  /** All the candidates reach, and the new stations that reach it (greedy from the chosen on). */
+  mostCoverage: number;
+  mostStations: number;
+  /** The target's share of that, and the first new stations that reach it, at what coverage. */
+  shareCoverage: number;
+  shareStations: number;
+  shareReachedAt: number;
+}
+
+/** One new station's local search (report.refinement.stations[]). */
+export interface RefinedStation {
+  rankBefore: number;
+  from: Vec3;
+  to: Vec3;
+  moved: number;
+  moves: number;
+  gainBefore: number;
+  gainAfter: number;
+}
+
+/** The refinement of the new stations (report.refinement; refine on). */
+export interface PlanRefinement {
+  coverageBefore: number;
+  coverageAfter: number;
+  positionsTraced: number;
+  positionsBudget: number;
+  stationsRefined: number;
+  stations: RefinedStation[];
 }
 
 export interface PlanResult {
@@ -41,6 +79,14 @@ export interface PlanResult {
   candidates: PlanCandidates;
   targets: string;
   warnings: string[];
+  /** What all the candidates together see (null from a server without it). */
+  reachableCoverage: number | null;
+  /** Target mode: what the stations aimed at (the target, or out of reach the chosen figure). */
+  aimedCoverage: number | null;
+  /** A target out of reach: both choices (null when the target was within reach or stations were asked). */
+  outOfReach: PlanOutOfReach | null;
+  /** Null when there was none (refine off, no new station). */
+  refinement: PlanRefinement | null;
 }
 
 export class PlanReportError extends Error {
@@ -148,6 +194,7 @@ export function parsePlanReport(report: unknown): PlanResult {
       gainLeft: perCandidate("gain_left"),
       coverageAlone: perCandidate("coverage_alone"),
       spacing: optionalNumber(c.spacing),
+      spacingAuto: c.spacing_auto === true,
       height: optionalNumber(c.height),
       rejected,
     },
@@ -155,6 +202,75 @@ export function parsePlanReport(report: unknown): PlanResult {
     warnings: Array.isArray(report.warnings)
       ? report.warnings.filter((w): w is string => typeof w === "string")
       : [],
+    reachableCoverage:
+      report.reachable_coverage === undefined
+        ? null
+        : share(report.reachable_coverage, "reachable_coverage"),
+    aimedCoverage:
+      report.aimed_coverage === undefined || report.aimed_coverage === null
+        ? null
+        : share(report.aimed_coverage, "aimed_coverage"),
+    outOfReach: parseOutOfReach(report.out_of_reach),
+    refinement: parseRefinement(report.refinement),
+  };
+}
+
+function count(value: unknown, what: string): number {
+  if (typeof value !== "number" || !Number.isInteger(value) || value < 0) {
+    throw new PlanReportError(`${what} must be a count, got ${JSON.stringify(value)}`);
+  }
+  return value;
+}
+
+function parseOutOfReach(value: unknown): PlanOutOfReach | null {
+  if (value === undefined || value === null) return null;
+  if (!isObject(value)) throw new PlanReportError("out_of_reach is not an object");
+  return {
+    chosen: typeof value.chosen === "string" ? value.chosen : "",
+    mostCoverage: share(value.most_coverage, "out_of_reach.most_coverage"),
+    mostStations: count(
+      value.most_reached_by_new_stations,
+      "out_of_reach.most_reached_by_new_stations",
+    ),
+    shareCoverage: share(value.share_coverage, "out_of_reach.share_coverage"),
+    shareStations: count(
+      value.share_reached_by_first_new_stations,
+      "out_of_reach.share_reached_by_first_new_stations",
+    ),
+    shareReachedAt: share(value.share_reached_at, "out_of_reach.share_reached_at"),
+  };
+}
+
+function parseRefinement(value: unknown): PlanRefinement | null {
+  if (value === undefined || value === null) return null;
+  if (!isObject(value)) throw new PlanReportError("refinement is not an object");
+  const number = (v: unknown, what: string) => {
+    if (typeof v !== "number" || !Number.isFinite(v)) {
+      throw new PlanReportError(`${what} must be a number, got ${JSON.stringify(v)}`);
+    }
+    return v;
+  };
+  const stations = list(value.stations, "refinement.stations").map((entry, i) => {
+    const what = `refinement.stations[${i}]`;
+    if (!isObject(entry)) throw new PlanReportError(`${what} is not an object`);
+    return {
+      rankBefore: count(entry.rank_before, `${what}.rank_before`),
+      from: point(entry.from, `${what}.from`),
+      to: point(entry.to, `${what}.to`),
+      moved: number(entry.moved, `${what}.moved`),
+      moves: count(entry.moves, `${what}.moves`),
+      // A gain is a share; one station's before and after, so a search is judged by them.
+      gainBefore: share(entry.gain_before, `${what}.gain_before`),
+      gainAfter: share(entry.gain_after, `${what}.gain_after`),
+    };
+  });
+  return {
+    coverageBefore: share(value.coverage_before, "refinement.coverage_before"),
+    coverageAfter: share(value.coverage_after, "refinement.coverage_after"),
+    positionsTraced: count(value.positions_traced, "refinement.positions_traced"),
+    positionsBudget: count(value.positions_budget, "refinement.positions_budget"),
+    stationsRefined: count(value.stations_refined, "refinement.stations_refined"),
+    stations,
   };
 }
 

@@ -8,6 +8,7 @@ import type { PlanResult } from "../plan_report";
 import { declaredChoice } from "../settings_defaults";
 import type { ChoiceDeclaration } from "../settings_defaults";
 import { coverageChart } from "./coverage_chart";
+import { outOfReachFacts, planQuestion, refinementRows, refinementSummary } from "./plan_figures";
 import { BUTTON_PRIMARY, BUTTON_SMALL, INPUT, clear, h } from "./dom";
 import { fixed, integer, percent } from "./format";
 import { card, facts, headline, table, warnings } from "./results_panel";
@@ -31,8 +32,13 @@ export type PlanField = (typeof PLAN_FIELDS)[number];
 
 export interface FieldDeclaration {
   key: PlanField;
-  /** The server's default, null when it has none (stations: the other question). */
+  /** The server's default, null when it has none (stations: the other question) or it is auto. */
   default: number | null;
+  /**
+   * The server chooses the value when none is sent (spacing: about 1,000
+   * positions over the floor plan): the blank field says "auto".
+   */
+  auto: boolean;
   min: number | null;
   max: number | null;
   unit: string;
@@ -66,6 +72,7 @@ export function planDeclarations(keys: unknown): Map<PlanField, FieldDeclaration
     out.set(key, {
       key,
       default: num(k.default),
+      auto: k.auto === true,
       min: num(k.min),
       max: num(k.max),
       unit: typeof k.unit === "string" ? k.unit : "",
@@ -184,7 +191,7 @@ export class PlanPanel {
         title: d?.doc ?? "",
         attrs: {
           type: "number",
-          placeholder: d?.default !== null && d?.default !== undefined ? String(d.default) : "—",
+          placeholder: d?.auto ? "auto" : (d?.default ?? null) !== null ? String(d!.default) : "—",
           ...(d?.min !== null && d?.min !== undefined ? { min: String(d.min) } : {}),
           ...(d?.max !== null && d?.max !== undefined ? { max: String(d.max) } : {}),
           step: "any",
@@ -241,11 +248,6 @@ export function planCard(
   coveredBy: number[] | null,
   seconds: number | null,
 ): HTMLElement {
-  const question =
-    result.targetCoverage !== null
-      ? `fewest stations for ${percent(result.targetCoverage, 1)}` +
-        (result.targetReached ? " (reached)" : " (not reached)")
-      : `best ${result.stations.filter((s) => !s.existing).length} stations`;
   const rows = result.stations.map((s) => {
     const swatch = h("span", {
       class: "mr-1 inline-block h-2.5 w-2.5 rounded-full align-middle",
@@ -269,12 +271,21 @@ export function planCard(
     [
       headline("Coverage", percent(result.coverage, 1), "plan-coverage", result.coverage),
       facts([
-        ["Question", question],
+        ["Question", planQuestion(result)],
+        ...outOfReachFacts(result),
         ["Stations", String(result.stations.length)],
         [
           "Candidates",
           `${candidates.positions.length}${rejected ? ` (refused: ${rejected})` : ""}`,
         ],
+        ...(candidates.spacing !== null
+          ? ([
+              [
+                "Grid spacing",
+                `${fixed(candidates.spacing, 3)}${candidates.spacingAuto ? " (auto)" : ""}`,
+              ],
+            ] as [string, string][])
+          : []),
         ["Targets", result.targets],
         ...(seconds !== null ? ([["Time", `${seconds.toFixed(2)} s`]] as [string, string][]) : []),
       ]),
@@ -287,6 +298,7 @@ export function planCard(
         true,
         [0, 1],
       ),
+      refinementBlock(result),
       result.guarantee
         ? h("p", { class: "mt-2 text-[11px] text-slate-400", text: result.guarantee })
         : null,
@@ -300,4 +312,17 @@ export function planCard(
     ],
     "plan-card",
   );
+}
+
+/** The refinement's coverage before and after, and the stations it moved; null without one. */
+function refinementBlock(result: PlanResult): HTMLElement | null {
+  const summary = refinementSummary(result);
+  if (summary === null) return null;
+  const rows = refinementRows(result);
+  return h("div", { class: "mt-2", testid: "plan-refinement" }, [
+    h("div", { class: "text-xs text-slate-400", text: `Refinement: ${summary}` }),
+    rows.length
+      ? table(["Rank", "From", "To", "Moved", "Adds"], rows, "plan-refinement-moves", true, [1, 2])
+      : null,
+  ]);
 }

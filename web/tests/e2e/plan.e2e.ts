@@ -7,7 +7,8 @@
 
 import type { Browser, Page } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, test } from "vitest";
-import { screenshot, stopAll } from "./harness";
+import { join } from "node:path";
+import { runCli, screenshot, stopAll } from "./harness";
 import type { SentRequest, Server } from "./harness";
 import { openTwoRooms } from "./two_rooms";
 
@@ -45,8 +46,9 @@ describe("scan planning (e2e)", () => {
   test("Plan draws the heat map, one numbered station in each room and the curve", async () => {
     await page.locator("[data-testid=tab-plan]").click();
     // Its fields start from the server's declarations of the plan keys.
+    // spacing's default is the server's choice (auto), said as such, never a number.
     const spacing = page.locator("[data-testid=plan-spacing]");
-    expect(Number(await spacing.getAttribute("placeholder"))).toBeGreaterThan(0);
+    expect(await spacing.getAttribute("placeholder")).toBe("auto");
     await page.locator("[data-testid=plan-stations]").fill("2");
     await page.locator("[data-testid=btn-plan]").click();
     const card = page.locator("[data-testid=plan-card]");
@@ -90,6 +92,39 @@ describe("scan planning (e2e)", () => {
     expect(state.stations.every((s) => s.badge)).toBe(true);
     // The known answer: one station on each side of the wall.
     expect(state.stations.map((s) => s.x < 4).sort()).toEqual([false, true]);
+
+    // The CLI's plan of the same file with the same question: the card shows its
+    // automatic grid and its refinement's figures (refine is on by default).
+    const cli = await runCli(
+      ["plan", join(server.dataDir, "two_rooms.ply"), "--stations", "2", "--json", "-q"],
+      240_000,
+    );
+    const grid = cli.candidates as { spacing: number; spacing_auto: boolean };
+    expect(grid.spacing_auto).toBe(true);
+    expect(await card.textContent()).toContain(`${grid.spacing.toFixed(3)} (auto)`);
+    const refinement = cli.refinement as {
+      coverage_before: number;
+      coverage_after: number;
+      stations: { moves: number; moved: number }[];
+    };
+    expect(refinement).not.toBeNull();
+    const pct = (x: number) => `${(100 * x).toFixed(2)}%`;
+    const shown = card.locator("[data-testid=plan-refinement]");
+    expect(await shown.textContent()).toContain(
+      `${pct(refinement.coverage_before)} → ${pct(refinement.coverage_after)}`,
+    );
+    const moved = refinement.stations.filter((s) => s.moves > 0);
+    expect(await shown.locator("[data-testid=plan-refinement-moves] tbody tr").count()).toBe(
+      moved.length,
+    );
+    expect(
+      await shown
+        .locator("[data-testid=plan-refinement-moves] tbody tr td:nth-child(4)")
+        .allTextContents(),
+    ).toEqual(moved.map((s) => s.moved.toFixed(3)));
+    expect(
+      Number(await card.locator("[data-testid=plan-coverage]").getAttribute("data-value")),
+    ).toBe(cli.coverage);
     await screenshot(page, "plan-two-rooms");
   });
 

@@ -64,7 +64,7 @@ describe("FileFrame", () => {
 describe("the live station's limits", () => {
   const declare = (key: PlanField, value: number): [PlanField, FieldDeclaration] => [
     key,
-    { key, default: value, min: null, max: null, unit: "", doc: "" },
+    { key, default: value, auto: false, min: null, max: null, unit: "", doc: "" },
   ];
   const declarations = new Map<PlanField, FieldDeclaration>([
     declare("max_range", 0),

@@ -139,17 +139,26 @@ describe("plan params", () => {
     plan: {
       stations: { name: "stations", min: 1, max: 10000 },
       target_coverage: { name: "target_coverage", default: 0.99, min: 0, max: 1 },
-      spacing: { name: "spacing", default: 0.5, unit: "scene units", doc: "grid step" },
-      height: { name: "height", default: 1.5 },
+      // As src/app/key.cpp declares an optional key whose default is the server's choice.
+      spacing: { name: "spacing", default: "auto", auto: true, unit: "scene units", doc: "grid" },
+      height: { name: "height", default: 1.5, unit: "scene units" },
     },
   });
   test("defaults come from the server's declaration", () => {
-    expect(declarations.get("spacing")).toMatchObject({ default: 0.5, unit: "scene units" });
+    expect(declarations.get("height")).toMatchObject({ default: 1.5, unit: "scene units" });
+    expect(declarations.get("height")!.auto).toBe(false);
     expect(declarations.get("stations")!.default).toBeNull();
+  });
+  test("spacing auto: no number for a default, and a blank field sends none (the server's auto)", () => {
+    expect(declarations.get("spacing")).toMatchObject({ default: null, auto: true });
+    expect(planJobParams({ spacing: "", stations: "2" }, declarations)).toEqual({ stations: 2 });
+    expect(planJobParams({ spacing: " " }, declarations)).toEqual({});
+    // A number typed is sent as it is: no default it could equal.
+    expect(planJobParams({ spacing: "0.25" }, declarations)).toEqual({ spacing: 0.25 });
   });
   test("only what the user set and differs from the server's default is sent", () => {
     expect(
-      planJobParams({ spacing: "0.5", height: "", target_coverage: "" }, declarations),
+      planJobParams({ height: "1.5", spacing: "", target_coverage: "" }, declarations),
     ).toEqual({});
     expect(planJobParams({ spacing: "0.25", target_coverage: "0.9" }, declarations)).toEqual({
       spacing: 0.25,
