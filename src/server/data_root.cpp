@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <string_view>
 #include <system_error>
 
 #include "occlusion/server/protocol_error.hpp"
@@ -114,10 +115,27 @@ std::string DataRoot::relative(const std::string& path) const {
   return path;
 }
 
+std::string DataRoot::relative_in(const std::string& text) const {
+  if (text == root_.string()) return "";
+  std::string out;
+  std::size_t from = 0;
+  for (std::size_t at = text.find(prefix_); at != std::string::npos;
+       at = text.find(prefix_, at + 1)) {
+    // Only where a path starts: not within another path ("/x/data/..." of root "/data").
+    if (at > 0 && std::string_view(" \t'\"([=").find(text[at - 1]) == std::string_view::npos) {
+      continue;
+    }
+    out.append(text, from, at - from);
+    from = at + prefix_.size();
+    at = from - 1;
+  }
+  return from == 0 ? text : out + text.substr(from);
+}
+
 void DataRoot::relativise(Json::Value& json) const {
   if (json.isString()) {
     const std::string text = json.asString();
-    const std::string shorter = relative(text);
+    const std::string shorter = relative_in(text);
     if (shorter != text) json = shorter;
   } else if (json.isArray() || json.isObject()) {
     for (auto& member : json) relativise(member);

@@ -17,6 +17,7 @@
 #include "occlusion/io/mesh_reader.hpp"
 #include "occlusion/io/named_paths.hpp"
 #include "occlusion/io/obj_reader.hpp"
+#include "occlusion/server/data_root.hpp"
 #include "occlusion/server/protocol_error.hpp"
 #include "upload.hpp"
 
@@ -35,7 +36,8 @@ std::string lower_case(std::string text) {
 // `max_memory_mb`: the server's budget, which bounds what a depth frame may
 // decode to (CloudReadOptions::max_memory_mb).
 std::shared_ptr<LoadedScene> read_scene(const fs::path& path, const std::string& display,
-                                        bool skip_bad_lines, std::uint64_t max_memory_mb) {
+                                        bool skip_bad_lines, std::uint64_t max_memory_mb,
+                                        const DataRoot& root) {
   try {
     if (lower_case(fs::path(path).extension().string()) == ".obj" && !fs::is_directory(path)) {
       auto mesh = std::make_shared<const TriangleMesh>(read_obj(path.string()));
@@ -56,6 +58,18 @@ std::shared_ptr<LoadedScene> read_scene(const fs::path& path, const std::string&
     scene->cloud = std::move(cloud);
     scene->summary["dropped_nan"] = Json::UInt64(report.dropped_nan);
     scene->summary["skipped_lines"] = Json::UInt64(report.skipped_lines);
+    // What reading found that the user should know (e.g. depths no indoor
+    // sensor measures), as -poc and -fscan report it first: the viewer shows
+    // it on load. A warning names the file as read; the client knows it by
+    // `display` (an upload is read from its temporary name), as errors say,
+    // and the files it names (a frame's image) relative to the data directory.
+    Json::Value warnings(Json::arrayValue);
+    for (const std::string& warning : report.warnings) {
+      const bool named = warning.compare(0, path.string().size(), path.string()) == 0;
+      warnings.append(
+          root.relative_in(named ? display + warning.substr(path.string().size()) : warning));
+    }
+    scene->summary["warnings"] = warnings;
     return scene;
   } catch (const InputError& e) {
     if (e.path != path.string()) throw;
@@ -92,8 +106,8 @@ SceneLookup find_scene(CommandContext& context, const std::string& path, bool sk
   found.cached = found.scene != nullptr;
   if (!found.cached) {
     context.progress()("loading", 0.0);
-    found.scene =
-        read_scene(resolved, found.relative, skip_bad_lines, context.server.limits.max_memory_mb);
+    found.scene = read_scene(resolved, found.relative, skip_bad_lines,
+                             context.server.limits.max_memory_mb, root);
     context.server.cache.insert(key, found.scene);
   }
   return found;
@@ -157,7 +171,8 @@ Json::Value store_upload(CommandContext& context, const std::string& name, std::
   const NamedPathScope as_stored([&](const std::string& file, const std::string& named) {
     return root.resolve_named(file == temporary.string() ? target.string() : file, named).string();
   });
-  const auto scene = read_scene(temporary, relative, false, context.server.limits.max_memory_mb);
+  const auto scene = read_scene(temporary, relative, false, context.server.limits.max_memory_mb,
+                                context.server.root);
   context.progress().check_cancel();
   std::error_code error;
   fs::rename(temporary, target, error);

@@ -111,6 +111,26 @@ TEST(DataRoot, ConfinesThePathsAFileNames) {
   }
 }
 
+// A sentence naming files of the data directory (a depth frame's warning
+// names its image, which resolve_named made absolute) names them as the
+// client does; a path that merely contains the directory's name is kept.
+TEST(DataRoot, NamesItsFilesRelativeWithinASentence) {
+  const TestData files;
+  const server::DataRoot root(files.data());
+  const std::string data = fs::canonical(files.data()).string();
+  EXPECT_EQ(root.relative_in(data + "/a.frame.json: depths of " + data + "/images/a.png lie"),
+            "a.frame.json: depths of images/a.png lie");
+  EXPECT_EQ(root.relative_in("reads '" + data + "/x.png' (" + data + "/y.png)"),
+            "reads 'x.png' (y.png)");
+  EXPECT_EQ(root.relative_in("/elsewhere" + data + "/x.png"), "/elsewhere" + data + "/x.png");
+  EXPECT_EQ(root.relative_in("no path here"), "no path here");
+  EXPECT_EQ(root.relative_in(data), "");
+  Json::Value json(Json::objectValue);
+  json["warnings"].append("see " + data + "/b.png");
+  root.relativise(json);
+  EXPECT_EQ(json["warnings"][0].asString(), "see b.png");
+}
+
 TEST(StaticFiles, ServesTheViewerAndNothingElse) {
   const TestData files;
   const std::string web = files.root() + "/web";

@@ -37,8 +37,14 @@ class DataRoot {
   // directory itself; paths outside are returned unchanged.
   std::string relative(const std::string& path) const;
 
+  // `text` with every path inside the data directory that it names, as a
+  // whole or within a sentence (where it starts the text or follows a space,
+  // a quote or a bracket), in its relative form: a warning naming a depth
+  // frame's image, which resolve_named made absolute, names it as the client does.
+  std::string relative_in(const std::string& text) const;
+
   // Rewrites, in place, every string of `json` that names a file inside the
-  // data directory into its relative form.
+  // data directory into its relative form (relative_in).
   void relativise(Json::Value& json) const;
 
  private:

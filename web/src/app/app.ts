@@ -229,7 +229,11 @@ export class App {
               : null,
           };
         }),
-        defaultsNote(view.info?.result.default_viewpoints?.cloud_occlusion, markers.atDefaults),
+        defaultsNote(
+          view.info?.result.default_viewpoints?.cloud_occlusion,
+          markers.atDefaults,
+          view.info?.result.warnings,
+        ),
       );
     markers.onChange = () => {
       viewer.requestRender();

@@ -27,28 +27,37 @@ export interface ViewpointActions {
 
 const AXES = ["x", "y", "z"] as const;
 
-/** What the panel says above the list: where the viewpoints come from and the job's warnings. */
+/**
+ * What the panel says above the list: what reading the file found (load's
+ * `warnings`, which -poc and -fscan give first among theirs), where the
+ * viewpoints come from and the job's warnings about them.
+ */
 export interface DefaultsNote {
-  text: string;
+  reading: string[];
+  text: string | null;
   warnings: string[];
 }
 
 /**
- * The note for a cloud's -poc defaults (null without them): while the markers
- * are still the defaults, the job's warnings about them, which the CLI gives
- * for the same defaults (e.g. that the data disagree with up).
+ * The note (null when there is nothing to say): the reading warnings whatever
+ * the markers, since they are about the file; and for a cloud's -poc defaults,
+ * while the markers are still the defaults, the job's warnings about them,
+ * which the CLI gives for the same defaults (e.g. that the data disagree with up).
  */
 export function defaultsNote(
   defaults: DefaultViewpoints | undefined,
   atDefaults: boolean,
+  reading: readonly string[] = [],
 ): DefaultsNote | null {
-  if (!defaults) return null;
+  if (!defaults) return reading.length ? { reading: [...reading], text: null, warnings: [] } : null;
   return atDefaults
     ? {
+        reading: [...reading],
         text: `-poc's default viewpoints (${defaults.viewpoint_source}): the CLI's with none given`,
         warnings: defaults.warnings,
       }
     : {
+        reading: [...reading],
         text: `changed from -poc's defaults (${defaults.viewpoint_source}); Reset positions puts them back`,
         warnings: [],
       };
@@ -81,7 +90,10 @@ export class ViewpointPanel {
     clear(this.note);
     if (note) {
       this.note.append(
-        h("p", { text: note.text, testid: "viewpoint-defaults" }),
+        ...note.reading.map((w) =>
+          h("p", { class: "text-amber-300", text: `⚠ ${w}`, testid: "load-warning" }),
+        ),
+        ...(note.text === null ? [] : [h("p", { text: note.text, testid: "viewpoint-defaults" })]),
         ...note.warnings.map((w) =>
           h("p", { class: "text-amber-300", text: `⚠ ${w}`, testid: "viewpoint-defaults-warning" }),
         ),

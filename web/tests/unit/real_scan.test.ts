@@ -180,6 +180,20 @@ describe("default viewpoints note", () => {
     expect(defaultsNote(defaults, false)!.warnings).toEqual([]);
     expect(defaultsNote(undefined, true)).toBeNull();
   });
+
+  test("what reading found shows whether or not the markers are the defaults, and on a mesh", () => {
+    const reading = ["frames/far.frame.json: 192 of 192 depths lie beyond 20 m"];
+    for (const atDefaults of [true, false]) {
+      const note = defaultsNote(defaults, atDefaults, reading)!;
+      expect(note.reading).toEqual(reading);
+      // Apart from the job's warnings about its defaults, which go when they are moved.
+      expect(note.warnings).toEqual(atDefaults ? defaults.warnings : []);
+    }
+    const withoutDefaults = defaultsNote(undefined, true, reading)!;
+    expect(withoutDefaults.reading).toEqual(reading);
+    expect(withoutDefaults.text).toBeNull();
+    expect(defaultsNote(defaults, true)!.reading).toEqual([]);
+  });
 });
 
 describe("settings", () => {
