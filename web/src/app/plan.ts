@@ -18,6 +18,7 @@ import { integer, percent } from "../ui/format";
 import {
   PlanPanel,
   planDeclarations,
+  planChoiceDeclaration,
   planJobParams,
   planLimitParams,
   planUpDeclaration,
@@ -58,7 +59,11 @@ export class Plan {
 
   /** The plan keys' declarations from the server's hello (the tab's defaults). */
   declare(keys: unknown): void {
-    this.panel.declare(planDeclarations(keys), planUpDeclaration(keys));
+    this.panel.declare(
+      planDeclarations(keys),
+      planUpDeclaration(keys),
+      planChoiceDeclaration(keys, "out_of_reach"),
+    );
   }
 
   /** A new scene: the old plan and placed stations no longer apply. */
@@ -84,7 +89,12 @@ export class Plan {
     }
     let params: Record<string, unknown>;
     try {
-      params = planJobParams(this.panel.fields(), this.panel.declarations, this.panel.up);
+      params = planJobParams(
+        this.panel.fields(),
+        this.panel.declarations,
+        this.panel.up,
+        this.panel.outOfReach,
+      );
     } catch (error) {
       notices.error("Plan settings", (error as Error).message);
       return;
@@ -204,7 +214,12 @@ export class Plan {
   liveLimits(): Record<string, unknown> {
     if (this.result !== null && this.resultLimits !== null) return this.resultLimits;
     return planLimitParams(
-      planJobParams(this.panel.fields(), this.panel.declarations, this.panel.up),
+      planJobParams(
+        this.panel.fields(),
+        this.panel.declarations,
+        this.panel.up,
+        this.panel.outOfReach,
+      ),
     );
   }
 

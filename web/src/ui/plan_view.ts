@@ -52,12 +52,20 @@ export interface FieldDeclaration {
  */
 export type UpDeclaration = Omit<ChoiceDeclaration, "key">;
 
-/** The `up` key as `hello` declares it for the `plan` job; null when it does not. */
-export function planUpDeclaration(keys: unknown): UpDeclaration | null {
+/** The choice keys the tab offers as drop-downs (their default: the server's, not sent). */
+export type PlanChoiceKey = "up" | "out_of_reach";
+
+/** A choice key as `hello` declares it for the `plan` job; null when it does not. */
+export function planChoiceDeclaration(keys: unknown, key: PlanChoiceKey): UpDeclaration | null {
   const plan = (keys as Record<string, unknown> | null)?.plan as
     Record<string, unknown> | undefined;
-  const choice = declaredChoice(plan?.up);
+  const choice = declaredChoice(plan?.[key]);
   return choice === null ? null : { ...choice, doc: choice.doc ?? "" };
+}
+
+/** The `up` key as `hello` declares it for the `plan` job; null when it does not. */
+export function planUpDeclaration(keys: unknown): UpDeclaration | null {
+  return planChoiceDeclaration(keys, "up");
 }
 
 /** The tab's fields as `hello` declares the `plan` job's keys; null for a key it does not declare. */
@@ -92,17 +100,25 @@ export function planDeclarations(keys: unknown): Map<PlanField, FieldDeclaration
  * number, or an up axis the server does not offer.
  */
 export function planJobParams(
-  fields: Partial<Record<PlanField | "up", string>>,
+  fields: Partial<Record<PlanField | PlanChoiceKey, string>>,
   declarations: Map<PlanField, FieldDeclaration>,
   up: UpDeclaration | null = null,
+  outOfReach: UpDeclaration | null = null,
 ): Record<string, unknown> {
   const params: Record<string, unknown> = {};
-  const axis = fields.up ?? "";
-  if (axis !== "") {
-    if (up === null || !up.choices.includes(axis)) {
-      throw new Error(`up: '${axis}' is not one of ${up?.choices.join(", ") ?? "(none offered)"}`);
+  const choices: [PlanChoiceKey, UpDeclaration | null][] = [
+    ["up", up],
+    ["out_of_reach", outOfReach],
+  ];
+  for (const [key, declared] of choices) {
+    const value = fields[key] ?? "";
+    if (value === "") continue;
+    if (declared === null || !declared.choices.includes(value)) {
+      throw new Error(
+        `${key}: '${value}' is not one of ${declared?.choices.join(", ") ?? "(none offered)"}`,
+      );
     }
-    if (axis !== up.default) params.up = axis;
+    if (value !== declared.default) params[key] = value;
   }
   for (const key of PLAN_FIELDS) {
     const text = (fields[key] ?? "").trim();
@@ -135,13 +151,14 @@ export interface PlanPanelActions {
 
 export class PlanPanel {
   private readonly inputs = new Map<PlanField, HTMLInputElement>();
-  private upSelect: HTMLSelectElement | null = null;
+  private readonly selects = new Map<PlanChoiceKey, HTMLSelectElement>();
   private readonly form: HTMLElement;
   private readonly liveButton: HTMLButtonElement;
   private readonly liveText: HTMLElement;
   readonly results: HTMLElement;
   declarations = new Map<PlanField, FieldDeclaration>();
   up: UpDeclaration | null = null;
+  outOfReach: UpDeclaration | null = null;
 
   constructor(container: HTMLElement, actions: PlanPanelActions) {
     this.form = h("div", { class: "grid grid-cols-2 gap-2 text-xs", testid: "plan-form" });
@@ -177,12 +194,17 @@ export class PlanPanel {
   }
 
   /** Builds the fields from the server's declarations (blank: the server's default). */
-  declare(declarations: Map<PlanField, FieldDeclaration>, up: UpDeclaration | null = null): void {
+  declare(
+    declarations: Map<PlanField, FieldDeclaration>,
+    up: UpDeclaration | null = null,
+    outOfReach: UpDeclaration | null = null,
+  ): void {
     this.declarations = declarations;
     this.up = up;
+    this.outOfReach = outOfReach;
     clear(this.form);
     this.inputs.clear();
-    this.upSelect = null;
+    this.selects.clear();
     for (const key of PLAN_FIELDS) {
       const d = declarations.get(key);
       const input = h("input", {
@@ -206,26 +228,35 @@ export class PlanPanel {
         ]),
       );
     }
-    if (up !== null) {
-      const options = [
-        h("option", { text: `default (${up.default || "server's"})`, attrs: { value: "" } }),
-        ...up.choices.map((c) => h("option", { text: c, attrs: { value: c } })),
-      ];
-      const select = h("select", { class: INPUT, testid: "plan-up", title: up.doc }, options);
-      this.upSelect = select;
-      this.form.append(
-        h("label", { class: "flex flex-col gap-0.5 text-slate-400", title: up.doc }, [
-          "up axis",
-          select,
-        ]),
-      );
-    }
+    this.choice("up", "up axis", up);
+    this.choice("out_of_reach", "target out of reach", outOfReach);
   }
 
-  fields(): Partial<Record<PlanField | "up", string>> {
-    const out: Partial<Record<PlanField | "up", string>> = {};
+  /** A drop-down of the server's choices for `key`, "default" first (not sent); none undeclared. */
+  private choice(key: PlanChoiceKey, label: string, declared: UpDeclaration | null): void {
+    if (declared === null) return;
+    const options = [
+      h("option", { text: `default (${declared.default || "server's"})`, attrs: { value: "" } }),
+      ...declared.choices.map((c) => h("option", { text: c, attrs: { value: c } })),
+    ];
+    const select = h(
+      "select",
+      { class: INPUT, testid: `plan-${key.replace(/_/g, "-")}`, title: declared.doc },
+      options,
+    );
+    this.selects.set(key, select);
+    this.form.append(
+      h("label", { class: "flex flex-col gap-0.5 text-slate-400", title: declared.doc }, [
+        label,
+        select,
+      ]),
+    );
+  }
+
+  fields(): Partial<Record<PlanField | PlanChoiceKey, string>> {
+    const out: Partial<Record<PlanField | PlanChoiceKey, string>> = {};
     for (const [key, input] of this.inputs) out[key] = input.value;
-    if (this.upSelect !== null) out.up = this.upSelect.value;
+    for (const [key, select] of this.selects) out[key] = select.value;
     return out;
   }
 

@@ -68,6 +68,13 @@ describe("scan planning (e2e)", () => {
       "-z",
     ]);
     expect(request.params.up).toBeUndefined();
+    // So does what to aim at for a target out of reach.
+    expect(await page.locator("[data-testid=plan-out-of-reach] option").allTextContents()).toEqual([
+      "default (most)",
+      "most",
+      "share",
+    ]);
+    expect(request.params.out_of_reach).toBeUndefined();
 
     const coverage = Number(
       await card.locator("[data-testid=plan-coverage]").getAttribute("data-value"),

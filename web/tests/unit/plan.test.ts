@@ -10,6 +10,7 @@ import { PlanReportError, parsePlanReport } from "../../src/plan_report";
 import { FrameError, decodeFrame, encodeFrame } from "../../src/protocol/frame";
 import { CHART_BOX, curvePoints } from "../../src/ui/coverage_chart";
 import {
+  planChoiceDeclaration,
   planDeclarations,
   planJobParams,
   planLimitParams,
@@ -194,6 +195,28 @@ describe("plan params", () => {
     const params = planJobParams({ up: "-y", max_range: "" }, declarations, up);
     expect(params).toEqual({ up: "-y" });
     expect(planLimitParams({ ...params, spacing: 0.25 })).toEqual({ up: "-y" });
+  });
+  // A target beyond what the candidates see: all of the reachable (most) or its share.
+  const outOfReach = planChoiceDeclaration(
+    { plan: { out_of_reach: { default: "most", choices: ["most", "share"], doc: "aim" } } },
+    "out_of_reach",
+  );
+  test("out_of_reach: the server's choices; only one other than its default is sent", () => {
+    expect(outOfReach).toEqual({ default: "most", choices: ["most", "share"], doc: "aim" });
+    expect(planJobParams({ out_of_reach: "most" }, declarations, up, outOfReach)).toEqual({});
+    expect(planJobParams({ out_of_reach: "" }, declarations, up, outOfReach)).toEqual({});
+    expect(
+      planJobParams(
+        { out_of_reach: "share", target_coverage: "0.9" },
+        declarations,
+        up,
+        outOfReach,
+      ),
+    ).toEqual({ out_of_reach: "share", target_coverage: 0.9 });
+    expect(() => planJobParams({ out_of_reach: "all" }, declarations, up, outOfReach)).toThrow(
+      /out_of_reach: 'all'/,
+    );
+    expect(planChoiceDeclaration({ plan: {} }, "out_of_reach")).toBeNull();
   });
   test("an up axis the server does not offer is refused", () => {
     expect(() => planJobParams({ up: "down" }, declarations, up)).toThrow(/up: 'down'/);
