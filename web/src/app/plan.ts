@@ -19,6 +19,7 @@ import {
   PlanPanel,
   planDeclarations,
   planChoiceDeclaration,
+  planFlagDeclarations,
   planJobParams,
   planLimitParams,
   planUpDeclaration,
@@ -63,6 +64,7 @@ export class Plan {
       planDeclarations(keys),
       planUpDeclaration(keys),
       planChoiceDeclaration(keys, "out_of_reach"),
+      planFlagDeclarations(keys),
     );
   }
 
@@ -94,6 +96,7 @@ export class Plan {
         this.panel.declarations,
         this.panel.up,
         this.panel.outOfReach,
+        this.panel.flags,
       );
     } catch (error) {
       notices.error("Plan settings", (error as Error).message);
@@ -219,6 +222,7 @@ export class Plan {
         this.panel.declarations,
         this.panel.up,
         this.panel.outOfReach,
+        this.panel.flags,
       ),
     );
   }

@@ -52,6 +52,28 @@ export interface FieldDeclaration {
  */
 export type UpDeclaration = Omit<ChoiceDeclaration, "key">;
 
+/** The on/off keys the tab offers as boxes (a box left at the server's default sends nothing). */
+export const PLAN_FLAGS = ["refine"] as const;
+export type PlanFlag = (typeof PLAN_FLAGS)[number];
+
+export interface FlagDeclaration {
+  default: boolean;
+  doc: string;
+}
+
+/** The tab's boxes as `hello` declares the `plan` job's boolean keys; none for a key it lacks. */
+export function planFlagDeclarations(keys: unknown): Map<PlanFlag, FlagDeclaration> {
+  const out = new Map<PlanFlag, FlagDeclaration>();
+  const plan = (keys as Record<string, unknown> | null)?.plan as
+    Record<string, Record<string, unknown> | undefined> | undefined;
+  for (const key of PLAN_FLAGS) {
+    const k = plan?.[key];
+    if (typeof k?.default !== "boolean") continue;
+    out.set(key, { default: k.default, doc: typeof k.doc === "string" ? k.doc : "" });
+  }
+  return out;
+}
+
 /** The choice keys the tab offers as drop-downs (their default: the server's, not sent). */
 export type PlanChoiceKey = "up" | "out_of_reach";
 
@@ -100,12 +122,19 @@ export function planDeclarations(keys: unknown): Map<PlanField, FieldDeclaration
  * number, or an up axis the server does not offer.
  */
 export function planJobParams(
-  fields: Partial<Record<PlanField | PlanChoiceKey, string>>,
+  fields: Partial<Record<PlanField | PlanChoiceKey | PlanFlag, string>>,
   declarations: Map<PlanField, FieldDeclaration>,
   up: UpDeclaration | null = null,
   outOfReach: UpDeclaration | null = null,
+  flags: Map<PlanFlag, FlagDeclaration> = new Map(),
 ): Record<string, unknown> {
   const params: Record<string, unknown> = {};
+  // A box's field is "true" or "false"; sent only where it differs from a declared default.
+  for (const [key, declared] of flags) {
+    const value = fields[key];
+    if (value !== "true" && value !== "false") continue;
+    if ((value === "true") !== declared.default) params[key] = value === "true";
+  }
   const choices: [PlanChoiceKey, UpDeclaration | null][] = [
     ["up", up],
     ["out_of_reach", outOfReach],
@@ -159,6 +188,8 @@ export class PlanPanel {
   declarations = new Map<PlanField, FieldDeclaration>();
   up: UpDeclaration | null = null;
   outOfReach: UpDeclaration | null = null;
+  flags = new Map<PlanFlag, FlagDeclaration>();
+  private readonly boxes = new Map<PlanFlag, HTMLInputElement>();
 
   constructor(container: HTMLElement, actions: PlanPanelActions) {
     this.form = h("div", { class: "grid grid-cols-2 gap-2 text-xs", testid: "plan-form" });
@@ -198,13 +229,16 @@ export class PlanPanel {
     declarations: Map<PlanField, FieldDeclaration>,
     up: UpDeclaration | null = null,
     outOfReach: UpDeclaration | null = null,
+    flags: Map<PlanFlag, FlagDeclaration> = new Map(),
   ): void {
     this.declarations = declarations;
     this.up = up;
     this.outOfReach = outOfReach;
+    this.flags = flags;
     clear(this.form);
     this.inputs.clear();
     this.selects.clear();
+    this.boxes.clear();
     for (const key of PLAN_FIELDS) {
       const d = declarations.get(key);
       const input = h("input", {
@@ -230,6 +264,20 @@ export class PlanPanel {
     }
     this.choice("up", "up axis", up);
     this.choice("out_of_reach", "target out of reach", outOfReach);
+    for (const [key, declared] of flags) {
+      const box = h("input", {
+        testid: `plan-${key}`,
+        title: declared.doc,
+        attrs: { type: "checkbox", ...(declared.default ? { checked: "" } : {}) },
+      });
+      this.boxes.set(key, box);
+      this.form.append(
+        h("label", { class: "flex items-center gap-1 text-slate-400", title: declared.doc }, [
+          box,
+          key,
+        ]),
+      );
+    }
   }
 
   /** A drop-down of the server's choices for `key`, "default" first (not sent); none undeclared. */
@@ -253,10 +301,11 @@ export class PlanPanel {
     );
   }
 
-  fields(): Partial<Record<PlanField | PlanChoiceKey, string>> {
-    const out: Partial<Record<PlanField | PlanChoiceKey, string>> = {};
+  fields(): Partial<Record<PlanField | PlanChoiceKey | PlanFlag, string>> {
+    const out: Partial<Record<PlanField | PlanChoiceKey | PlanFlag, string>> = {};
     for (const [key, input] of this.inputs) out[key] = input.value;
     for (const [key, select] of this.selects) out[key] = select.value;
+    for (const [key, box] of this.boxes) out[key] = String(box.checked);
     return out;
   }
 

@@ -75,6 +75,9 @@ describe("scan planning (e2e)", () => {
       "share",
     ]);
     expect(request.params.out_of_reach).toBeUndefined();
+    // refine is on by default: its box is ticked and, left so, not sent.
+    expect(await page.locator("[data-testid=plan-refine]").isChecked()).toBe(true);
+    expect(request.params.refine).toBeUndefined();
 
     const coverage = Number(
       await card.locator("[data-testid=plan-coverage]").getAttribute("data-value"),

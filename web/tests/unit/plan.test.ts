@@ -12,6 +12,7 @@ import { CHART_BOX, curvePoints } from "../../src/ui/coverage_chart";
 import {
   planChoiceDeclaration,
   planDeclarations,
+  planFlagDeclarations,
   planJobParams,
   planLimitParams,
   planUpDeclaration,
@@ -217,6 +218,19 @@ describe("plan params", () => {
       /out_of_reach: 'all'/,
     );
     expect(planChoiceDeclaration({ plan: {} }, "out_of_reach")).toBeNull();
+  });
+  test("refine: a box at the server's default sends nothing; unticked it sends false", () => {
+    const flags = planFlagDeclarations({
+      plan: { refine: { default: true, doc: "local search" }, improve: { default: true } },
+    });
+    expect([...flags]).toEqual([["refine", { default: true, doc: "local search" }]]);
+    expect(planJobParams({ refine: "true" }, declarations, up, outOfReach, flags)).toEqual({});
+    expect(planJobParams({ refine: "false" }, declarations, up, outOfReach, flags)).toEqual({
+      refine: false,
+    });
+    // Not declared by the server: never sent.
+    expect(planJobParams({ refine: "false" }, declarations, up, outOfReach, new Map())).toEqual({});
+    expect(planFlagDeclarations({ plan: { refine: { default: "yes" } } }).size).toBe(0);
   });
   test("an up axis the server does not offer is refused", () => {
     expect(() => planJobParams({ up: "down" }, declarations, up)).toThrow(/up: 'down'/);
