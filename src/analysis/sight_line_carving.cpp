@@ -37,36 +37,38 @@ float radius_beside(const Surfel& shape, const Ray& ray, float t_hit) {
 // A station whose own points the model hides by the kMaxBlockedShare is not
 // carved: so many crossings say that it is not where those points were
 // measured from (a wrong pose), or that its noise exceeds the bands, and
-// carving would then cut the model apart. Its lines are dropped from
-// `pending` (and their hits cleared).
-void leave_implausible_stations(const PointCloud& cloud, const std::vector<Station>& stations,
-                                std::vector<std::uint32_t>& pending,
-                                std::vector<std::optional<Hit>>& hits, SightLineCarving& carving) {
+// carving would then cut the model apart. Returns, per station, whether it is
+// carved; its lines are dropped from `pending` (with their hits).
+std::vector<bool> carved_stations(const PointCloud& cloud, const std::vector<Station>& stations,
+                                  std::vector<std::uint32_t>& pending,
+                                  std::vector<std::optional<Hit>>& hits,
+                                  SightLineCarving& carving) {
   std::vector<std::size_t> lines(stations.size(), 0), blocked(stations.size(), 0);
   for (std::size_t k = 0; k < pending.size(); ++k) {
     const auto s = static_cast<std::size_t>(measuring_station(cloud, stations.size(), pending[k]));
     ++lines[s];
     blocked[s] += hits[k].has_value();
   }
-  std::vector<bool> skip(stations.size(), false);
+  std::vector<bool> carved(stations.size(), true);
   for (std::size_t s = 0; s < stations.size(); ++s) {
     if (static_cast<double>(blocked[s]) > kMaxBlockedShare * static_cast<double>(lines[s])) {
-      skip[s] = true;
+      carved[s] = false;
       carving.implausible.push_back(
           {stations[s].name, static_cast<double>(blocked[s]) / static_cast<double>(lines[s])});
     }
   }
-  if (carving.implausible.empty()) return;
+  if (carving.implausible.empty()) return carved;
   std::size_t kept = 0;
   for (std::size_t k = 0; k < pending.size(); ++k) {
     const auto s = static_cast<std::size_t>(measuring_station(cloud, stations.size(), pending[k]));
-    if (skip[s]) continue;
+    if (!carved[s]) continue;
     pending[kept] = pending[k];
     hits[kept] = hits[k];
     ++kept;
   }
   pending.resize(kept);
   hits.resize(kept);
+  return carved;
 }
 
 }  // namespace
@@ -94,6 +96,12 @@ SightLineCarving carve_sight_lines(const PointCloud& cloud, SurfelEstimate& esti
   std::vector<std::uint8_t> shrunk(cloud.size(), 0);
   std::vector<Ray> rays;
   std::vector<std::optional<Hit>> hits;
+  std::vector<bool> carved;  // per station, set by the first pass
+  std::size_t uncarved_blocked = 0;
+  const auto count_blocked = [&hits] {
+    return static_cast<std::size_t>(
+        std::count_if(hits.begin(), hits.end(), [](const auto& hit) { return hit.has_value(); }));
+  };
   // Pass kMaxPasses only counts what is still blocked.
   for (int pass = 0; pass <= kMaxPasses && !pending.empty(); ++pass) {
     progress.check_cancel();
@@ -109,11 +117,14 @@ SightLineCarving carve_sight_lines(const PointCloud& cloud, SurfelEstimate& esti
     });
     static_assert(sizeof(PrimitiveId) == sizeof(std::uint32_t), "point indices are primitive ids");
     discs.intersect_batch(rays.data(), rays.size(), pending.data(), hits.data(), threads);
-    if (pass == 0) leave_implausible_stations(cloud, stations, pending, hits, carving);
-    const auto blocked = static_cast<std::size_t>(
-        std::count_if(hits.begin(), hits.end(), [](const auto& hit) { return hit.has_value(); }));
-    if (pass == 0) carving.blocked = blocked;
-    carving.still_blocked = blocked;
+    if (pass == 0) {
+      // Every station's blocked lines, the uncarved ones' too (which stay blocked).
+      carving.blocked = count_blocked();
+      carved = carved_stations(cloud, stations, pending, hits, carving);
+      uncarved_blocked = carving.blocked - count_blocked();
+    }
+    const std::size_t blocked = count_blocked();
+    carving.still_blocked = uncarved_blocked + blocked;
     if (blocked == 0 || pass == kMaxPasses) break;
     // Each blocking shape takes the smallest radius any line asks of it; then
     // the blocked lines are traced again, and the lines to the shrunk points
@@ -131,7 +142,9 @@ SightLineCarving carve_sight_lines(const PointCloud& cloud, SurfelEstimate& esti
       if (!shrunk[j]) {
         shrunk[j] = 1;
         ++carving.shrunk;
-        if (measuring_station(cloud, stations.size(), j) >= 0) next.push_back(j);
+        // Its own line, unless its station is left uncarved.
+        const std::ptrdiff_t station = measuring_station(cloud, stations.size(), j);
+        if (station >= 0 && carved[static_cast<std::size_t>(station)]) next.push_back(j);
       }
     }
     std::sort(next.begin(), next.end());

@@ -124,6 +124,12 @@ TEST(SightLineCarving, AStationThatCannotHaveSeenItsPointsIsNotCarved) {
   ASSERT_EQ(after.carving.implausible.size(), 1u);
   EXPECT_EQ(after.carving.implausible[0].name, "station_1");
   EXPECT_GT(after.carving.implausible[0].blocked_share, kMaxBlockedShare);
+  // The report counts its blocked lines, though none was carved.
+  std::size_t own = 0;
+  for (const std::int32_t id : scene.cloud.station_ids) own += id == 0;
+  EXPECT_GE(static_cast<double>(after.carving.blocked),
+            after.carving.implausible[0].blocked_share * static_cast<double>(own) - 0.5);
+  EXPECT_EQ(after.carving.still_blocked, after.carving.blocked);
   EXPECT_EQ(after.carving.shrunk, 0u);
   for (std::size_t i = 0; i < scene.cloud.size(); ++i) {
     ASSERT_EQ(after.surfels[i].radius, before.surfels[i].radius);

@@ -37,9 +37,10 @@ struct SightLineCarving {
   };
   std::vector<UncarvedStation> implausible;  // stations left uncarved (kMaxBlockedShare)
   std::size_t lines = 0;                     // lines of sight traced (points with a known station)
-  std::size_t blocked = 0;                   // of them, blocked before carving
-  std::size_t shrunk = 0;                    // discs and spheres made smaller
-  std::size_t still_blocked = 0;             // blocked after the last pass
+  // Of them, blocked before carving (the uncarved stations' too).
+  std::size_t blocked = 0;
+  std::size_t shrunk = 0;         // discs and spheres made smaller
+  std::size_t still_blocked = 0;  // blocked after the last pass
 };
 
 // Shrinks estimate.surfels' radii in place. Needs the estimate's thickness
