@@ -84,8 +84,7 @@ ScanTracer::ScanTracer(const PointCloud& cloud, const ScanOptions& options,
     : cloud_(cloud), options_(options) {
   progress("building octree", 0.0);
   if (options.surfels) {
-    near_viewpoint_ = 2.0 * options.surfels->stats.radius_median;
-    // An estimate made by hand, without its noise, has bands of 0.
+    near_viewpoint_ = disc_near_viewpoint(*options.surfels);
     discs_.emplace(banded_discs(*options.surfels, options.threads), options.octree, progress);
   } else {
     // Any sphere holding the viewpoint ends within 2 r of it (scan_shadow_ray).

@@ -7,6 +7,7 @@
 
 #include "occlusion/analysis/banded_discs.hpp"
 #include "occlusion/analysis/scan.hpp"
+#include "occlusion/analysis/scan_tracer.hpp"
 #include "occlusion/analysis/surfel_estimation.hpp"
 #include "occlusion/core/banded_surfel_octree.hpp"
 #include "occlusion/core/parallel.hpp"
@@ -90,8 +91,7 @@ SightLineCarving carve_sight_lines(const PointCloud& cloud, SurfelEstimate& esti
 
   progress("carving lines of sight", 0.0);
   const ScanOptions defaults;
-  // What -fscan ignores next to a viewpoint (ScanTracer).
-  const double near_viewpoint = 2.0 * estimate.stats.radius_median;
+  const double near_viewpoint = ScanTracer::disc_near_viewpoint(estimate);
   BandedSurfelOctree discs(banded_discs(estimate, threads), defaults.octree, progress);
   std::vector<std::uint8_t> shrunk(cloud.size(), 0);
   std::vector<Ray> rays;

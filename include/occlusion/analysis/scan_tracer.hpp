@@ -55,6 +55,10 @@ class ScanTracer {
   // What the rule ignores near a viewpoint: twice the median disc radius, or
   // twice point_radius for spheres.
   double near_viewpoint() const { return near_viewpoint_; }
+  // The same for discs of `surfels`, before any tracer is built.
+  static double disc_near_viewpoint(const SurfelEstimate& surfels) {
+    return 2.0 * surfels.stats.radius_median;
+  }
 
   // seen[k] = 1 if `viewpoint` sees point points[k], else 0, for k < count;
   // `rays` and `blocked` are scratch of at least `count` elements. The rays
