@@ -4,6 +4,8 @@
 
 #include <cstdio>
 
+#include "occlusion/io/shell_quote.hpp"
+
 namespace occlusion {
 
 namespace {
@@ -43,10 +45,7 @@ std::string shell_quoted(const std::string& text) {
   const bool plain = !text.empty() && text.find_first_not_of(
                                           "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
                                           "0123456789_./,:+=@%-") == std::string::npos;
-  if (plain) return text;
-  std::string quoted = "'";
-  for (const char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return quoted + "'";
+  return plain ? text : shell_quote(text);
 }
 
 const KeyInfo* declared(const JobInfo& job, const std::string& name) {
