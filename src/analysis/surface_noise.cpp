@@ -67,26 +67,83 @@ Binning make_binning(const PointCloud& cloud, const std::vector<Station>& statio
   return binning;
 }
 
-// Along an organised frame's rows: per measured point with both row
-// neighbours, |d(c-1) - 2 d(c) + d(c+1)| of the depths from the sensor.
-void add_grid_differences(const PointCloud& cloud, const std::vector<std::uint8_t>& measured,
-                          const std::vector<std::uint32_t>& bin_of,
-                          std::vector<std::vector<float>>& differences) {
+struct GridMeasures {
+  // Per bin: |d(c-1) - 2 d(c) + d(c+1)| of ranges along the rows.
+  std::vector<std::vector<float>> second_differences;
+  // Per bin: the larger of the depth changes (along the camera's axis) from
+  // a point to its next pixels in its row and its column where that is not
+  // zero, and how many points it is zero for (points inside a tread).
+  std::vector<std::vector<float>> depth_steps;
+  std::vector<std::size_t> treads;
+};
+
+// A depth camera rounds its depths to steps (a Kinect's disparity in 1/8
+// pixel: 11 mm at 2 m, 27 mm at 3 m) and its matching window makes pixels
+// side by side share a step: a real frame's surfaces are staircases whose
+// treads are exactly flat, so neither a plane's residuals nor the second
+// differences (mostly zero) see the rounding. A disc fitted to a tread stands
+// up to a step in front of the next tread's points. Where a share
+// kTreadShare of the points have the same depth as their next pixels in row
+// and column (a surface whose depth changes along a row but not down a
+// column, unrounded, has none), the frame is read as rounded: a step is the
+// larger of those changes below kStepEdge of the depth (not a depth edge),
+// and the rounding's error is uniform over one step, sigma = step / sqrt(12).
+// A real Kinect's floor at 3 m has treads under two rows tall, so the share
+// asked is well below a half.
+constexpr double kTreadShare = 0.3;
+constexpr float kStepEdge = 0.05f;
+// Depths equal as the sensor wrote them differ by a float's rounding once a
+// posed frame's points are turned back into the camera's frame.
+constexpr float kSameDepth = 1e-5f;
+
+void add_grid_measures(const PointCloud& cloud, const std::vector<std::uint8_t>& measured,
+                       const std::vector<std::uint32_t>& bin_of, GridMeasures& grid) {
   if (!cloud.has_pixels()) return;
-  const std::size_t width = cloud.sensor.width;
-  std::vector<float> depth(width * cloud.sensor.height, std::numeric_limits<float>::quiet_NaN());
+  const std::size_t width = cloud.sensor.width, height = cloud.sensor.height;
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  std::vector<float> range(width * height, nan), depth(width * height, nan);
+  const Eigen::Quaterniond to_sensor = cloud.sensor.orientation.conjugate();
   for (std::size_t i = 0; i < cloud.size(); ++i) {
-    depth[cloud.pixels[i]] =
-        static_cast<float>((cloud.positions[i].cast<double>() - cloud.sensor.origin).norm());
+    const Eigen::Vector3d local = cloud.positions[i].cast<double>() - cloud.sensor.origin;
+    range[cloud.pixels[i]] = static_cast<float>(local.norm());
+    depth[cloud.pixels[i]] = static_cast<float>(std::abs((to_sensor * local).z()));
   }
   for (std::size_t i = 0; i < cloud.size(); ++i) {
     if (!measured[i]) continue;
-    const std::size_t pixel = cloud.pixels[i], column = pixel % width;
-    if (column == 0 || column + 1 >= width) continue;
-    const float before = depth[pixel - 1], after = depth[pixel + 1];
-    if (std::isnan(before) || std::isnan(after)) continue;
-    differences[bin_of[i]].push_back(std::abs(before - 2.0f * depth[pixel] + after));
+    const std::size_t pixel = cloud.pixels[i], column = pixel % width, row = pixel / width;
+    const std::uint32_t bin = bin_of[i];
+    if (column > 0 && column + 1 < width && !std::isnan(range[pixel - 1]) &&
+        !std::isnan(range[pixel + 1])) {
+      grid.second_differences[bin].push_back(
+          std::abs(range[pixel - 1] - 2.0f * range[pixel] + range[pixel + 1]));
+    }
+    if (column + 1 >= width || row + 1 >= height) continue;
+    const float right = depth[pixel + 1], below = depth[pixel + width];
+    if (std::isnan(right) || std::isnan(below)) continue;
+    const float change = std::max(std::abs(right - depth[pixel]), std::abs(below - depth[pixel]));
+    if (change <= kSameDepth * depth[pixel]) {
+      ++grid.treads[bin];
+    } else if (change < kStepEdge * depth[pixel]) {
+      grid.depth_steps[bin].push_back(change);
+    }
   }
+}
+
+// The bin's sigma read off the grid (negative: none), the larger of the
+// second differences' and the rounding's.
+double grid_sigma(GridMeasures& grid, std::size_t bin) {
+  double sigma = -1.0;
+  std::vector<float>& differences = grid.second_differences[bin];
+  if (differences.size() >= kMinBinPoints) {
+    sigma = quantiles::at(differences, 0.5) / kSecondDifferenceMedian;
+  }
+  std::vector<float>& steps = grid.depth_steps[bin];
+  const std::size_t points = steps.size() + grid.treads[bin];
+  if (steps.size() >= kMinBinPoints &&
+      static_cast<double>(grid.treads[bin]) >= kTreadShare * static_cast<double>(points)) {
+    sigma = std::max(sigma, quantiles::at(steps, 0.5) / std::sqrt(12.0));
+  }
+  return sigma;
 }
 
 }  // namespace
@@ -97,23 +154,25 @@ SurfaceNoise measure_surface_noise(const PointCloud& cloud, const LargeVector<Su
   const std::vector<Station> stations = scan_stations(cloud);
   const Binning binning = make_binning(cloud, stations);
   const std::size_t bins = binning.first_bin.back() + 1;
-  std::vector<std::vector<float>> thicknesses(bins), differences(bins);
+  std::vector<std::vector<float>> thicknesses(bins);
+  GridMeasures grid;
+  grid.second_differences.resize(bins);
+  grid.depth_steps.resize(bins);
+  grid.treads.assign(bins, 0);
   std::vector<std::uint32_t> bin_of(cloud.size());
   for (std::size_t i = 0; i < cloud.size(); ++i) {
     bin_of[i] = static_cast<std::uint32_t>(bin_index(binning, i, cloud));
     if (measured[i]) thicknesses[bin_of[i]].push_back(thickness[i]);
   }
-  add_grid_differences(cloud, measured, bin_of, differences);
+  add_grid_measures(cloud, measured, bin_of, grid);
 
   std::vector<std::size_t> points(bins);
   std::vector<double> sigma(bins, -1.0);
   for (std::size_t b = 0; b < bins; ++b) {
     points[b] = thicknesses[b].size();
     if (points[b] < kMinBinPoints) continue;
-    sigma[b] = quantiles::at(thicknesses[b], 0.5);
-    if (differences[b].size() >= kMinBinPoints) {
-      sigma[b] = std::max(sigma[b], quantiles::at(differences[b], 0.5) / kSecondDifferenceMedian);
-    }
+    sigma[b] =
+        std::max(static_cast<double>(quantiles::at(thicknesses[b], 0.5)), grid_sigma(grid, b));
   }
   // The cloud's median thickness, for a station without a filled bin.
   std::vector<float> all;

@@ -74,39 +74,66 @@ TEST(SurfaceNoise, ACloudNoStationClaimsIsOneBin) {
   EXPECT_NEAR(noise.stations[0].bins[0].sigma, 0.002, 0.001);
 }
 
-TEST(SurfaceNoise, AnOrganisedFramesStepsCountAsItsNoise) {
-  // A wall 3 m in front of a camera (+z forward), 200 x 150 pixels, its depths
-  // with N(0, 5 mm) noise then quantised to steps of 2 cm, as a depth camera's
-  // disparity does: the depths along the rows (and the planes) show both.
+// A wall 3 m in front of a camera (+z forward), 200 x 150 pixels, turned
+// about the vertical so that its depth grows 0.5 m per unit of x / z; its
+// depths get N(0, sigma) noise, then are rounded to multiples of `step` (0:
+// not rounded), as a depth camera's disparity does.
+PointCloud camera_wall(double sigma, double step) {
   PointCloud cloud;
   cloud.sensor.width = 200;
   cloud.sensor.height = 150;
-  const double f = 150.0, step = 0.02, sigma = 0.005;
+  const double f = 150.0;
   Rng rng(8);
   for (std::uint32_t r = 0; r < 150; ++r) {
     for (std::uint32_t c = 0; c < 200; ++c) {
       const double x = (c - 99.5) / f, y = (r - 74.5) / f;
       const double depth = 3.0 + 0.5 * x + sigma * gaussian(rng);
-      const double stepped = step * std::round(depth / step);
+      const double stepped = step > 0.0 ? step * std::round(depth / step) : depth;
       cloud.positions.emplace_back(static_cast<float>(x * stepped), static_cast<float>(y * stepped),
                                    static_cast<float>(stepped));
       cloud.pixels.push_back(r * 200 + c);
     }
   }
+  return cloud;
+}
+
+// The bins of the camera's one station with enough points.
+std::vector<NoiseBin> filled_bins(const PointCloud& cloud) {
   const SurfelEstimate estimate = estimate_surfels(cloud, SurfelOptions{});
-  ASSERT_EQ(estimate.noise.stations.size(), 1u);
-  EXPECT_EQ(estimate.noise.stations[0].station, "sensor");
-  std::size_t bins = 0;
-  for (const NoiseBin& bin : estimate.noise.stations[0].bins) {
-    if (bin.points < kMinBinPoints) continue;
-    ++bins;
-    // The error of a depth is the noise and the rounding together, sigma
-    // sqrt(5^2 + 20^2 / 12) = 7.7 mm (read: 12 to 14 mm, the steps' jumps
-    // weigh more than a Gaussian's tail).
+  EXPECT_EQ(estimate.noise.stations.size(), 1u);
+  EXPECT_EQ(estimate.noise.stations.at(0).station, "sensor");
+  std::vector<NoiseBin> bins;
+  for (const NoiseBin& bin : estimate.noise.stations.at(0).bins) {
+    if (bin.points >= kMinBinPoints) bins.push_back(bin);
+  }
+  EXPECT_GE(bins.size(), 1u);
+  return bins;
+}
+
+TEST(SurfaceNoise, AnOrganisedFramesStepsCountAsItsNoise) {
+  // Noise of 5 mm and steps of 2 cm: the error of a depth is both together,
+  // sigma sqrt(5^2 + 20^2 / 12) = 7.7 mm (read: 12 to 14 mm, the steps'
+  // jumps weigh more than a Gaussian's tail).
+  for (const NoiseBin& bin : filled_bins(camera_wall(0.005, 0.02))) {
     EXPECT_GT(bin.sigma, 0.005) << bin.range_lo;
     EXPECT_LT(bin.sigma, 0.02) << bin.range_lo;
   }
-  EXPECT_GE(bins, 1u);
+}
+
+TEST(SurfaceNoise, AFramesFlatTreadsCountAsTheirRounding) {
+  // Steps of 2 cm and no noise, as a real camera's matching window gives
+  // (pixels side by side share a step): the planes fit the treads exactly
+  // and the rows' second differences are mostly zero, but the rounding's
+  // error, uniform over a step, is 20 mm / sqrt(12) = 5.8 mm.
+  for (const NoiseBin& bin : filled_bins(camera_wall(0.0, 0.02))) {
+    EXPECT_GT(bin.sigma, 0.8 * 0.02 / std::sqrt(12.0)) << bin.range_lo;
+    EXPECT_LT(bin.sigma, 1.5 * 0.02 / std::sqrt(12.0)) << bin.range_lo;
+  }
+  // Not rounded, the same wall's depths change a little from every pixel to
+  // the next and none of it is noise.
+  for (const NoiseBin& bin : filled_bins(camera_wall(0.0, 0.0))) {
+    EXPECT_LT(bin.sigma, 1e-4) << bin.range_lo;
+  }
 }
 
 }  // namespace

@@ -15,7 +15,10 @@
 // quantised depths put most of a point's window on its own step): the bin
 // takes the larger of it and the noise read off the grid, the median
 // |d(c-1) - 2 d(c) + d(c+1)| of depths along the rows, over its expectation
-// for Gaussian noise, 0.6745 sqrt(6) sigma. A bin of fewer than
+// for Gaussian noise, 0.6745 sqrt(6) sigma, or, where most neighbouring
+// pixels' depths are exactly equal (a real depth camera's rounded depths,
+// whose treads are flat), the rounding's error: the median step between
+// neighbours over sqrt(12). A bin of fewer than
 // kMinBinPoints points takes its nearest filled bin's; a cloud whose points
 // no station claims is one bin.
 
