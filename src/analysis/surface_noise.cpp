@@ -4,6 +4,9 @@
 #include <cmath>
 #include <limits>
 
+#include "occlusion/core/morton_knn.hpp"
+#include "occlusion/core/morton_order.hpp"
+#include "occlusion/core/parallel.hpp"
 #include "quantiles.hpp"
 
 namespace occlusion {
@@ -74,7 +77,7 @@ struct GridMeasures {
   // a point to its next pixels in its row and its column where that is not
   // zero, and how many points it is zero for (points inside a tread).
   std::vector<std::vector<float>> depth_steps;
-  std::vector<std::size_t> treads;
+  std::vector<std::size_t> treads, points;
 };
 
 // A depth camera rounds its depths to steps (a Kinect's disparity in 1/8
@@ -121,11 +124,66 @@ void add_grid_measures(const PointCloud& cloud, const std::vector<std::uint8_t>&
     const float right = depth[pixel + 1], below = depth[pixel + width];
     if (std::isnan(right) || std::isnan(below)) continue;
     const float change = std::max(std::abs(right - depth[pixel]), std::abs(below - depth[pixel]));
+    ++grid.points[bin];
     if (change <= kSameDepth * depth[pixel]) {
       ++grid.treads[bin];
     } else if (change < kStepEdge * depth[pixel]) {
       grid.depth_steps[bin].push_back(change);
     }
+  }
+}
+
+// A camera's frame without its grid (a Kinect frame stored as a bare array,
+// its missing depths dropped) has the same treads; they are read from each
+// point's kStepNeighbours nearest in space: a point at least half of whose
+// neighbours share its depth lies inside a tread, and a point's step is its
+// smallest depth change to a neighbour below kStepEdge of its depth (the
+// nearest in space of a tread's edge are mostly on its own tread).
+constexpr std::size_t kStepNeighbours = 8;
+
+void add_neighbour_steps(const PointCloud& cloud, const std::vector<std::uint8_t>& measured,
+                         const std::vector<std::uint32_t>& bin_of, GridMeasures& grid) {
+  if (cloud.has_pixels() || !cloud.stations.empty() || !cloud.sensor.single_view()) return;
+  const std::size_t count = cloud.size();
+  const std::vector<std::uint32_t> order = morton_order(cloud.positions);
+  std::vector<Eigen::Vector3f> sorted(count);
+  std::vector<float> depth(count);
+  const Eigen::Quaterniond to_sensor = cloud.sensor.orientation.conjugate();
+  for (std::size_t s = 0; s < count; ++s) {
+    sorted[s] = cloud.positions[order[s]];
+    depth[s] = static_cast<float>(
+        std::abs((to_sensor * (sorted[s].cast<double>() - cloud.sensor.origin)).z()));
+  }
+  const MortonKnn knn(sorted);
+  // Per sorted point: its step (0: none) and whether it lies inside a tread.
+  std::vector<float> step(count, 0.0f);
+  std::vector<std::uint8_t> tread(count, 0), considered(count, 0);
+  const MortonKnn::Visit visit = [&](std::size_t, std::size_t s, const std::uint32_t* ids,
+                                     std::size_t got) {
+    if (!measured[order[s]] || got < 2) return;
+    std::size_t same = 0;
+    float smallest = std::numeric_limits<float>::infinity();
+    for (std::size_t j = 0; j < got; ++j) {
+      if (ids[j] == s) continue;
+      const float change = std::abs(depth[ids[j]] - depth[s]);
+      if (change <= kSameDepth * depth[s]) {
+        ++same;
+      } else if (change < kStepEdge * depth[s]) {
+        smallest = std::min(smallest, change);
+      }
+    }
+    considered[s] = 1;
+    tread[s] = 2 * same >= got - 1;
+    if (std::isfinite(smallest)) step[s] = smallest;
+  };
+  parallel_for(count, 4096, 0, [&](std::size_t first, std::size_t last) {
+    knn.search(nullptr, first, last, kStepNeighbours + 1, visit);
+  });
+  for (std::size_t s = 0; s < count; ++s) {
+    const std::uint32_t bin = bin_of[order[s]];
+    grid.points[bin] += considered[s];
+    grid.treads[bin] += tread[s];
+    if (step[s] > 0.0f) grid.depth_steps[bin].push_back(step[s]);
   }
 }
 
@@ -138,9 +196,8 @@ double grid_sigma(GridMeasures& grid, std::size_t bin) {
     sigma = quantiles::at(differences, 0.5) / kSecondDifferenceMedian;
   }
   std::vector<float>& steps = grid.depth_steps[bin];
-  const std::size_t points = steps.size() + grid.treads[bin];
-  if (steps.size() >= kMinBinPoints &&
-      static_cast<double>(grid.treads[bin]) >= kTreadShare * static_cast<double>(points)) {
+  if (steps.size() >= kMinBinPoints && static_cast<double>(grid.treads[bin]) >=
+                                           kTreadShare * static_cast<double>(grid.points[bin])) {
     sigma = std::max(sigma, quantiles::at(steps, 0.5) / std::sqrt(12.0));
   }
   return sigma;
@@ -159,12 +216,14 @@ SurfaceNoise measure_surface_noise(const PointCloud& cloud, const LargeVector<Su
   grid.second_differences.resize(bins);
   grid.depth_steps.resize(bins);
   grid.treads.assign(bins, 0);
+  grid.points.assign(bins, 0);
   std::vector<std::uint32_t> bin_of(cloud.size());
   for (std::size_t i = 0; i < cloud.size(); ++i) {
     bin_of[i] = static_cast<std::uint32_t>(bin_index(binning, i, cloud));
     if (measured[i]) thicknesses[bin_of[i]].push_back(thickness[i]);
   }
   add_grid_measures(cloud, measured, bin_of, grid);
+  add_neighbour_steps(cloud, measured, bin_of, grid);
 
   std::vector<std::size_t> points(bins);
   std::vector<double> sigma(bins, -1.0);

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 #include <vector>
 
@@ -78,8 +79,9 @@ double visible_from_sensor(const PointCloud& cloud, bool carve = true) {
 TEST(OrganisedFrameSurfels, GridNeighboursFitTheQuantisedSurfaceNotItsSteps) {
   // Steps of 6 mm, 1.5 pixels deep, as a Kinect's at 1.2 m. Measured: the
   // median normal error on the grid 4.0 / 1.1 / 0.7 degrees at 30 / 60 / 75
-  // degrees of tilt, in space 4.6 / 2.2 / 2.1; kept from the camera on the
-  // grid 100 / 98.8 / 98.9 %, in space 100 / 92.6 / 85.3 %.
+  // degrees of tilt, in space 4.6 / 2.2 / 2.1; kept from the camera,
+  // uncarved, all of it either way (before the rounding was read as noise:
+  // on the grid 100 / 98.8 / 98.9 %, in space 100 / 92.6 / 85.3 %).
   for (const double tilt : {30.0, 60.0, 75.0}) {
     SCOPED_TRACE(tilt);
     PointCloud frame = tilted_wall(tilt, 0.006);
@@ -90,14 +92,15 @@ TEST(OrganisedFrameSurfels, GridNeighboursFitTheQuantisedSurfaceNotItsSteps) {
     EXPECT_LT(on_grid, 5.0);
     EXPECT_LT(on_grid, (tilt > 45.0 ? 0.6 : 0.95) * in_space);
     EXPECT_GE(visible_from_sensor(frame, false), 0.985);
-    if (tilt > 45.0) {
-      EXPECT_LT(visible_from_sensor(unorganised, false), 0.95);
-    }
-    // Carved, the grid's fit keeps every point. Space's tilted fit at 75
-    // degrees hides 15 % of the wall from the camera, beyond what carving
-    // takes on (kMaxBlockedShare), and is left as it was.
+    // Space's tilted fit hid 7 % of the wall from the camera at 60 degrees
+    // and 15 % at 75 while the steps' rounding went unread; read from the
+    // points' neighbours (surface_noise.hpp), the band covers the steps.
+    std::printf("tilt %.0f: kept uncarved on the grid %.4f, in space %.4f\n", tilt,
+                visible_from_sensor(frame, false), visible_from_sensor(unorganised, false));
+    EXPECT_GE(visible_from_sensor(unorganised, false), 0.985);
+    // Carved, both keep every point.
     EXPECT_GE(visible_from_sensor(frame), 0.999);
-    EXPECT_GE(visible_from_sensor(unorganised), visible_from_sensor(unorganised, false));
+    EXPECT_GE(visible_from_sensor(unorganised), 0.999);
   }
 }
 

@@ -21,10 +21,9 @@ PointCloud capture() {
   return read_cloud(std::string(OCCLUSION_SOURCE_DIR) + "/files/pcl/capture0001.pcd");
 }
 
-TEST(RealDepthFrame, TheCameraKeepsItsPointsAtEveryRange) {
-  const PointCloud frame = capture();
-  ASSERT_EQ(frame.size(), 249647u);
-  ASSERT_TRUE(frame.has_pixels());
+// The share of the frame's points -fscan keeps from its camera, per 0.5 m
+// of range, for the bands of 1,000 points or more.
+void expect_kept_at_every_range(const PointCloud& frame) {
   const SurfelEstimate estimate = estimate_surfels(frame, {});
   ScanOptions options;
   options.surfels = &estimate;
@@ -44,6 +43,24 @@ TEST(RealDepthFrame, TheCameraKeepsItsPointsAtEveryRange) {
     SCOPED_TRACE(band * kBand);
     EXPECT_GE(static_cast<double>(kept[band]), 0.995 * static_cast<double>(points[band]));
   }
+}
+
+TEST(RealDepthFrame, TheCameraKeepsItsPointsAtEveryRange) {
+  const PointCloud frame = capture();
+  ASSERT_EQ(frame.size(), 249647u);
+  ASSERT_TRUE(frame.has_pixels());
+  expect_kept_at_every_range(frame);
+}
+
+TEST(RealDepthFrame, AsABareArrayTheCameraStillKeepsThem) {
+  // Without its grid (a frame whose missing depths were dropped, as PCL's
+  // removeNaNFromPointCloud leaves it), its camera's pose kept: 61.9 % kept
+  // before the treads were read from the points' neighbours.
+  PointCloud frame = capture();
+  frame.pixels.clear();
+  frame.sensor.width = frame.sensor.height = 0;
+  ASSERT_TRUE(frame.sensor.single_view());
+  expect_kept_at_every_range(frame);
 }
 
 TEST(RealDepthFrame, TheNoiseReadIsTheKinectsRounding) {

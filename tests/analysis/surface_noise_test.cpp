@@ -136,5 +136,26 @@ TEST(SurfaceNoise, AFramesFlatTreadsCountAsTheirRounding) {
   }
 }
 
+// The frame as a bare array: no grid, the camera's pose kept (a PCD whose
+// VIEWPOINT says where it was seen from), as a frame is after its missing
+// depths were dropped.
+PointCloud bare(PointCloud frame) {
+  frame.pixels.clear();
+  frame.sensor.width = frame.sensor.height = 0;
+  frame.sensor.origin = Eigen::Vector3d(0.0, 0.0, 0.0);
+  frame.sensor.orientation = Eigen::Quaterniond(0.0, 1.0, 0.0, 0.0);  // PCL's grabbers write it
+  return frame;
+}
+
+TEST(SurfaceNoise, ABareFramesTreadsAreReadFromItsNeighbours) {
+  for (const NoiseBin& bin : filled_bins(bare(camera_wall(0.0, 0.02)))) {
+    EXPECT_GT(bin.sigma, 0.8 * 0.02 / std::sqrt(12.0)) << bin.range_lo;
+    EXPECT_LT(bin.sigma, 1.5 * 0.02 / std::sqrt(12.0)) << bin.range_lo;
+  }
+  for (const NoiseBin& bin : filled_bins(bare(camera_wall(0.0, 0.0)))) {
+    EXPECT_LT(bin.sigma, 1e-4) << bin.range_lo;
+  }
+}
+
 }  // namespace
 }  // namespace occlusion
