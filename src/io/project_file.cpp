@@ -1,0 +1,198 @@
+// NAME.project.json: the scans of a scene with their poses (scene_project.hpp).
+
+#include <algorithm>
+#include <cmath>
+#include <iterator>
+#include <stdexcept>
+
+#include "cloud_formats.hpp"
+#include "file_names.hpp"
+#include "occlusion/io/file_bytes.hpp"
+#include "occlusion/io/input_error.hpp"
+#include "occlusion/io/named_paths.hpp"
+#include "occlusion/io/scene_project.hpp"
+#include "occlusion/io/strict_json.hpp"
+
+namespace occlusion {
+namespace {
+
+constexpr const char* kScanFieldNames[] = {"path",    "pose",   "pose_file", "pose_format",
+                                           "station", "layout", "units"};
+constexpr const char* kScanFields = "path, pose, pose_file, pose_format, station, layout, units";
+
+bool is_scan_field(const std::string& key) {
+  return std::any_of(std::begin(kScanFieldNames), std::end(kScanFieldNames),
+                     [&](const char* name) { return key == name; });
+}
+
+struct Unit {
+  const char* name;
+  double metres;
+};
+constexpr Unit kUnits[] = {{"m", 1.0}, {"cm", 0.01}, {"mm", 0.001}};
+
+class ProjectParser {
+ public:
+  explicit ProjectParser(const std::string& path) : path_(path), text_(read_file_bytes(path)) {}
+
+  std::vector<SceneScan> parse() {
+    Json::Value root;
+    std::string errors;
+    if (!parse_strict_json(text_, StrictJson{}, root, errors)) {
+      throw InputError(path_, 0, "not a valid project file (JSON): " + errors);
+    }
+    if (!root.isObject()) fail(root, "a project file is a JSON object {\"scans\": [...]}");
+    for (const std::string& key : root.getMemberNames()) {
+      if (key != "scans") fail(root[key], "unknown field '" + key + "' (the field is scans)");
+    }
+    const Json::Value& scans = root["scans"];
+    if (!scans.isArray() || scans.empty()) {
+      fail(scans.isNull() ? root : scans,
+           "'scans' is a non-empty list of scans, each {\"path\": ..., \"pose\": ...}");
+    }
+    std::vector<SceneScan> result;
+    for (const Json::Value& scan : scans) result.push_back(parse_scan(scan));
+    return result;
+  }
+
+ private:
+  SceneScan parse_scan(const Json::Value& scan) const {
+    if (!scan.isObject()) fail(scan, "each scan is an object {\"path\": ..., \"pose\": ...}");
+    for (const std::string& key : scan.getMemberNames()) {
+      if (!is_scan_field(key)) {
+        fail(scan[key], "unknown field '" + key + "' (the fields are " + kScanFields + ")");
+      }
+    }
+    SceneScan result;
+    result.line = line_of(scan);
+    const std::string path = text(scan, "path");
+    if (path.empty()) fail(scan, "no 'path': the scan's file, relative to this file's folder");
+    if (is_project_file(path)) {
+      fail(scan["path"], "a project's scan cannot be a project: list its scans here");
+    }
+    result.path = resolve_named_path(path_, path);
+    result.station = text(scan, "station");
+    if (scan.isMember("station") && result.station.empty()) {
+      fail(scan["station"], "'station' is a non-empty name");
+    }
+    result.layout = text(scan, "layout");
+    if (!result.layout.empty() && !detail::uos_layout_from_name(result.layout)) {
+      fail(scan["layout"],
+           "unknown layout '" + result.layout + "' (3DTK's: " + detail::uos_layout_names() + ")");
+    }
+    if (!result.layout.empty() && detail::lower_extension(path) != ".3d") {
+      fail(scan["layout"], "'layout' is a 3DTK .3d file's; this scan is no .3d file");
+    }
+    read_units(scan, result);
+    read_pose(scan, result);
+    return result;
+  }
+
+  void read_units(const Json::Value& scan, SceneScan& result) const {
+    if (!scan.isMember("units")) return;
+    const std::string units = text(scan, "units");
+    for (const Unit& unit : kUnits) {
+      if (units == unit.name) {
+        if (detail::lower_extension(result.path) == ".3d" && unit.metres != 1.0) {
+          fail(scan["units"], "a 3DTK .3d file is in centimetres by its format; leave 'units' out");
+        }
+        result.metres_per_unit = unit.metres;
+        return;
+      }
+    }
+    fail(scan["units"], "'units' is the scan's coordinates' unit: m, cm or mm");
+  }
+
+  void read_pose(const Json::Value& scan, SceneScan& result) const {
+    const bool inline_pose = scan.isMember("pose");
+    const bool file_pose = scan.isMember("pose_file");
+    if (inline_pose && file_pose) {
+      fail(scan["pose_file"], "both 'pose' and 'pose_file' give a pose; keep one");
+    }
+    std::optional<PoseFormat> format;
+    if (scan.isMember("pose_format")) {
+      const std::string name = text(scan, "pose_format");
+      format = pose_format_from_name(name);
+      if (!format) {
+        fail(scan["pose_format"],
+             "unknown pose format '" + name + "' (the formats are " + pose_format_names() + ")");
+      }
+      if (!inline_pose && !file_pose) fail(scan["pose_format"], "'pose_format' without a pose");
+    }
+    if (file_pose) {
+      const std::string file = text(scan, "pose_file");
+      if (file.empty()) fail(scan["pose_file"], "'pose_file' is a path, relative to this file");
+      result.pose_path = resolve_named_path(path_, file);
+      result.pose = read_pose_file(result.pose_path, format);
+    }
+    if (inline_pose) result.pose = inline_numbers(scan["pose"], format);
+  }
+
+  // [[r0], [r1], [r2], [r3]] is a matrix in rows; a flat list needs its format.
+  ScanPose inline_numbers(const Json::Value& pose, std::optional<PoseFormat> format) const {
+    const char* help =
+        "'pose' is a 4 x 4 matrix in rows [[...], [...], [...], [...]], or a flat list of "
+        "numbers with its 'pose_format' (tum: tx ty tz qx qy qz qw; 3dtk: tx ty tz in cm, ax ay az "
+        "in degrees)";
+    if (!pose.isArray() || pose.empty()) fail(pose, help);
+    std::vector<double> numbers;
+    const bool rows = pose[0].isArray();
+    if (rows) {
+      if (format && *format != PoseFormat::kMatrix) fail(pose, help);
+      format = PoseFormat::kMatrix;
+      if (pose.size() != 4) fail(pose, help);
+      for (const Json::Value& row : pose) {
+        if (!row.isArray() || row.size() != 4) fail(row, help);
+        for (const Json::Value& x : row) numbers.push_back(number(x));
+      }
+    } else {
+      if (!format) fail(pose, std::string(help) + "; this list has no 'pose_format'");
+      for (const Json::Value& x : pose) numbers.push_back(number(x));
+    }
+    try {
+      return pose_from_numbers(numbers, *format);
+    } catch (const std::invalid_argument& error) {
+      fail(pose, std::string("'pose': ") + error.what());
+    }
+  }
+
+  double number(const Json::Value& value) const {
+    if (!value.isNumeric() || !std::isfinite(value.asDouble())) {
+      fail(value, "a pose holds finite numbers only");
+    }
+    return value.asDouble();
+  }
+
+  std::string text(const Json::Value& scan, const char* key) const {
+    if (!scan.isMember(key)) return {};
+    const Json::Value& value = scan[key];
+    if (!value.isString()) fail(value, std::string("'") + key + "' is a string");
+    return value.asString();
+  }
+
+  std::size_t line_of(const Json::Value& value) const {
+    const auto offset =
+        static_cast<std::size_t>(std::max<std::ptrdiff_t>(0, value.getOffsetStart()));
+    const auto end = text_.begin() + static_cast<std::ptrdiff_t>(std::min(offset, text_.size()));
+    return 1 + static_cast<std::size_t>(std::count(text_.begin(), end, '\n'));
+  }
+
+  [[noreturn]] void fail(const Json::Value& value, const std::string& reason) const {
+    throw InputError(path_, line_of(value), reason);
+  }
+
+  const std::string& path_;
+  std::string text_;
+};
+
+}  // namespace
+
+bool is_project_file(const std::string& path) {
+  return detail::has_suffix(path, kProjectFileSuffix);
+}
+
+std::vector<SceneScan> read_project_file(const std::string& path) {
+  return ProjectParser(path).parse();
+}
+
+}  // namespace occlusion
