@@ -6,6 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "io/cloud_test_support.hpp"
@@ -176,6 +177,24 @@ TEST(PoseFile, EachFormatRoundTrips) {
         expect_same_pose(pose_from_numbers(pose_numbers(pose), format).scan_to_scene, transform);
       }
     }
+  }
+}
+
+// docs/formats.md's example, a quarter turn about z then 10 m along x, in
+// each format.
+TEST(PoseFile, TheDocumentedExampleIsOnePoseInEveryFormat) {
+  Eigen::Isometry3d expected = Eigen::Isometry3d::Identity();
+  expected.linear() << 0, -1, 0, 1, 0, 0, 0, 0, 1;
+  expected.translation() = Eigen::Vector3d(10, 0, 0);
+  const std::vector<std::pair<std::vector<double>, PoseFormat>> examples = {
+      {{0, -1, 0, 10, 1, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}, PoseFormat::kMatrix},
+      {{10, 0, 0, 0, 0, 0.7071068, 0.7071068}, PoseFormat::kTum},
+      {{0, 0, 1000, 0, -90, 0}, PoseFormat::k3dtk}};
+  for (const auto& [numbers, format] : examples) {
+    const Eigen::Isometry3d pose = pose_from_numbers(numbers, format).scan_to_scene;
+    EXPECT_LT((pose.matrix() - expected.matrix()).cwiseAbs().maxCoeff(), 1e-7)
+        << pose_format_name(format) << "\n"
+        << pose.matrix();
   }
 }
 
