@@ -7,6 +7,7 @@
 
 #include "cloud_formats.hpp"
 #include "file_names.hpp"
+#include "json_line.hpp"
 #include "occlusion/io/file_bytes.hpp"
 #include "occlusion/io/input_error.hpp"
 #include "occlusion/io/named_paths.hpp"
@@ -170,12 +171,7 @@ class ProjectParser {
     return value.asString();
   }
 
-  std::size_t line_of(const Json::Value& value) const {
-    const auto offset =
-        static_cast<std::size_t>(std::max<std::ptrdiff_t>(0, value.getOffsetStart()));
-    const auto end = text_.begin() + static_cast<std::ptrdiff_t>(std::min(offset, text_.size()));
-    return 1 + static_cast<std::size_t>(std::count(text_.begin(), end, '\n'));
-  }
+  std::size_t line_of(const Json::Value& value) const { return detail::json_line(text_, value); }
 
   [[noreturn]] void fail(const Json::Value& value, const std::string& reason) const {
     throw InputError(path_, line_of(value), reason);
