@@ -1,13 +1,17 @@
 // NAME.project.json: the scans of a scene with their poses (scene_project.hpp).
 
+#include <json/writer.h>
+
 #include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <ostream>
 #include <stdexcept>
 
 #include "cloud_formats.hpp"
 #include "file_names.hpp"
 #include "json_line.hpp"
+#include "occlusion/io/atomic_file.hpp"
 #include "occlusion/io/file_bytes.hpp"
 #include "occlusion/io/input_error.hpp"
 #include "occlusion/io/named_paths.hpp"
@@ -71,6 +75,7 @@ class ProjectParser {
     if (is_project_file(path)) {
       fail(scan["path"], "a project's scan cannot be a project: list its scans here");
     }
+    result.named_path = path;
     result.path = resolve_named_path(path_, path);
     result.station = text(scan, "station");
     if (scan.isMember("station") && result.station.empty()) {
@@ -123,6 +128,7 @@ class ProjectParser {
     if (file_pose) {
       const std::string file = text(scan, "pose_file");
       if (file.empty()) fail(scan["pose_file"], "'pose_file' is a path, relative to this file");
+      result.named_pose_file = file;
       result.pose_path = resolve_named_path(path_, file);
       result.pose = read_pose_file(result.pose_path, format);
     }
@@ -181,7 +187,53 @@ class ProjectParser {
   std::string text_;
 };
 
+std::string unit_name(double metres_per_unit) {
+  for (const Unit& unit : kUnits) {
+    if (unit.metres == metres_per_unit) return unit.name;
+  }
+  throw std::invalid_argument("write_project_file: a scan's unit is " +
+                              std::to_string(metres_per_unit) + " m, not m, cm or mm");
+}
+
+Json::Value scan_json(const SceneScan& scan) {
+  Json::Value json(Json::objectValue);
+  json["path"] = scan.named_path.empty() ? scan.path : scan.named_path;
+  if (scan.pose && !scan.pose_path.empty()) {
+    json["pose_file"] = scan.named_pose_file.empty() ? scan.pose_path : scan.named_pose_file;
+    json["pose_format"] = std::string(pose_format_name(scan.pose->format));
+  } else if (scan.pose) {
+    const std::vector<double> numbers = pose_numbers(*scan.pose);
+    Json::Value pose(Json::arrayValue);
+    if (scan.pose->format == PoseFormat::kMatrix) {
+      for (std::size_t r = 0; r < 4; ++r) {
+        Json::Value row(Json::arrayValue);
+        for (std::size_t c = 0; c < 4; ++c) row.append(numbers[4 * r + c]);
+        pose.append(row);
+      }
+    } else {
+      for (const double x : numbers) pose.append(x);
+      json["pose_format"] = std::string(pose_format_name(scan.pose->format));
+    }
+    json["pose"] = pose;
+  }
+  if (!scan.station.empty()) json["station"] = scan.station;
+  if (!scan.layout.empty()) json["layout"] = scan.layout;
+  if (scan.metres_per_unit != 1.0) json["units"] = unit_name(scan.metres_per_unit);
+  return json;
+}
+
 }  // namespace
+
+void write_project_file(const std::string& path, const std::vector<SceneScan>& scans) {
+  Json::Value root(Json::objectValue);
+  Json::Value& list = root["scans"] = Json::Value(Json::arrayValue);
+  for (const SceneScan& scan : scans) list.append(scan_json(scan));
+  Json::StreamWriterBuilder writer;
+  writer["indentation"] = "  ";
+  writer["precision"] = 17;
+  const std::string text = Json::writeString(writer, root) + "\n";
+  write_file_atomically(path, [&](std::ostream& out) { out << text; });
+}
 
 bool is_project_file(const std::string& path) {
   return detail::has_suffix(path, kProjectFileSuffix);

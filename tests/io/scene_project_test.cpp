@@ -190,5 +190,49 @@ TEST(SceneProject, ThreeDtkLayoutAndPoseFile) {
   expect_near(station_position(scene, 0), {2, 0, 0}, 1e-12);
 }
 
+// A project written back (as a registration writes refined poses) reads as
+// the same scans, each pose in the format and place the user gave it.
+TEST(SceneProject, WrittenBackItReadsTheSame) {
+  testing::ScratchDirectory dir;
+  testing::write_text(dir.file("a.txt"), "1 2 3\n");
+  testing::write_text(dir.file("scan001.3d"), "0 0 100 7.5\n");
+  testing::write_text(dir.file("b.pose"), "1 2 3\n10 20 30\n");
+  testing::write_text(dir.file("in.project.json"),
+                      R"({"scans": [
+        {"path": "a.txt", "pose": [[0,-1,0,1.5],[1,0,0,0],[0,0,1,0],[0,0,0,1]], "station": "A"},
+        {"path": "a.txt", "pose": [7, 1, 2, 3, 0, 0, 0.6, 0.8], "pose_format": "tum",
+         "units": "mm", "station": "B"},
+        {"path": "a.txt", "pose_file": "b.pose", "station": "C"},
+        {"path": "scan001.3d", "layout": "uosr"}]})");
+  const std::vector<SceneScan> scans = read_project_file(dir.file("in.project.json"));
+  write_project_file(dir.file("out.project.json"), scans);
+  const std::vector<SceneScan> back = read_project_file(dir.file("out.project.json"));
+  ASSERT_EQ(back.size(), scans.size());
+  for (std::size_t i = 0; i < scans.size(); ++i) {
+    SCOPED_TRACE(i);
+    EXPECT_EQ(back[i].path, scans[i].path);
+    EXPECT_EQ(back[i].named_path, scans[i].named_path);
+    EXPECT_EQ(back[i].pose_path, scans[i].pose_path);
+    EXPECT_EQ(back[i].station, scans[i].station);
+    EXPECT_EQ(back[i].layout, scans[i].layout);
+    EXPECT_EQ(back[i].metres_per_unit, scans[i].metres_per_unit);
+    ASSERT_EQ(back[i].pose.has_value(), scans[i].pose.has_value());
+    if (!scans[i].pose) continue;
+    EXPECT_EQ(back[i].pose->format, scans[i].pose->format);
+    EXPECT_EQ(back[i].pose->timestamp, scans[i].pose->timestamp);
+    EXPECT_LT((back[i].pose->scan_to_scene.matrix() - scans[i].pose->scan_to_scene.matrix())
+                  .cwiseAbs()
+                  .maxCoeff(),
+              1e-14);
+  }
+  EXPECT_EQ(scans[1].pose->timestamp, 7.0);
+  const PointCloud before = read_cloud(dir.file("in.project.json"));
+  const PointCloud after = read_cloud(dir.file("out.project.json"));
+  ASSERT_EQ(after.size(), before.size());
+  for (std::size_t i = 0; i < before.size(); ++i) {
+    EXPECT_EQ(after.original_position(i), before.original_position(i));
+  }
+}
+
 }  // namespace
 }  // namespace occlusion

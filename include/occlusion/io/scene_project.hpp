@@ -39,6 +39,10 @@ struct SceneScan {
   std::string layout;            // a 3DTK .3d file's uos layout ("" = x y z)
   double metres_per_unit = 1.0;  // the scan's coordinates' unit ("units")
   std::size_t line = 0;          // where the project file lists it (0: not from a file)
+  // `path` and `pose_file` as the project file names them, so that a project
+  // written back names them so too ("" = not from a file: the resolved path).
+  std::string named_path;
+  std::string named_pose_file;
 };
 
 // The scans of a project file, in order. InputError naming the file, and the
@@ -47,6 +51,15 @@ struct SceneScan {
 // pose_file refuses, a pose given twice (inline and as a file), an unknown
 // pose format, layout or unit, or no scans.
 std::vector<SceneScan> read_project_file(const std::string& path);
+
+// The scans as a project file at `path`, which read_project_file reads back as
+// the same scans: each scan's path and pose file as named (else as resolved),
+// its pose inline in its format (a matrix in rows; TUM and 3DTK numbers with
+// their pose_format) unless it came from a pose file, which is then named
+// with its format (the caller writes the file itself: write_pose_file), its
+// station, layout and units. So a registration that refines poses writes them
+// back as the user gave them. Written atomically; OutputError if it cannot be.
+void write_project_file(const std::string& path, const std::vector<SceneScan>& scans);
 
 // The scans as one cloud. `source` names the scene in errors (the project
 // file, or the first input). Per scan: its points at `pose` (its own frame
