@@ -48,7 +48,12 @@ class SceneBuilder {
   void add(const SceneScan& scan, std::size_t index) {
     CloudReadReport scan_report;
     CloudReadOptions options = options_;
-    if (options_.max_points != 0) options.max_points = options_.max_points - scene_.size();
+    if (options_.max_points != 0) {
+      // The scans so far hold the most allowed: any point more is one too many
+      // (and 0 left would read as no limit).
+      if (scene_.size() >= options_.max_points) throw detail::PointLimitReached{};
+      options.max_points = options_.max_points - scene_.size();
+    }
     PointCloud cloud;
     try {
       cloud = read_scan(scan, options, scan_report);

@@ -136,6 +136,23 @@ TEST(SceneProject, FarPosesKeepTheirPrecision) {
   expect_near(station_position(scene, 0), {500000.25, 5400000.5, 100}, 1e-9);
 }
 
+// max_points bounds the scene, not each scan: two scans of 2 points hold 4.
+TEST(SceneProject, MaxPointsCountsTheWholeScene) {
+  testing::ScratchDirectory dir;
+  testing::write_text(dir.file("two.txt"), "1 2 3\n4 5 6\n");
+  testing::write_text(dir.file("s.project.json"),
+                      R"({"scans": [
+                        {"path": "two.txt", "station": "a", "pose": [[1,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,1]]},
+                        {"path": "two.txt", "station": "b", "pose": [[1,0,0,1],[0,1,0,0],[0,0,1,0],[0,0,0,1]]}]})");
+  CloudReadOptions options;
+  for (const std::size_t limit : {1u, 2u, 3u}) {
+    options.max_points = limit;
+    EXPECT_THROW(read_cloud(dir.file("s.project.json"), options), TooManyPoints) << limit;
+  }
+  options.max_points = 4;
+  EXPECT_EQ(read_cloud(dir.file("s.project.json"), options).size(), 4u);
+}
+
 TEST(SceneProject, AScanThatCannotBePlacedIsRefused) {
   testing::ScratchDirectory dir;
   testing::write_text(dir.file("plain.txt"), "1 2 3\n");
