@@ -1,11 +1,16 @@
-// bench_stations [--points-per-station M] [--stations N,N,...] [--triangles N] [--threads T]
-//                [--seed S] [--repeat N] [--cli PATH] [--no-embree] [--full]
+// bench_stations [--points-per-station M] [--stations N,N,...] [--layout rooms|hall]
+//                [--triangles N] [--threads T] [--seed S] [--repeat N] [--cli PATH]
+//                [--no-embree] [--full]
 //
-// -fscan over multi-station scenes (issue 42): a building of N closed rooms in
-// a row (the generated furnished room, 8 x 6 x 3 m, 0.5 m apart), each
-// scanned from one station at its centre 1.5 m up, M points a station (the
-// room's surfaces sampled once, the same samples in every room), written as
-// one binary PLY with its stations and each point's station. For each N,
+// -fscan over multi-station scenes (issue 42). Layout `rooms` (the default):
+// a building of N closed rooms in a row (the generated furnished room,
+// 8 x 6 x 3 m, 0.5 m apart), each scanned from one station at its centre
+// 1.5 m up, M points a station (the room's surfaces sampled once, the same
+// samples in every room). Layout `hall`: one room sampled at N x M points,
+// the N stations on its long axis 1.5 m up (every station sees most of the
+// room: the rays are long), each point given to its nearest station. The
+// scene is written as one binary PLY with its stations and each point's
+// station. For each N,
 // `occlusion -fscan` (discs, its defaults: the cloud's stations are the
 // viewpoints) and `embree_job -fscan --stations` (the same surfels, rays and
 // stations on Embree) run in turn as whole processes: wall time, the trace,
@@ -19,6 +24,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -36,15 +42,16 @@ using namespace occlusion::bench;
 namespace fs = std::filesystem;
 
 constexpr const char* kUsage =
-    "usage: bench_stations [--points-per-station M] [--stations N,N,...] [--triangles N]\n"
-    "                      [--threads T] [--seed S] [--repeat N] [--cli PATH] [--no-embree]\n"
-    "                      [--full]\n";
+    "usage: bench_stations [--points-per-station M] [--stations N,N,...] [--layout rooms|hall]\n"
+    "                      [--triangles N] [--threads T] [--seed S] [--repeat N] [--cli PATH]\n"
+    "                      [--no-embree] [--full]\n";
 
 constexpr double kRoomGap = 0.5;  // between neighbouring rooms, metres
 
 struct Options {
   std::size_t points_per_station = 100'000;
   std::vector<std::size_t> stations{1, 2, 5, 10, 20};
+  std::string layout = "rooms";
   std::size_t triangles = 20'000;
   unsigned threads = 2;
   std::uint64_t seed = 1;
@@ -77,6 +84,11 @@ Options parse(int argc, char** argv) {
     } else if (arg == "--stations") {
       o.stations = parse_list(arg, flag_value(argc, argv, i));
       stations_given = true;
+    } else if (arg == "--layout") {
+      o.layout = flag_value(argc, argv, i);
+      if (o.layout != "rooms" && o.layout != "hall") {
+        throw UsageError("--layout must be rooms or hall, got '" + o.layout + "'");
+      }
     } else if (arg == "--triangles") {
       o.triangles = parse_unsigned(arg, flag_value(argc, argv, i));
     } else if (arg == "--threads") {
@@ -121,6 +133,44 @@ PointCloud building(const PointCloud& room, std::size_t rooms) {
     station.frame.origin =
         Eigen::Vector3d(r * (kRoomSize.x() + kRoomGap) + kRoomSize.x() / 2, kRoomSize.y() / 2, 1.5);
     cloud.stations.push_back(station);
+  }
+  return cloud;
+}
+
+// `count` of the cloud's points spread evenly over its order (sample_mesh
+// gives them face by face: a prefix would drop the last faces).
+PointCloud evenly(const PointCloud& cloud, std::size_t count) {
+  PointCloud kept;
+  kept.positions.reserve(count);
+  for (std::size_t k = 0; k < count; ++k) {
+    kept.positions.push_back(cloud.positions[k * cloud.size() / count]);
+  }
+  return kept;
+}
+
+// One room of N x M samples, the N stations along its long axis, each point
+// with its nearest station.
+PointCloud hall(const PointCloud& samples, std::size_t stations) {
+  PointCloud cloud = samples;
+  for (std::size_t k = 0; k < stations; ++k) {
+    Station station;
+    station.name = "hall_" + std::to_string(k + 1);
+    const double along = (static_cast<double>(k) + 0.5) / static_cast<double>(stations);
+    station.frame.origin =
+        Eigen::Vector3d(1.0 + along * (kRoomSize.x() - 2.0), kRoomSize.y() / 2, 1.5);
+    cloud.stations.push_back(station);
+  }
+  cloud.station_ids.resize(cloud.size());
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    const Eigen::Vector3d p = cloud.positions[i].cast<double>();
+    double nearest = std::numeric_limits<double>::infinity();
+    for (std::size_t k = 0; k < stations; ++k) {
+      const double d = (p - cloud.stations[k].frame.origin).squaredNorm();
+      if (d < nearest) {
+        nearest = d;
+        cloud.station_ids[i] = static_cast<std::int32_t>(k);
+      }
+    }
   }
   return cloud;
 }
@@ -176,9 +226,10 @@ int run(const Options& o) {
     {
       // Generated, written and dropped before the programs run (child_process.hpp on ru_maxrss).
       const GeneratedRoom room = generate_room(o.triangles, o.seed);
-      PointCloud samples = sample_point_cloud(room.mesh, o.points_per_station, o.seed);
-      samples.positions.resize(o.points_per_station);
-      const PointCloud cloud = building(samples, n);
+      const std::size_t sampled =
+          o.layout == "hall" ? n * o.points_per_station : o.points_per_station;
+      const PointCloud samples = evenly(sample_point_cloud(room.mesh, sampled, o.seed), sampled);
+      const PointCloud cloud = o.layout == "hall" ? hall(samples, n) : building(samples, n);
       row.points = cloud.size();
       write_cloud(path, cloud, {}, CloudFormat::kPlyBinary);
     }
