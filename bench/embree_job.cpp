@@ -2,8 +2,8 @@
 //            [--out DIR]
 // embree_job -poc CLOUD [--num-vp N] [--num-rays-per-vp N] [--primitive disc|sphere]
 //            [--point-radius R] [--seed S] [--threads T] [--out DIR]
-// embree_job -fscan CLOUD [--pattern N] [--primitive disc|sphere] [--point-radius R]
-//            [--threads T] [--out DIR]
+// embree_job -fscan CLOUD [--pattern N | --stations] [--primitive disc|sphere]
+//            [--point-radius R] [--threads T] [--out DIR]
 //
 // `occlusion -moc`, `-poc` and `-fscan` as a program built on Intel Embree
 // would do them: the same readers, viewpoints, samples, surfels (points are discs
@@ -56,14 +56,15 @@ constexpr const char* kUsage =
     "                  [--threads T] [--out DIR]\n"
     "       embree_job -poc CLOUD [--num-vp N] [--num-rays-per-vp N] [--primitive disc|sphere]\n"
     "                  [--point-radius R] [--seed S] [--threads T] [--out DIR]\n"
-    "       embree_job -fscan CLOUD [--pattern N] [--primitive disc|sphere] [--point-radius R]\n"
-    "                  [--threads T] [--out DIR]\n";
+    "       embree_job -fscan CLOUD [--pattern N | --stations] [--primitive disc|sphere]\n"
+    "                  [--point-radius R] [--threads T] [--out DIR]\n";
 
 // The CLI's defaults for the settings the benches pass.
 struct Options {
   std::string job;  // moc, poc or fscan
   std::string input;
   int pattern = 7;
+  bool stations = false;  // -fscan from the cloud's stations (the CLI's default when it has any)
   double samples_per_unit_area = 100.0;
   std::size_t num_vp = 9;
   std::size_t num_rays_per_vp = 30'000;
@@ -103,6 +104,8 @@ Options parse(int argc, char** argv) {
     if (arg == "--pattern" && o.job != "poc") {
       o.pattern = static_cast<int>(parse_unsigned(arg, flag_value(argc, argv, i)));
       if (o.pattern < 1 || o.pattern > 7) throw UsageError("--pattern must be 1..7");
+    } else if (arg == "--stations" && o.job == "fscan") {
+      o.stations = true;
     } else if (arg == "--samples-per-unit-area" && o.job == "moc") {
       o.samples_per_unit_area = parse_positive(arg, flag_value(argc, argv, i));
     } else if (arg == "--num-vp" && o.job == "poc") {
@@ -309,7 +312,13 @@ Json::Value run_poc(const Options& o, Stages& stages) {
 Json::Value run_fscan(const Options& o, Stages& stages) {
   const CloudScene scene = load_cloud_scene(o, stages);
   const PointCloud& cloud = scene.cloud;
-  const std::vector<Eigen::Vector3d> viewpoints = pattern_viewpoints(o.pattern, scene.lo, scene.hi);
+  std::vector<Eigen::Vector3d> viewpoints;
+  if (o.stations) {
+    for (const Station& station : cloud.stations) viewpoints.push_back(station.frame.origin);
+    if (viewpoints.empty()) throw UsageError("--stations: " + o.input + " records no station");
+  } else {
+    viewpoints = pattern_viewpoints(o.pattern, scene.lo, scene.hi);
+  }
   ScanOptions options;
   options.point_radius = o.point_radius;
   const std::size_t points = cloud.size();

@@ -164,6 +164,7 @@ ScanResult scan_cloud(const PointCloud& cloud, const std::vector<Eigen::Vector3d
   const std::size_t ray_count = points * viewpoints.size();
   result.visible_count.assign(points, 0);
   result.seen_by_viewpoint.assign(viewpoints.size(), 0);
+  result.first_viewpoint.assign(points, -1);
   const std::size_t block_capacity = std::min(points, kRaysPerBlock);
   std::vector<Ray> rays(block_capacity);
   std::vector<std::uint32_t> inside(block_capacity);
@@ -190,6 +191,9 @@ ScanResult scan_cloud(const PointCloud& cloud, const std::vector<Eigen::Vector3d
       tracer.trace(viewpoint, inside.data(), count, seen.data(), rays.data(), blocked.data());
       for (std::size_t k = 0; k < count; ++k) {
         if (!seen[k]) continue;
+        if (result.visible_count[inside[k]] == 0) {
+          result.first_viewpoint[inside[k]] = static_cast<std::int32_t>(v + 1);
+        }
         ++result.visible_count[inside[k]];
         ++result.seen_by_viewpoint[v];
       }
@@ -200,9 +204,15 @@ ScanResult scan_cloud(const PointCloud& cloud, const std::vector<Eigen::Vector3d
   }
   result.trace_seconds = seconds_since(trace_start);
 
-  result.visible_points = static_cast<std::size_t>(
-      std::count_if(result.visible_count.begin(), result.visible_count.end(),
-                    [](std::uint16_t count) { return count > 0; }));
+  result.only_by_viewpoint.assign(viewpoints.size(), 0);
+  for (std::size_t point = 0; point < points; ++point) {
+    const std::uint16_t count = result.visible_count[point];
+    if (count > 0) ++result.visible_points;
+    if (count > 1) ++result.seen_by_several;
+    if (count == 1) {
+      ++result.only_by_viewpoint[static_cast<std::size_t>(result.first_viewpoint[point] - 1)];
+    }
+  }
   result.visible_fraction =
       static_cast<double>(result.visible_points) / static_cast<double>(points);
   progress("done", 1.0);

@@ -475,14 +475,6 @@ void write_candidates(const std::string& path, const PlanReport& report) {
   write_csv(path, table);
 }
 
-ScalarField first_station_field(const PlanReport& report) {
-  ScalarField field{kFirstStationField, {}, true};
-  field.values.reserve(report.selection.first_rank.size());
-  for (const auto rank : report.selection.first_rank)
-    field.values.push_back(static_cast<float>(rank));
-  return field;
-}
-
 Json::Value positions_json(const std::vector<Eigen::Vector3d>& positions) {
   Json::Value list(Json::arrayValue);
   for (const auto& p : positions) list.append(to_json(p));
@@ -624,9 +616,11 @@ PlanReport run_plan(const PlanRequest& request, const Progress& progress) {
     if (report.targets == "samples") {
       PointCloud samples;
       for (const auto& p : report.sample_positions) samples.positions.push_back(p.cast<float>());
-      write_cloud(outputs.add(targets_path), samples, {first_station_field(report)});
+      write_cloud(outputs.add(targets_path), samples,
+                  {first_station_field(report.selection.first_rank)});
     } else {
-      write_cloud(outputs.add(targets_path), cloud, {first_station_field(report)});
+      write_cloud(outputs.add(targets_path), cloud,
+                  {first_station_field(report.selection.first_rank)});
     }
     job::commit_outputs(outputs, report, json_path,
                         {json_path, curve_path, candidates_path, targets_path}, start);

@@ -4,6 +4,7 @@
 
 #include "job_support.hpp"
 #include "occlusion/app/errors.hpp"
+#include "occlusion/app/first_station_field.hpp"
 #include "occlusion/app/json_output.hpp"
 #include "occlusion/app/memory_budget.hpp"
 #include "occlusion/app/work_budget.hpp"
@@ -137,7 +138,8 @@ ScanReport run_scan(const ScanRequest& request, const Progress& progress) {
     }
     OutputSet outputs;
     write_cloud(outputs.add(scanned_path), cloud.subset(seen_points(report.result)));
-    write_cloud(outputs.add(full_path), cloud, {visible_count});
+    write_cloud(outputs.add(full_path), cloud,
+                {visible_count, first_station_field(report.result.first_viewpoint)});
     job::commit_outputs(outputs, report, json_path, {json_path, scanned_path, full_path}, start);
   }
   report.total_seconds = job::seconds_since(start);
@@ -165,8 +167,16 @@ Json::Value to_json(const ScanReport& report) {
         job::viewpoint_json(report.viewpoint_names.at(v), report.viewpoint_positions[v]);
     entry["visible_points"] = Json::UInt64(r.seen_by_viewpoint.at(v));
     entry["visible_fraction"] = static_cast<double>(r.seen_by_viewpoint[v]) / points;
+    entry["only_points"] = Json::UInt64(r.only_by_viewpoint.at(v));
+    entry["only_fraction"] = static_cast<double>(r.only_by_viewpoint[v]) / points;
     viewpoints.append(entry);
   }
+  // With the viewpoints' only_fraction these add up to 1.
+  const std::size_t unseen = r.visible_count.size() - r.visible_points;
+  json["seen_by_several_points"] = Json::UInt64(r.seen_by_several);
+  json["seen_by_several_fraction"] = static_cast<double>(r.seen_by_several) / points;
+  json["seen_by_none_points"] = Json::UInt64(unseen);
+  json["seen_by_none_fraction"] = static_cast<double>(unseen) / points;
   json["viewpoints"] = viewpoints;
   json["viewpoint_source"] = report.viewpoint_source;
   json["station_field_of_view"] = job::station_field_of_view_json(

@@ -23,7 +23,8 @@ const Keys<ScanRequest>& scan_keys() {
        threads_key(&R::threads), max_memory_key(&R::max_memory_mb), max_work_key(&R::max_work),
        out_key(&R::out,
                "write CLOUD.scan.FMT (the seen points, all attributes), CLOUD.scan_full.FMT "
-               "(every point + visible_count) and CLOUD.fscan.json")},
+               "(every point + visible_count and first_station: the first viewpoint that sees it, "
+               "from 1, -1 for none) and CLOUD.fscan.json")},
   });
   return keys;
 }

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cstdio>
 
 #include "commands.hpp"
@@ -15,11 +16,18 @@ void print_human(const ScanReport& report) {
   std::printf("  visible fraction  %.4f   (%zu of %zu points)\n", r.visible_fraction,
               r.visible_points, r.visible_count.size());
   print_viewpoints_and_filter(report.viewpoint_source, report.station_filter);
+  const double points = static_cast<double>(std::max<std::size_t>(r.visible_count.size(), 1));
   for (std::size_t v = 0; v < report.viewpoint_positions.size(); ++v) {
     const auto& p = report.viewpoint_positions[v];
-    std::printf("    %-12s (%8.3f, %8.3f, %8.3f)  sees %zu points\n",
-                report.viewpoint_names[v].c_str(), p.x(), p.y(), p.z(), r.seen_by_viewpoint[v]);
+    std::printf("    %-12s (%8.3f, %8.3f, %8.3f)  sees %zu points (%.4f), only it %zu (%.4f)\n",
+                report.viewpoint_names[v].c_str(), p.x(), p.y(), p.z(), r.seen_by_viewpoint[v],
+                static_cast<double>(r.seen_by_viewpoint[v]) / points, r.only_by_viewpoint[v],
+                static_cast<double>(r.only_by_viewpoint[v]) / points);
   }
+  const std::size_t unseen = r.visible_count.size() - r.visible_points;
+  std::printf("  seen by several   %.4f   (%zu points); by none %.4f   (%zu points)\n",
+              static_cast<double>(r.seen_by_several) / points, r.seen_by_several,
+              static_cast<double>(unseen) / points, unseen);
   if (!report.classes.empty()) {
     std::printf("  classes:%*s points   visible\n", 16, "");
     for (const auto& c : report.classes) {

@@ -224,6 +224,13 @@ JobResult scan(const py::handle& source, const py::object& labels, const py::obj
   result.arrays["visible_count"] =
       to_numpy<std::uint16_t>(std::vector<std::uint16_t>(report.result.visible_count));
   result.arrays["mask"] = mask;
+  // plan's name for the number (from 1) of the first station that sees each point, -1 none.
+  result.arrays["covered_by"] =
+      to_numpy<std::int32_t>(std::vector<std::int32_t>(report.result.first_viewpoint));
+  result.arrays["only_by_viewpoint"] = to_numpy<std::uint64_t>(std::vector<std::uint64_t>(
+      report.result.only_by_viewpoint.begin(), report.result.only_by_viewpoint.end()));
+  result.arrays["seen_by_viewpoint"] = to_numpy<std::uint64_t>(std::vector<std::uint64_t>(
+      report.result.seen_by_viewpoint.begin(), report.result.seen_by_viewpoint.end()));
   return result;
 }
 

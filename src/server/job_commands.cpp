@@ -42,9 +42,13 @@ void escape_frames(CommandContext& context, const CloudOcclusionReport& report) 
   }
 }
 
+// Per point: how many viewpoints see it, and the number (from 1, in the
+// report's viewpoints) of the first that does, -1 for none (plan's covered_by).
 void scan_frames(CommandContext& context, const ScanReport& report) {
   const auto& count = report.result.visible_count;
   context.send(make_frame(FrameKind::kVisibleCount, count.data(), count.size(), 1));
+  const auto& first = report.result.first_viewpoint;
+  context.send(make_frame(FrameKind::kCoveredBy, first.data(), first.size(), 1));
 }
 
 // Per target (a cloud's point, a mesh's sample): the rank of the first

@@ -84,3 +84,50 @@ def _cloud(positions, station_ids, stations):
     cloud.station_ids = station_ids
     cloud.stations = stations
     return cloud
+
+
+def plate_before_wall():
+    """The wall x = 0 every 2 cm, a plate x = 1 around (1, 0, 1), stations A
+    (2, -1, 1) and B (2, 1, 1): the plate's shadow from A is y, z in
+    [0.6, 1.4] on the wall, from B y in [-1.4, -0.6] (the wall is twice as far
+    as the plate), and a patch at x = 0.9 behind the plate is hidden from both."""
+    ys = -1.59 + 0.02 * np.arange(160)
+    zs = 0.01 + 0.02 * np.arange(100)
+    wall = np.array([[0.0, y, z] for y in ys for z in zs], np.float32)
+    plate = np.array([[1.0, -0.2 + 0.02 * i, 0.8 + 0.02 * j]
+                      for i in range(21) for j in range(21)], np.float32)
+    patch = np.array([[0.9, -0.04 + 0.02 * i, 0.96 + 0.02 * j]
+                      for i in range(5) for j in range(5)], np.float32)
+    positions = np.vstack([wall, plate, patch])
+    stations = [{"name": "A", "origin": (2.0, -1.0, 1.0)},
+                {"name": "B", "origin": (2.0, 1.0, 1.0)}]
+    return positions, len(wall), stations
+
+
+def test_scan_answers_per_station():
+    positions, walls, stations = plate_before_wall()
+    cloud = _cloud(positions, None, stations)
+    result = occlusion.scan(cloud, primitive="sphere", point_radius=0.02)
+    count, first = result.visible_count, result.covered_by
+    assert first.dtype == np.int32 and first.shape == (len(positions),)
+    assert [v["name"] for v in result.viewpoints] == ["A", "B"]
+    # The arrays' marginals are the per-station figures.
+    for v in range(2):
+        assert result.only_by_viewpoint[v] == np.sum((count == 1) & (first == v + 1))
+        assert result.viewpoints[v]["only_points"] == result.only_by_viewpoint[v]
+    assert result.seen_by_viewpoint.sum() == count.sum()
+    assert np.all((first == -1) == (count == 0))
+    # They add up: only A, only B, both, none.
+    assert (result.only_by_viewpoint.sum() + result.seen_by_several_points
+            + result.seen_by_none_points) == len(positions)
+    # The hand-worked shadows, away from their edges: A's seen by B alone, B's by A alone.
+    y, z = positions[:walls, 1], positions[:walls, 2]
+    core = np.abs(z - 1.0) < 0.34
+    in_a_shadow = core & (np.abs(y - 1.0) < 0.34)
+    in_b_shadow = core & (np.abs(y + 1.0) < 0.34)
+    assert np.all(count[:walls][in_a_shadow] == 1)
+    assert np.all(first[:walls][in_a_shadow] == 2)
+    assert np.all(count[:walls][in_b_shadow] == 1)
+    assert np.all(first[:walls][in_b_shadow] == 1)
+    assert np.all(count[-25:] == 0)
+    assert result.seen_by_none_points == 25

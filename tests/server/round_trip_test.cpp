@@ -8,6 +8,7 @@
 #include <set>
 #include <sstream>
 
+#include "occlusion/app/first_station_field.hpp"
 #include "occlusion/io/cloud_io.hpp"
 #include "occlusion/io/mesh_reader.hpp"
 #include "occlusion/io/obj_reader.hpp"
@@ -395,16 +396,22 @@ TEST_F(RoundTrip, ScanEqualsTheCli) {
   const Json::Value& result = reply.final["result"];
   expect_same_report(result, cli);
 
-  // visible_count per point equals the CLI's scan_full cloud.
+  // visible_count and the first viewpoint (covered_by) per point equal the
+  // CLI's scan_full cloud (visible_count, first_station).
   const auto counts = frame_values<std::uint16_t>(*find_frame(reply, "visible_count"));
+  const auto first = frame_values<std::int32_t>(*find_frame(reply, "covered_by"));
   CloudReadReport read;
   read_cloud(cli_out() + "/office_1.scan_full.ply", {}, &read);
-  ASSERT_EQ(read.extra_fields.size(), 1u);
+  ASSERT_EQ(read.extra_fields.size(), 2u);
+  EXPECT_EQ(read.extra_fields[1].name, kFirstStationField);
   const auto& expected = read.extra_fields[0].values;
+  const auto& expected_first = read.extra_fields[1].values;
   ASSERT_EQ(counts.size(), expected.size());
+  ASSERT_EQ(first.size(), expected.size());
   std::size_t visible = 0;
   for (std::size_t i = 0; i < counts.size(); ++i) {
     EXPECT_EQ(counts[i], static_cast<std::uint16_t>(expected[i])) << "point " << i;
+    EXPECT_EQ(first[i], static_cast<std::int32_t>(expected_first[i])) << "point " << i;
     visible += counts[i] > 0 ? 1 : 0;
   }
   EXPECT_EQ(visible, result["visible_points"].asUInt64());

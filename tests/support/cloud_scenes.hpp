@@ -4,6 +4,7 @@
 
 #include <Eigen/Core>
 #include <cmath>
+#include <cstdint>
 #include <functional>
 #include <vector>
 
@@ -82,5 +83,49 @@ inline double rectangle_solid_angle(double distance, double u1, double u2, doubl
   };
   return corner(u2, v2) - corner(u1, v2) - corner(u2, v1) + corner(u1, v1);
 }
+
+// A plate before a wall, seen by two stations. The wall x = 0 (y in
+// [-1.6, 1.6], z in [0, 2]) sampled every 2 cm at cell centres, a plate
+// x = 1, y and z in [-0.2, 0.2] around (1, 0, 1), and the stations A
+// (2, -1, 1) and B (2, 1, 1). The wall is twice as far from a station as the
+// plate, so the plate's shadow is the plate doubled about the station's foot:
+// from A, y in [0.6, 1.4], from B, y in [-1.4, -0.6], z in [0.6, 1.4] for
+// both. A 5 x 5 patch at x = 0.9 just behind the plate's middle is hidden
+// from both. Labels: 0 wall, 1 plate, 2 the patch.
+struct PlateBeforeWall {
+  static constexpr double kStep = 0.02;
+  enum Part : std::int32_t { kWall, kPlate, kBehind };
+  static constexpr std::size_t kBehindPoints = 25;
+  static Eigen::Vector3d a() { return {2, -1, 1}; }
+  static Eigen::Vector3d b() { return {2, 1, 1}; }
+
+  static PointCloud cloud() {
+    PointCloud c;
+    const Eigen::Vector3d y = Eigen::Vector3d::UnitY(), z = Eigen::Vector3d::UnitZ();
+    add_grid(c, {0, -1.6 + kStep / 2, kStep / 2}, y, z, 159, 99, kStep, kWall);
+    add_grid(c, {1, -0.2, 0.8}, y, z, 20, 20, kStep, kPlate);
+    add_grid(c, {0.9, -0.04, 0.96}, y, z, 4, 4, kStep, kBehind);
+    return c;
+  }
+
+  // What A and B see of a point of `part`, seen from A then B: how many see
+  // it and the first (1 for A, 2 for B, -1 none); count -1 for a wall point
+  // within `band` of a shadow's edge, which the model of the points decides.
+  struct Seen {
+    int count = -1;
+    int first = -1;
+  };
+  static Seen expected(const Eigen::Vector3f& p, std::int32_t part, double band) {
+    if (part == kBehind) return {0, -1};
+    if (part == kPlate) return {2, 1};
+    const auto inside = [&](double centre_y, double margin) {
+      return std::abs(p.y() - centre_y) < 0.4 + margin && std::abs(p.z() - 1.0) < 0.4 + margin;
+    };
+    if (inside(1.0, -band)) return {1, 2};   // A's shadow: B alone
+    if (inside(-1.0, -band)) return {1, 1};  // B's shadow: A alone
+    if (!inside(1.0, band) && !inside(-1.0, band)) return {2, 1};
+    return {};
+  }
+};
 
 }  // namespace occlusion::testing

@@ -59,6 +59,9 @@ export interface ViewpointReport {
   visible_fraction?: number;
   visible_area?: number;
   visible_points?: number;
+  /** -fscan: the points (and their share) that this viewpoint alone sees. */
+  only_points?: number;
+  only_fraction?: number;
 }
 
 export interface JobReport {

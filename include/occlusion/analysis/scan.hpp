@@ -61,7 +61,14 @@ struct ScanResult {
   std::size_t visible_points = 0;              // seen by at least one viewpoint
   double visible_fraction = 0.0;               // visible_points / points
   std::vector<std::size_t> seen_by_viewpoint;  // points each viewpoint sees
-  std::size_t outside_view_rays = 0;           // (viewpoint, point) pairs outside field_of_view
+  // Per point: the number (from 1, in the viewpoints' order) of the first
+  // viewpoint that sees it, -1 for none; plan's covered_by for a scan.
+  std::vector<std::int32_t> first_viewpoint;
+  // Per viewpoint: the points it alone sees (visible_count 1). With the
+  // points seen by several and by none they make up the cloud.
+  std::vector<std::size_t> only_by_viewpoint;
+  std::size_t seen_by_several = 0;    // visible_count >= 2
+  std::size_t outside_view_rays = 0;  // (viewpoint, point) pairs outside field_of_view
   OctreeStats octree;
   double build_seconds = 0.0, trace_seconds = 0.0;
 };

@@ -17,6 +17,7 @@
 #include "occlusion/analysis/station_refinement.hpp"
 #include "occlusion/analysis/station_selection.hpp"
 #include "occlusion/analysis/station_visibility.hpp"
+#include "occlusion/app/first_station_field.hpp"
 #include "occlusion/app/key.hpp"
 #include "occlusion/app/point_model.hpp"
 #include "occlusion/core/mesh.hpp"
@@ -115,14 +116,10 @@ const Keys<PlanRequest>& plan_limit_keys();
 // Those keys' values as the coverage applies them. KeyError for
 // min_elevation above max_elevation or an unknown up axis.
 StationLimits station_limits(const PlanRequest& request);
-// The targets' per-point field in SCENE.plan_targets.ply: the rank of the
-// first station that sees each, -1 for none (Python's and the server's
-// covered_by). Not "covered_by": CloudCompare's PLY reader takes any property
-// whose name holds "red" for the red channel (docs/plan.md).
-inline constexpr const char* kFirstStationField = "first_station";
 // Reads the scene (a mesh by its name, else a cloud), plans, writes the
 // outputs under request.out: the JSON report, the curve and the candidates as
-// CSV, the targets as a PLY with kFirstStationField.
+// CSV, the targets as a PLY with kFirstStationField (the rank of the first
+// station that sees each, first_station_field.hpp).
 PlanReport run_plan(const PlanRequest& request, const Progress& progress = {});
 // The same on a scene in memory; nothing is written (UsageError when
 // request.out is set). request.path names it in messages.

@@ -8,7 +8,7 @@
 import type { EscapeData, FaceFractionData, Vec3, VisibilityData } from "../decode/types";
 import type { JobReport } from "../results";
 import { num, reportPointRadius } from "../results";
-import { occlusionCard, scanCard } from "../ui/occlusion_view";
+import { occlusionCard, scanCard, scanNames } from "../ui/occlusion_view";
 import { percent } from "../ui/format";
 import { RAY_DISPLAY, cloudJobParams } from "../settings_defaults";
 import { sessionMeasure } from "../study_measures";
@@ -180,7 +180,7 @@ export class Occlusion {
     if (seen) this.ctx.history.scanOutput.set(String(params.path), seen);
     if (outcome.decoded?.kind === "visibility") {
       try {
-        this.ctx.view.setVisibility(outcome.decoded as VisibilityData);
+        this.ctx.view.setVisibility(outcome.decoded as VisibilityData, scanNames(report, names));
       } catch (error) {
         this.ctx.notices.fromError(error, "Visibility scan");
       }

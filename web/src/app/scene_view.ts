@@ -243,8 +243,9 @@ export class SceneView {
     return true;
   }
 
-  setVisibility(visibility: VisibilityData): void {
-    this.cloud?.setVisibility(visibility);
+  /** A scan's per-point answers; `names`: its viewpoints, which the first-viewpoint colours number. */
+  setVisibility(visibility: VisibilityData, names: string[] = []): void {
+    this.cloud?.setVisibility(visibility, names);
     // An estimated mesh (planes) left from an earlier job would hide the coloured points.
     if (this.mesh && this.cloud) {
       this.gui.set("showMesh", false);
@@ -353,6 +354,13 @@ export class SceneView {
         case "visibility": {
           const v = cloud.visibilityData!;
           this.legend.show({ kind: "visibility", histogram: v.histogram, max: v.max });
+          return;
+        }
+        case "first": {
+          const v = cloud.visibilityData!;
+          const counts = new Array<number>(v.max + 1).fill(0);
+          for (const k of v.firstStation ?? []) counts[Math.max(0, k)]! += 1;
+          this.legend.show({ kind: "first", names: cloud.visibilityNames, counts });
           return;
         }
         case "cluster":

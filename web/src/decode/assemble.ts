@@ -304,7 +304,15 @@ export function assembleFaceFraction(frame: Frame): FaceFractionData {
   };
 }
 
-export function assembleVisibility(frame: Frame, context: AssembleContext): VisibilityData {
+/**
+ * Per point: how many viewpoints see it and, with -fscan's covered_by frame,
+ * the first that does (a number from 1 no greater than its count's viewpoints).
+ */
+export function assembleVisibility(
+  frame: Frame,
+  context: AssembleContext,
+  first: Frame | null = null,
+): VisibilityData {
   const counts = frame.data as Uint16Array;
   let largest = 0;
   for (let i = 0; i < counts.length; ++i) if ((counts[i] as number) > largest) largest = counts[i]!;
@@ -312,6 +320,23 @@ export function assembleVisibility(frame: Frame, context: AssembleContext): Visi
   const histogram = new Array<number>(max + 1).fill(0);
   for (let i = 0; i < counts.length; ++i) histogram[counts[i]!] = (histogram[counts[i]!] ?? 0) + 1;
   const palette = histogram.map((_, k) => visibilityColour(k, max));
+  const firstStation = first === null ? null : (first.data as Int32Array);
+  if (firstStation !== null) {
+    if (firstStation.length !== counts.length) {
+      throw new FrameError(
+        `covered_by: ${firstStation.length} values for ${counts.length} visible counts`,
+      );
+    }
+    for (let i = 0; i < counts.length; ++i) {
+      const k = firstStation[i] as number;
+      const seen = (counts[i] as number) > 0;
+      if (seen ? k < 1 || k > max : k !== -1) {
+        throw new FrameError(
+          `covered_by: point ${i} has first viewpoint ${k} but is seen by ${counts[i]}`,
+        );
+      }
+    }
+  }
   return {
     kind: "visibility",
     count: counts.length,
@@ -319,6 +344,11 @@ export function assembleVisibility(frame: Frame, context: AssembleContext): Visi
     colours: paint(counts.length, (i) => palette[counts[i]!]!),
     max,
     histogram,
+    firstStation,
+    firstColours:
+      firstStation === null
+        ? null
+        : paintByKey(firstStation, (k) => (k < 1 ? UNSEEN_COLOUR : stationColour(k))),
   };
 }
 
@@ -370,6 +400,11 @@ export function assemble(
   }
   if (kinds.has("indices")) return assembleMesh(frames, context);
   if (kinds.has("positions")) return assembleCloud(frames, context);
+  if (kinds.size === 2 && kinds.has("visible_count") && kinds.has("covered_by")) {
+    // -fscan: how many viewpoints see each point, and the first that does.
+    const first = single(frames, "covered_by")!;
+    return assembleVisibility(single(frames, "visible_count")!, context, first);
+  }
   const first = frames[0] as Frame;
   if (kinds.size > 1) throw new FrameError(`unexpected mix of frames: ${[...kinds].join(", ")}`);
   switch (first.kind) {

@@ -71,6 +71,14 @@ export interface VisibilityData {
   max: number;
   /** histogram[k] = points seen by k viewpoints. */
   histogram: number[];
+  /**
+   * -fscan's covered_by: the number (from 1, in the report's viewpoints) of
+   * the first viewpoint that sees each point, −1 none; null when not sent
+   * (the live station's single view).
+   */
+  firstStation: Int32Array | null;
+  /** Per-point RGB by that viewpoint (stationColour), unseen red; null with it. */
+  firstColours: Uint8Array | null;
 }
 
 /** plan: per target (a cloud's point, a mesh's sample), the first station that sees it. */
@@ -146,7 +154,7 @@ export function transferables(value: Decoded | null): ArrayBuffer[] {
       arrays.push(value.fraction, value.colours);
       break;
     case "visibility":
-      arrays.push(value.visibleCount, value.colours);
+      arrays.push(value.visibleCount, value.colours, value.firstStation, value.firstColours);
       break;
     case "escapes":
       arrays.push(...value.directions);

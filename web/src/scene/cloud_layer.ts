@@ -14,13 +14,15 @@ import {
 import { ramp } from "../decode/colour_maps";
 import type { Bounds, CloudData, VisibilityData } from "../decode/types";
 
-export type CloudColourMode = "rgb" | "class" | "segment" | "visibility" | "cluster" | "height";
+export type CloudColourMode =
+  "rgb" | "class" | "segment" | "visibility" | "first" | "cluster" | "height";
 
 export const CLOUD_MODE_LABELS: Record<CloudColourMode, string> = {
   rgb: "RGB",
   class: "Semantic class",
   segment: "Segment id",
-  visibility: "Visibility",
+  visibility: "Visibility (viewpoints that see it)",
+  first: "First viewpoint that sees it",
   cluster: "Region cluster",
   height: "Height",
 };
@@ -115,6 +117,7 @@ export class CloudLayer {
     if (this.data.classColours) modes.push("class");
     if (this.data.segmentColours) modes.push("segment");
     if (this.visibility) modes.push("visibility");
+    if (this.visibility?.firstColours) modes.push("first");
     if (this.clusters) modes.push("cluster");
     modes.push("height");
     return modes;
@@ -134,6 +137,8 @@ export class CloudLayer {
         return this.data.segmentColours;
       case "visibility":
         return this.visibility?.colours ?? null;
+      case "first":
+        return this.visibility?.firstColours ?? null;
       case "cluster":
         return this.clusters;
       case "height":
@@ -155,14 +160,19 @@ export class CloudLayer {
     return true;
   }
 
-  setVisibility(visibility: VisibilityData): void {
+  /** The names of the viewpoints a visibility's first-viewpoint numbers count (from 1). */
+  visibilityNames: string[] = [];
+
+  setVisibility(visibility: VisibilityData, names: string[] = []): void {
     if (visibility.count !== this.data.count) {
       throw new Error(
         `visibility: ${visibility.count} counts for a cloud of ${this.data.count} points`,
       );
     }
     this.visibility = visibility;
+    this.visibilityNames = names;
     this.attributes.delete("visibility");
+    this.attributes.delete("first");
   }
 
   /** Levels of detail available: level k draws 1/2^k of the points. */

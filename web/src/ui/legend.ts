@@ -1,7 +1,14 @@
 // Bottom-left legend: class names and colours, segment count, the discrete
 // visibility scale (seen by k viewpoints) or a continuous colour bar.
 
-import { css, classColour, rampCss, visibilityColour } from "../decode/colour_maps";
+import {
+  UNSEEN_COLOUR,
+  css,
+  classColour,
+  rampCss,
+  stationColour,
+  visibilityColour,
+} from "../decode/colour_maps";
 import { clear, h } from "./dom";
 import { integer, percent } from "./format";
 
@@ -10,6 +17,8 @@ export type LegendContent =
   | { kind: "classes"; names: string[]; counts: number[]; unlabelled: number }
   | { kind: "segments"; count: number; label: string; noun: string }
   | { kind: "visibility"; histogram: number[]; max: number }
+  /** counts[k]: points first seen by viewpoint k (from 1, names[k - 1]); counts[0] by none. */
+  | { kind: "first"; names: string[]; counts: number[] }
   | { kind: "colourbar"; title: string; min: number; max: number; mean?: number }
   | { kind: "text"; text: string };
 
@@ -81,6 +90,29 @@ export class Legend {
             h("div", { class: "flex items-center gap-2 py-0.5" }, [
               swatch(visibilityColour(k, content.max)),
               h("span", { class: "flex-1", text: k === 0 ? "0 (unseen)" : `${k}` }),
+              h("span", {
+                class: "tabular-nums text-slate-400",
+                text: `${integer(n)} · ${percent(n / total)}`,
+              }),
+            ]),
+          );
+        });
+        break;
+      }
+      case "first": {
+        const total = content.counts.reduce((a, b) => a + b, 0) || 1;
+        box.append(
+          h("div", {
+            class: "mb-1.5 font-semibold text-slate-200",
+            text: "First viewpoint that sees it",
+          }),
+        );
+        content.counts.forEach((n, k) => {
+          const name = k === 0 ? "none (unseen)" : (content.names[k - 1] ?? `#${k}`);
+          box.append(
+            h("div", { class: "flex items-center gap-2 py-0.5", testid: "legend-first" }, [
+              swatch(k === 0 ? UNSEEN_COLOUR : stationColour(k)),
+              h("span", { class: "flex-1", text: name }),
               h("span", {
                 class: "tabular-nums text-slate-400",
                 text: `${integer(n)} · ${percent(n / total)}`,

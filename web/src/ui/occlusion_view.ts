@@ -1,6 +1,7 @@
 // Occlusion figures: the headline level, per-viewpoint figures and, for
 // meshes, the most occluded groups; the visibility scan's figures.
 
+import { css, stationColour } from "../decode/colour_maps";
 import type { JobReport } from "../results";
 import { num } from "../results";
 import { h } from "./dom";
@@ -219,6 +220,61 @@ function groupTable(report: JobReport): HTMLElement | null {
   ]);
 }
 
+/**
+ * The scan's viewpoints as the user knows them: the markers' labels when the
+ * viewer sent them, else the names the job gave (a cloud's station names).
+ */
+export function scanNames(report: JobReport, names: string[] = []): string[] {
+  return (report.viewpoints ?? []).map((v, i) => names[i] ?? v.name ?? `#${i + 1}`);
+}
+
+/**
+ * Per station (viewpoint) of a scan: its name, the share of the points it
+ * sees, the share only it sees; then the shares seen by several and by none.
+ * The only-shares, several and none add up to 1.
+ */
+export function stationRows(report: JobReport, names: string[] = []): string[][] {
+  const labels = scanNames(report, names);
+  const rows = (report.viewpoints ?? []).map((v, i) => [
+    labels[i]!,
+    percent(v.visible_fraction),
+    percent(v.only_fraction),
+  ]);
+  rows.push(["seen by several", "", percent(num(report.seen_by_several_fraction))]);
+  rows.push(["seen by none", "", percent(num(report.seen_by_none_fraction))]);
+  return rows;
+}
+
+/** The rows as a table, each of the first `stations` with its first-viewpoint colour. */
+function stationTable(rows: string[][], stations: number): HTMLElement {
+  return table(
+    [
+      "station",
+      { label: "sees", title: "Share of the points this station (viewpoint) sees" },
+      {
+        label: "only it",
+        title:
+          "Share of the points that this station alone sees; with the shares seen by several " +
+          "and by none they add up to 100 %",
+      },
+    ],
+    rows.map(([name, sees, only], i) => [
+      i < stations
+        ? h("span", { class: "flex items-center gap-1.5" }, [
+            h("span", {
+              class: "inline-block h-2.5 w-2.5 shrink-0 rounded-full",
+              style: { background: css(stationColour(i + 1)) },
+            }),
+            h("span", { text: name! }),
+          ])
+        : name!,
+      sees!,
+      only!,
+    ]),
+    "scan-stations-table",
+  );
+}
+
 export function scanCard(report: JobReport, names: string[] = []): HTMLElement {
   const fraction = num(report.visible_fraction);
   const classes = Array.isArray(report.classes)
@@ -240,13 +296,16 @@ export function scanCard(report: JobReport, names: string[] = []): HTMLElement {
         ["time", seconds(report)],
       ]),
       pointModelLine(report),
-      h("div", { class: "mt-3" }, [
+      h("div", { class: "mt-3", testid: "scan-stations" }, [
+        stationTable(stationRows(report, names), (report.viewpoints ?? []).length),
+      ]),
+      h("details", { class: "mt-2" }, [
+        h("summary", { class: "cursor-pointer text-xs text-slate-400", text: "positions" }),
         table(
-          ["viewpoint", "position", "sees"],
+          ["viewpoint", "position"],
           (report.viewpoints ?? []).map((v, i) => [
-            names[i] ?? v.name ?? `#${i + 1}`,
+            scanNames(report, names)[i]!,
             point(v.position),
-            percent(v.visible_fraction),
           ]),
         ),
       ]),

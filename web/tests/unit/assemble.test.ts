@@ -9,7 +9,13 @@ import {
   checkFrameList,
   computeBounds,
 } from "../../src/decode/assemble";
-import { classColour, ramp, segmentColour, UNSEEN_COLOUR } from "../../src/decode/colour_maps";
+import {
+  classColour,
+  ramp,
+  segmentColour,
+  stationColour,
+  UNSEEN_COLOUR,
+} from "../../src/decode/colour_maps";
 import { byteSize, transferables } from "../../src/decode/types";
 import type { CloudData, MeshData } from "../../src/decode/types";
 import { FrameError, decodeFrame, encodeFrame } from "../../src/protocol/frame";
@@ -209,6 +215,33 @@ describe("job data", () => {
     expect(data.max).toBe(3);
     expect(data.histogram).toEqual([1, 2, 0, 1]);
     expect(Array.from(data.colours.subarray(0, 3))).toEqual(UNSEEN_COLOUR);
+  });
+
+  test("a scan's first viewpoints colour each point by its station, unseen red", () => {
+    const counts = frame("visible_count", new Uint16Array([0, 1, 2, 1]));
+    const first = frame("covered_by", new Int32Array([-1, 2, 1, 1]));
+    const data = assemble([counts, first], listing([counts, first]), { viewpoints: 2 });
+    if (data?.kind !== "visibility") throw new Error("not visibility");
+    expect(Array.from(data.firstStation!)).toEqual([-1, 2, 1, 1]);
+    expect(Array.from(data.firstColours!.subarray(0, 3))).toEqual(UNSEEN_COLOUR);
+    expect(Array.from(data.firstColours!.subarray(3, 6))).toEqual(stationColour(2));
+    expect(Array.from(data.firstColours!.subarray(6, 9))).toEqual(stationColour(1));
+    expect(data.histogram).toEqual([1, 2, 1]);
+    const buffers = transferables(data);
+    expect(new Set(buffers).size).toBe(4);
+    // Without the frame (the live station) there is nothing to colour by.
+    expect(assembleVisibility(counts, { viewpoints: 2 }).firstColours).toBeNull();
+  });
+
+  test("a first viewpoint that disagrees with its point's count is an error", () => {
+    const counts = frame("visible_count", new Uint16Array([0, 1]));
+    const check = (first: number[]) => () =>
+      assembleVisibility(counts, { viewpoints: 2 }, frame("covered_by", new Int32Array(first)));
+    expect(check([-1, 1])).not.toThrow();
+    expect(check([1, 1])).toThrow(/point 0 has first viewpoint 1 but is seen by 0/);
+    expect(check([-1, -1])).toThrow(/point 1 has first viewpoint -1 but is seen by 1/);
+    expect(check([-1, 3])).toThrow(/point 1 has first viewpoint 3/);
+    expect(check([-1])).toThrow(/1 values for 2 visible counts/);
   });
 
   test("escape directions are placed by viewpoint (item), empty for viewpoints without any", () => {
