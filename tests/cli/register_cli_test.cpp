@@ -1,0 +1,85 @@
+// register end to end on PCL's tutorial pair: the refined pose written in
+// the initial pose's format and read back as the report gives it, the fit
+// reported, and the refusals' exit codes and messages.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <sstream>
+
+#include "run_cli.hpp"
+
+namespace occlusion {
+namespace {
+
+using testing::read_text;
+using testing::run_cli;
+using testing::run_json;
+using testing::TempDir;
+
+const std::string kSource = OCCLUSION_SOURCE_DIR;
+const std::string kPair = "'" + kSource + "/files/pcl/room_scan2.pcd' --target '" + kSource +
+                          "/files/pcl/room_scan1.pcd'";
+
+// The tutorial's guess, 0.6931 rad about z then (1.79387, 0.720047, 0), as
+// a 4 x 4 in rows, its translation moved by `dx`.
+std::string tutorial_matrix(double dx = 0.0) {
+  const double c = std::cos(0.6931), s = std::sin(0.6931);
+  std::ostringstream text;
+  text.precision(17);
+  text << c << " " << -s << " 0 " << 1.79387 + dx << "\n"
+       << s << " " << c << " 0 0.720047\n0 0 1 0\n0 0 0 1\n";
+  return text.str();
+}
+
+TEST(RegisterCli, TutorialPairIsRefinedAndThePoseWrittenInItsFormat) {
+  const TempDir dir;
+  dir.write("guess.txt", tutorial_matrix());
+  const Json::Value report = run_json("register " + kPair + " --initial-pose '" +
+                                      dir.file("guess.txt") + "' --out '" + dir.path() + "'");
+  EXPECT_EQ(report["job"].asString(), "register");
+  EXPECT_TRUE(report["converged"].asBool());
+  EXPECT_GT(report["overlap"].asDouble(), report["before"]["overlap"].asDouble());
+  EXPECT_GT(report["rms"].asDouble(), 0.0);
+  EXPECT_LT(report["rms"].asDouble(), report["before"]["rms"].asDouble());
+  ASSERT_EQ(report["levels"].size(), 3u);
+  EXPECT_GT(report["levels"][0]["iterations"].asUInt(), 0u);
+  // The written pose is the report's, 16 numbers in rows.
+  std::istringstream written(read_text(dir.file("room_scan2.refined.txt")));
+  for (int r = 0; r < 4; ++r) {
+    for (int c = 0; c < 4; ++c) {
+      double value = NAN;
+      ASSERT_TRUE(written >> value);
+      EXPECT_NEAR(value, report["refined_pose"]["matrix"][r][c].asDouble(), 1e-12);
+    }
+  }
+  EXPECT_TRUE(std::filesystem::exists(dir.file("room_scan2.register.json")));
+}
+
+TEST(RegisterCli, ScansThatDoNotOverlapAreRefusedSayingWhatToDo) {
+  const TempDir dir;
+  dir.write("far.txt", tutorial_matrix(100.0));
+  const auto run = run_cli("register " + kPair + " --initial-pose '" + dir.file("far.txt") +
+                           "' --out '" + dir.path() + "'");
+  EXPECT_EQ(run.exit_code, 3);
+  EXPECT_NE(run.err.find("do not overlap"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("max_distance"), std::string::npos) << run.err;
+  // Nothing written for a refused pair.
+  EXPECT_FALSE(std::filesystem::exists(dir.file("room_scan2.refined.txt")));
+}
+
+TEST(RegisterCli, APoseFileThatIsNoRigidMotionIsRefusedNamingIt) {
+  const TempDir dir;
+  dir.write("scaled.txt", "2 0 0 0\n0 2 0 0\n0 0 2 0\n0 0 0 1\n");
+  const auto run =
+      run_cli("register " + kPair + " --initial-pose '" + dir.file("scaled.txt") + "'");
+  EXPECT_EQ(run.exit_code, 3);
+  EXPECT_NE(run.err.find("scaled.txt"), std::string::npos) << run.err;
+  const auto missing = run_cli("register " + kPair);
+  EXPECT_EQ(missing.exit_code, 2);
+  EXPECT_NE(missing.err.find("initial-pose"), std::string::npos) << missing.err;
+}
+
+}  // namespace
+}  // namespace occlusion
