@@ -84,6 +84,36 @@ PointCloud read_las(const std::string& path, const CloudReadOptions& options,
 // depth PNG back-projected, seen from its camera (the sensor and one station).
 PointCloud read_depth_frame(const std::string& path, const CloudReadOptions& options,
                             CloudReadReport& report);
+// 3DTK's scan files, scanNNN.3d (uos_scan_reader.cpp; docs/formats.md): one
+// station, the scanner's. With scanNNN.pose beside it (as the rule of
+// named_paths.hpp resolves the name), its points are placed by that pose
+// (pose_file.hpp) and the station lies at the pose's position; without, the
+// cloud is in the scanner's frame and the station at its origin. A file of
+// other than 3 columns needs its layout named (a project file's "layout"):
+// its columns' count does not tell which of 3DTK's layouts it is.
+enum class UosLayout {
+  kXyz,                        // uos: x y z
+  kReflectance,                // uosr: x y z reflectance (as intensities)
+  kRgb,                        // uos_rgb: x y z r g b
+  kRgbReflectance,             // uos_rgbr: x y z r g b reflectance
+  kReflectanceRgb,             // uos_rrgb: x y z reflectance r g b
+  kReflectanceRgbTemperature,  // uos_rrgbt: ... and a `temperature` extra field
+  kType,                       // uosc: x y z and an integer `type` extra field
+};
+std::optional<UosLayout> uos_layout_from_name(std::string_view name);
+std::string uos_layout_names();  // "uos, uosr, ..." for messages
+PointCloud read_uos(const std::string& path, const CloudReadOptions& options,
+                    CloudReadReport& report);
+PointCloud read_uos_scan(const std::string& path, std::optional<UosLayout> layout,
+                         const CloudReadOptions& options, CloudReadReport& report);
+// The sibling scanNNN.pose of `path`, resolved; "" when there is none.
+std::string uos_sibling_pose(const std::string& path);
+
+// A project file, NAME.project.json (scene_project.hpp): its scans placed by
+// their poses, as one cloud.
+PointCloud read_project(const std::string& path, const CloudReadOptions& options,
+                        CloudReadReport& report);
+
 // A room folder or an Area folder of rooms.
 PointCloud read_s3dis(const std::string& directory, const CloudReadOptions& options,
                       CloudReadReport& report);

@@ -9,6 +9,7 @@
 #include "file_names.hpp"
 #include "frame_descriptor.hpp"
 #include "occlusion/io/input_error.hpp"
+#include "occlusion/io/scene_project.hpp"
 
 namespace occlusion {
 namespace {
@@ -31,6 +32,7 @@ const CloudReader kCloudReaders[] = {
     {".txt", detail::read_text_cloud}, {".xyz", detail::read_text_cloud},
     {".pts", detail::read_text_cloud}, {".e57", detail::read_e57},
     {".las", detail::read_las},        {detail::kFrameDescriptorSuffix, detail::read_depth_frame},
+    {".3d", detail::read_uos},         {kProjectFileSuffix, detail::read_project},
 };
 
 // The reader of the longest suffix `path` ends in (".frame.json" before ".json").

@@ -3,10 +3,14 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <stdexcept>
+#include <vector>
 
+#include "json_line.hpp"
 #include "occlusion/io/file_bytes.hpp"
 #include "occlusion/io/input_error.hpp"
 #include "occlusion/io/named_paths.hpp"
+#include "occlusion/io/pose_file.hpp"
 #include "occlusion/io/strict_json.hpp"
 
 namespace occlusion::detail {
@@ -14,10 +18,6 @@ namespace {
 
 constexpr const char* kFields =
     "depth, colour, intrinsics, depth_scale, pose_tum, camera_to_world, name";
-// A pose written with a few decimals (TUM: 4) is a rotation to about 1e-4;
-// a scaled, sheared or mirrored matrix is off by far more.
-constexpr double kRotationTolerance = 1e-3;
-
 class DescriptorParser {
  public:
   explicit DescriptorParser(const std::string& path) : path_(path), text_(read_file_bytes(path)) {}
@@ -64,13 +64,7 @@ class DescriptorParser {
     return root;
   }
 
-  // The line where `value` starts in the file.
-  std::size_t line_of(const Json::Value& value) const {
-    const auto offset =
-        static_cast<std::size_t>(std::max<std::ptrdiff_t>(0, value.getOffsetStart()));
-    const auto end = text_.begin() + static_cast<std::ptrdiff_t>(std::min(offset, text_.size()));
-    return 1 + static_cast<std::size_t>(std::count(text_.begin(), end, '\n'));
-  }
+  std::size_t line_of(const Json::Value& value) const { return detail::json_line(text_, value); }
 
   [[noreturn]] void fail(const Json::Value& value, const std::string& reason) const {
     throw InputError(path_, line_of(value), reason);
@@ -136,22 +130,28 @@ class DescriptorParser {
     if (!pose.isArray() || pose.size() != 7) {
       fail(pose, "'pose_tum' is [tx, ty, tz, qx, qy, qz, qw]: TUM's camera-to-world pose");
     }
-    double v[7];
-    for (Json::ArrayIndex k = 0; k < 7; ++k) v[k] = number(pose[k], "pose_tum");
-    frame.translation = Eigen::Vector3d(v[0], v[1], v[2]);
-    const Eigen::Quaterniond q(v[6], v[3], v[4], v[5]);
-    if (std::fabs(q.norm() - 1.0) > kRotationTolerance) {
-      fail(pose, "the quaternion qx qy qz qw of 'pose_tum' has length " + std::to_string(q.norm()) +
-                     ", not 1: is the order tx ty tz qx qy qz qw?");
+    std::vector<double> numbers;
+    for (const Json::Value& x : pose) numbers.push_back(number(x, "pose_tum"));
+    set_pose(pose, "pose_tum", numbers, PoseFormat::kTum, frame);
+  }
+
+  // The checks of every pose (pose_file.hpp): a rigid motion, within its tolerance.
+  void set_pose(const Json::Value& pose, const char* name, const std::vector<double>& numbers,
+                PoseFormat format, FrameDescriptor& frame) const {
+    try {
+      const Eigen::Isometry3d motion = pose_from_numbers(numbers, format).scan_to_scene;
+      frame.rotation = Eigen::Quaterniond(motion.linear());
+      frame.translation = motion.translation();
+    } catch (const std::invalid_argument& error) {
+      fail(pose, std::string("'") + name + "': " + error.what());
     }
-    frame.rotation = q.normalized();
   }
 
   void read_matrix_pose(const Json::Value& pose, FrameDescriptor& frame) const {
     const char* help =
         "'camera_to_world' is a 4x4 matrix, 4 rows of 4 numbers (as ScanNet's pose files)";
     if (!pose.isArray() || pose.size() != 4) fail(pose, help);
-    Eigen::Matrix4d m;
+    std::vector<double> numbers;
     for (Json::ArrayIndex r = 0; r < 4; ++r) {
       if (!pose[r].isArray() || pose[r].size() != 4) fail(pose[r], help);
       for (Json::ArrayIndex c = 0; c < 4; ++c) {
@@ -161,21 +161,10 @@ class DescriptorParser {
                "'camera_to_world' holds a value that is not finite: ScanNet marks frames "
                "whose pose was lost with -inf; such a frame has no pose to use");
         }
-        m(r, c) = number(x, "camera_to_world");
+        numbers.push_back(number(x, "camera_to_world"));
       }
     }
-    if (m.row(3).transpose() != Eigen::Vector4d(0, 0, 0, 1)) {
-      fail(pose[3], "the last row of 'camera_to_world' must be 0 0 0 1");
-    }
-    const Eigen::Matrix3d r = m.topLeftCorner<3, 3>();
-    const double off = (r.transpose() * r - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
-    if (off > kRotationTolerance || r.determinant() <= 0) {
-      fail(pose,
-           "the upper-left 3x3 of 'camera_to_world' is not a rotation (it scales, shears "
-           "or mirrors): a camera pose is a rigid motion");
-    }
-    frame.rotation = Eigen::Quaterniond(r).normalized();
-    frame.translation = m.topRightCorner<3, 1>();
+    set_pose(pose, "camera_to_world", numbers, PoseFormat::kMatrix, frame);
   }
 
   const std::string& path_;

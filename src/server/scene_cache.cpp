@@ -2,6 +2,9 @@
 
 #include <system_error>
 
+#include "occlusion/io/input_error.hpp"
+#include "occlusion/io/scene_project.hpp"
+
 namespace occlusion::server {
 
 namespace fs = std::filesystem;
@@ -56,6 +59,18 @@ std::string scene_key(const fs::path& path, const std::string& variant) {
     key += '\n' + file.string() + ' ' + std::to_string(size) + ' ' + std::to_string(time);
   };
   stamp(path);
+  // A project is its scans and pose files too: a scan rewritten under an
+  // unchanged project is a new scene. A project that does not parse is
+  // refused by the load that follows, with the reason.
+  if (is_project_file(path.string())) {
+    try {
+      for (const SceneScan& scan : read_project_file(path.string())) {
+        stamp(scan.path);
+        if (!scan.pose_path.empty()) stamp(scan.pose_path);
+      }
+    } catch (const InputError&) {
+    }
+  }
   std::error_code error;
   if (fs::is_directory(path, error)) {
     for (fs::recursive_directory_iterator it(path, error), end; !error && it != end;

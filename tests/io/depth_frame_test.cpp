@@ -239,7 +239,7 @@ TEST_F(DepthFrame, RefusesBadDescriptorFieldsNamingTheirLine) {
       {"  \"intrinsics\": {\"fx\": 1, \"fy\": 1, \"cx\": \"a\", \"cy\": 1},\n  \"depth_scale\": 1",
        3, "'intrinsics.cx' is a finite number"},
       {base + ",\n  \"pose_tum\": [1, 2, 3, 0, 0, 0]", 5, "[tx, ty, tz, qx, qy, qz, qw]"},
-      {base + ",\n  \"pose_tum\": [1, 2, 3, 0, 0, 0, 2]", 5, "has length 2.0"},
+      {base + ",\n  \"pose_tum\": [1, 2, 3, 0, 0, 0, 2]", 5, "has length 2, not 1"},
       {base + ",\n  \"camera_to_world\": [[2, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]",
        5, "is not a rotation"},
       {base + ",\n  \"camera_to_world\": [[-1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]",

@@ -23,6 +23,10 @@
 //   NAME.frame.json     a depth frame: a 16-bit depth PNG with its intrinsics,
 //                       depth unit, optional colour PNG and camera pose; an
 //                       organised cloud whose camera is its sensor and station
+//   .3d                 a 3DTK scan (its uos layouts), placed by the
+//                       scanNNN.pose beside it; one station
+//   NAME.project.json   several scans, each placed by its pose, as one cloud
+//                       with their stations (io/scene_project.hpp)
 //   a directory         an S3DIS room (<room>/Annotations/<class>_<k>.txt) or an
 //                       S3DIS Area (a directory of rooms, concatenated)
 // The order of a folder's points, which a label file (one label per point, by

@@ -1,7 +1,8 @@
 // One answer whatever the door (issue 41): on a real scan (room_scan1.pcd, no
 // stations: -poc's grid of 9 on the robust frame, with the CLI's up warning),
 // an E57 file (its scan's station), and a laser station's gridded scan (from
-// `occlusion simulate`: rays outside its window), the viewer places the CLI's
+// `occlusion simulate`: rays outside its window), a project of four scans in
+// four formats with their poses (its scans' stations), the viewer places the CLI's
 // default viewpoints, warns as the CLI does (never at a station), and its
 // -poc and -fscan figures from the defaults are the CLI's with nothing given,
 // the command line its card shows and the Python call; the level's counts add
@@ -29,7 +30,13 @@ type V = [number, number, number];
 type Report = Record<string, unknown>;
 
 const SIMULATED = "sim/sample_room.sim.ply";
-const SCENES = ["pcl/room_scan1.pcd", "e57/bunnyInt32.e57", SIMULATED];
+const SCENES = [
+  "pcl/room_scan1.pcd",
+  "e57/bunnyInt32.e57",
+  SIMULATED,
+  // Four scans in four formats with their poses: the stations where the poses put them.
+  "projects/mixed.project.json",
+];
 
 let server: Server;
 let browser: Browser;
@@ -121,6 +128,19 @@ describe("the viewer's defaults are the CLI's (e2e)", () => {
       shown.forEach((m, i) =>
         m.position.forEach((x, a) => expect(x).toBeCloseTo(expected[i]!.position[a]!, 6)),
       );
+      if (path.startsWith("projects/")) {
+        // Its four scans' stations, where their poses put them (files/projects/SOURCES.md).
+        const byHand: V[] = [
+          [5, 4, 6],
+          [2, 0, 0],
+          [0, 7, 0.5],
+          [0, 3, 0],
+        ];
+        expect(shown.length).toBe(4);
+        shown.forEach((m, i) =>
+          m.position.forEach((x, a) => expect(x).toBeCloseTo(byHand[i]![a]!, 6)),
+        );
+      }
       // A viewpoint is warned about where the CLI warns about it, and only there.
       const cliWarnings = (poc.warnings as string[]).join("\n");
       shown.forEach((m, i) =>
