@@ -6,16 +6,11 @@
 #include "occlusion/app/errors.hpp"
 #include "occlusion/app/json_output.hpp"
 #include "occlusion/io/input_error.hpp"
-#include "register_pose_stand_in.hpp"
+#include "occlusion/io/pose_file.hpp"
 
 namespace occlusion {
 
 namespace {
-
-// TEMPORARY (register_pose_stand_in.hpp): io/pose_file.hpp replaces these.
-using pose_stand_in::read_pose_file;
-using pose_stand_in::ScanPose;
-using pose_stand_in::write_pose_file;
 
 Json::Value fit_json(const RegistrationFit& fit) {
   Json::Value json(Json::objectValue);
@@ -65,8 +60,11 @@ RegisterReport run_register(const RegisterRequest& request, const Progress& prog
   const auto start = job::Clock::now();
   RegisterReport report;
   report.request = request;
-  const ScanPose initial = read_pose_file(request.initial_pose);
-  report.pose_format = pose_stand_in::pose_format_name(initial);
+  const ScanPose initial =
+      request.pose_format == "auto"
+          ? read_pose_file(request.initial_pose)
+          : read_pose_file(request.initial_pose, pose_format_from_name(request.pose_format));
+  report.pose_format = std::string(pose_format_name(initial.format));
 
   progress("reading", 0.0);
   const job::LoadedCloud source = job::load_cloud(request.path, request.skip_bad_lines);

@@ -20,6 +20,10 @@ const Keys<RegisterRequest>& register_keys() {
           .doc("pose file taking the source's points into the target's frame, within about the "
                "coarsest search distance and max_rotation of the truth; the refined pose is "
                "written in its format"),
+      key("pose_format", &R::pose_format)
+          .choices({"auto", "matrix", "tum", "3dtk"})
+          .doc("the initial pose file's format (docs/formats.md, Poses); auto: a .pose file is "
+               "3DTK's, 16 numbers a matrix, a line of 8 a TUM trajectory line"),
       key("method", &R::method)
           .choices({"gicp", "icp_plane", "ndt"})
           .doc("gicp: Generalized ICP (plane to plane; the default, robust on laser rooms and "

@@ -16,9 +16,10 @@
 namespace occlusion {
 
 struct RegisterRequest {
-  std::string path;          // the source scan, in its scanner's frame
-  std::string target;        // the scan it is registered onto
-  std::string initial_pose;  // pose file: source frame -> target frame
+  std::string path;                  // the source scan, in its scanner's frame
+  std::string target;                // the scan it is registered onto
+  std::string initial_pose;          // pose file: source frame -> target frame
+  std::string pose_format = "auto";  // of initial_pose: auto, matrix, tum or 3dtk
   std::string method = registration_method_name(RegistrationOptions{}.method);
   unsigned levels = RegistrationOptions{}.levels;
   std::optional<double> finest_voxel;  // auto: from the point spacing
