@@ -9,7 +9,9 @@ const Keys<RegisterRequest>& register_keys() {
   using R = RegisterRequest;
   static const Keys<R> keys = {
       input_key(&R::path,
-                "the source scan, in its scanner's frame: its pose onto the target is refined"),
+                "the source scan, in its scanner's frame: its pose onto the target is refined; or "
+                "a project file (NAME.project.json): each scan after the first is registered "
+                "onto the first from its pose, and OUT/NAME.refined.project.json written"),
       key("target", &R::target)
           .path()
           .metavar("CLOUD")

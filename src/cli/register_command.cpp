@@ -28,6 +28,21 @@ void print_pose(const char* name, const Eigen::Isometry3d& pose) {
 void print_register(const JobRun& run, const FaceOptions&) {
   const RegisterReport& report = run.report_as<RegisterReport>();
   const RegistrationResult& r = report.result;
+  if (!report.project_scans.empty()) {
+    std::printf("registered the scans of %s onto its first scan (%zu points), %s\n",
+                report.request.path.c_str(), report.target_points, report.request.method.c_str());
+    for (const ProjectScanRegistration& scan : report.project_scans) {
+      std::printf(
+          "  %s (%zu points): moved %.4g, %.4g degrees; RMS %.4g -> %.4g, overlap %.1f %% -> "
+          "%.1f %%\n",
+          scan.path.c_str(), scan.points, scan.result.moved_translation,
+          scan.result.moved_rotation_deg, scan.result.before.rms, scan.result.after.rms,
+          100.0 * scan.result.before.overlap, 100.0 * scan.result.after.overlap);
+      print_pose("refined", scan.result.refined);
+    }
+    for (const auto& path : report.outputs) std::printf("  wrote %s\n", path.c_str());
+    return;
+  }
   std::printf("registered %s (%zu points) onto %s (%zu points), %s\n", report.request.path.c_str(),
               report.source_points, report.request.target.c_str(), report.target_points,
               report.request.method.c_str());

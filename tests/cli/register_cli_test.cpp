@@ -57,6 +57,48 @@ TEST(RegisterCli, TutorialPairIsRefinedAndThePoseWrittenInItsFormat) {
   EXPECT_TRUE(std::filesystem::exists(dir.file("room_scan2.register.json")));
 }
 
+// The tutorial's guess as a project's pose: rows of a 4 x 4 in JSON.
+std::string tutorial_pose_json() {
+  std::istringstream numbers(tutorial_matrix());
+  std::string json = "[";
+  for (int r = 0; r < 4; ++r) {
+    json += r == 0 ? "[" : ", [";
+    for (int c = 0; c < 4; ++c) {
+      std::string value;
+      numbers >> value;
+      json += (c == 0 ? "" : ", ") + value;
+    }
+    json += "]";
+  }
+  return json + "]";
+}
+
+TEST(RegisterCli, AProjectsScansAreRefinedOntoTheFirstAndTheProjectWrittenBack) {
+  const TempDir dir;
+  dir.write("room.project.json",
+            "{\"scans\": [{\"path\": \"" + kSource +
+                "/files/pcl/room_scan1.pcd\", \"pose\": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], "
+                "[0, 0, 0, 1]]},\n {\"path\": \"" +
+                kSource + "/files/pcl/room_scan2.pcd\", \"pose\": " + tutorial_pose_json() +
+                "}]}\n");
+  const Json::Value report =
+      run_json("register '" + dir.file("room.project.json") + "' --out '" + dir.path() + "/out'");
+  ASSERT_EQ(report["project_scans"].size(), 1u);
+  const Json::Value& scan = report["project_scans"][0];
+  EXPECT_TRUE(scan["converged"].asBool());
+  EXPECT_GT(scan["overlap"].asDouble(), scan["before"]["overlap"].asDouble());
+  // The project read back places scan 2 at the refined pose: its station,
+  // the pose's translation, is -fscan's second default viewpoint (points
+  // beyond 1 m of their station dropped, to keep the run short).
+  const Json::Value refined =
+      run_json("-fscan '" + dir.path() + "/out/room.refined.project.json' --max-range 1");
+  ASSERT_EQ(refined["viewpoints"].size(), 2u);
+  for (int axis = 0; axis < 3; ++axis) {
+    EXPECT_NEAR(refined["viewpoints"][1]["position"][axis].asDouble(),
+                scan["refined_pose"]["translation"][axis].asDouble(), 1e-9);
+  }
+}
+
 TEST(RegisterCli, ScansThatDoNotOverlapAreRefusedSayingWhatToDo) {
   const TempDir dir;
   dir.write("far.txt", tutorial_matrix(100.0));

@@ -32,9 +32,19 @@ struct RegisterRequest {
   std::string out;
 };
 
+// One scan of a project registered onto the project's first scan.
+struct ProjectScanRegistration {
+  std::string path;
+  std::size_t points = 0;
+  RegistrationResult result;
+};
+
 struct RegisterReport {
   RegisterRequest request;
-  RegistrationResult result;
+  RegistrationResult result;  // a pair's; a project's last scan's
+  // A project file's scans after the first, each registered onto the first
+  // (empty for a pair).
+  std::vector<ProjectScanRegistration> project_scans;
   std::string pose_format;  // of the initial pose file, and so of the refined one
   std::size_t source_points = 0, target_points = 0;
   std::vector<std::string> outputs;
