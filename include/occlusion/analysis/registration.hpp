@@ -21,7 +21,7 @@
 // point-to-plane linear least squares step; it reached the same pose on the
 // tutorial pair (7 mm away) but ran its coarsest level to max_iterations.
 // ndt: PCL's NormalDistributionsTransform as in its tutorial, cells the
-// level's search distance; the same pose within 3 mm and 0.15 degrees.
+// level's search distance; the same pose within 4 mm and 0.15 degrees.
 //
 // Nothing is random: voxel grids, normals and the registrations are
 // deterministic, so the same inputs give the same pose.
