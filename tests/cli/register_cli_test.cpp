@@ -57,6 +57,40 @@ TEST(RegisterCli, TutorialPairIsRefinedAndThePoseWrittenInItsFormat) {
   EXPECT_TRUE(std::filesystem::exists(dir.file("room_scan2.register.json")));
 }
 
+TEST(RegisterCli, ATumPoseIsWrittenBackAsATumLine) {
+  const TempDir dir;
+  // The tutorial's guess as tx ty tz qx qy qz qw: half the angle about z.
+  std::ostringstream tum;
+  tum.precision(17);
+  tum << "1.79387 0.720047 0 0 0 " << std::sin(0.6931 / 2) << " " << std::cos(0.6931 / 2) << "\n";
+  dir.write("guess.tum", tum.str());
+  // Seven numbers could be a w-first quaternion: the format must be said.
+  const auto unsaid =
+      run_cli("register " + kPair + " --initial-pose '" + dir.file("guess.tum") + "'");
+  EXPECT_EQ(unsaid.exit_code, 3);
+  EXPECT_NE(unsaid.err.find("cannot tell the pose's format"), std::string::npos) << unsaid.err;
+  const Json::Value report =
+      run_json("register " + kPair + " --initial-pose '" + dir.file("guess.tum") +
+               "' --pose-format tum --out '" + dir.path() + "'");
+  EXPECT_EQ(report["pose_format"].asString(), "tum");
+  // The line written: the refined translation, then a unit quaternion whose
+  // angle is the report's.
+  std::istringstream written(read_text(dir.file("room_scan2.refined.tum")));
+  std::string line;
+  while (std::getline(written, line) && line.rfind('#', 0) == 0) {
+  }
+  std::istringstream numbers(line);
+  double t[3], q[4];
+  for (double& v : t) ASSERT_TRUE(numbers >> v);
+  for (double& v : q) ASSERT_TRUE(numbers >> v);
+  for (int axis = 0; axis < 3; ++axis) {
+    EXPECT_NEAR(t[axis], report["refined_pose"]["translation"][axis].asDouble(), 1e-12);
+  }
+  EXPECT_NEAR(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3], 1.0, 1e-12);
+  EXPECT_NEAR(2.0 * std::acos(std::abs(q[3])) * 180.0 / 3.14159265358979323846,
+              report["refined_pose"]["rotation_deg"].asDouble(), 1e-9);
+}
+
 // The tutorial's guess as a project's pose: rows of a 4 x 4 in JSON.
 std::string tutorial_pose_json() {
   std::istringstream numbers(tutorial_matrix());
