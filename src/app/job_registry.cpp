@@ -9,6 +9,7 @@
 #include "occlusion/app/plan_job.hpp"
 #include "occlusion/app/reconstruct_job.hpp"
 #include "occlusion/app/region_growing_job.hpp"
+#include "occlusion/app/register_job.hpp"
 #include "occlusion/app/scan_job.hpp"
 #include "occlusion/app/simulate_job.hpp"
 #include "occlusion/app/study_job.hpp"
@@ -186,6 +187,26 @@ std::vector<JobInfo> make_jobs() {
                     {},
                     {}},
             &simulate_keys, &run_simulate),
+      entry(
+          JobInfo{"register",
+                  {"register"},
+                  "register",
+                  "reg",
+                  "path",
+                  "SOURCE --target CLOUD --initial-pose FILE [options]",
+                  "refine a scan's pose onto another scan from an initial pose",
+                  "Registration on PCL's classes, coarse to fine: each level registers voxel-grid\n"
+                  "copies of both scans (voxels from the point spacing, 3 x coarser per level),\n"
+                  "starting from the pose the level before reached. Reports the refined pose\n"
+                  "(written in the initial pose's format), the RMS residual and the overlap\n"
+                  "(share of source points with a target point within the finest search\n"
+                  "distance) before and after, how far the pose moved, and each level's\n"
+                  "iterations. Refuses (exit 3) scans that do not overlap at the initial pose,\n"
+                  "a fit that does not converge, moves beyond the pyramid's reach or ends\n"
+                  "below min_overlap. README, Registration has the details.",
+                  {},
+                  {}},
+          &register_keys, &run_register),
       entry(
           JobInfo{"study",
                   {"study"},

@@ -36,6 +36,7 @@ void print_extract_polygons(const JobRun& run, const FaceOptions& face);
 void print_study(const JobRun& run, const FaceOptions& face);
 void print_plan(const JobRun& run, const FaceOptions& face);
 void print_simulate(const JobRun& run, const FaceOptions& face);
+void print_register(const JobRun& run, const FaceOptions& face);
 
 // A job that completes with some parts failed (the study's failed runs) exits 1.
 int study_exit_status(const JobRun& run);

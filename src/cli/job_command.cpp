@@ -37,6 +37,7 @@ const std::map<std::string, JobFace>& job_faces() {
       {"study", {&print_study, &study_exit_status}},
       {"plan", {&print_plan}},
       {"simulate", {&print_simulate}},
+      {"register", {&print_register}},
   };
   return table;
 }

@@ -31,6 +31,7 @@
 #include "occlusion/app/plan_job.hpp"
 #include "occlusion/app/reconstruct_job.hpp"
 #include "occlusion/app/region_growing_job.hpp"
+#include "occlusion/app/register_job.hpp"
 #include "occlusion/app/scan_job.hpp"
 #include "occlusion/app/simulate_job.hpp"
 #include "occlusion/app/study_job.hpp"
@@ -324,6 +325,23 @@ JobResult reconstruct(const py::handle& source, const py::object& progress,
   return result_of(watch.run([&](const Progress& p) { return run_reconstruct(request, p); }));
 }
 
+// The refined pose is in the report (refined_pose.matrix) and, with out=, in
+// its file; the report's figures are the JSON's.
+JobResult register_scan(const py::handle& source, const py::object& progress,
+                        const py::kwargs& keys) {
+  const auto request = request_from(register_keys(), "register", keys, source_path(source));
+  PythonProgress watch(progress);
+  const RegisterReport report =
+      watch.run([&](const Progress& p) { return run_register(request, p); });
+  JobResult result = result_of(report);
+  py::array_t<double> matrix({4, 4});
+  auto view = matrix.mutable_unchecked<2>();
+  for (py::ssize_t r = 0; r < 4; ++r)
+    for (py::ssize_t c = 0; c < 4; ++c) view(r, c) = report.result.refined.matrix()(r, c);
+  result.arrays["refined_pose"] = matrix;
+  return result;
+}
+
 // The study's figures are its files and its report (the rows included).
 JobResult study(const py::object& progress, const py::kwargs& keys) {
   const auto request = request_from(study_keys(), "study", keys, "");
@@ -455,6 +473,12 @@ comes with the counts that make it: result.level_counts, and per viewpoint.)doc"
                      "arrays: confusion uint64 (C, C + 1), rows ground truth, columns "
                      "prediction then 'other'; scene_confusions, one per scene.") +
          keys_doc("evaluate"))
+            .c_str());
+  m.def("register", &register_scan, source, py::kw_only(), progress,
+        (std::string("Refine a scan's pose onto another scan (occlusion register): the source "
+                     "scan's path; target= the scan's, initial_pose= a pose file.\n"
+                     "arrays: refined_pose float64 (4, 4), source frame to target frame.") +
+         keys_doc("register"))
             .c_str());
   m.def("study", &study, py::kw_only(), progress,
         (std::string("The occlusion study (occlusion study): scenes=[paths, or {\"path\": ..., "
