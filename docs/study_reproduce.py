@@ -131,11 +131,10 @@ def bootstrap(scene, series):
     result = [(v, interval(d, u, len(groups)))
               for v, d, u in zip(values, draws, undefined)]
     if len(series) == 2:
-        difference = (None if None in values else values[1] - values[0])
-        result[2] = (difference, interval(draws[2], undefined[2],
-                                          len(groups)))
-        return result
-    return result[:1]
+        difference = None if None in values else values[1] - values[0]
+        result.append((difference, interval(draws[2], undefined[2],
+                                            len(groups))))
+    return result
 
 
 def number(cell):
