@@ -13,8 +13,9 @@
 #
 #   bash src/scripts/experiment.sh [OUT]        (default out/experiment)
 #
-# Environment: TRAIN_ROOMS (24), TEST_ROOMS (16), SPACING (0.04), STEPS
-# (1500, so that both models train within the hour; docs/study.md), SCANS
+# Environment: TRAIN_ROOMS (24), TEST_ROOMS (6: four studies within the hour;
+# an interval needs 5 scenes), SPACING (0.04), STEPS (1500, so that both
+# models train within the hour; docs/study.md), SCANS
 # (3 laser scans per training room), THREADS (2), OCCLUSION_BUILD (the
 # folder with occlusion and generate_s3dis_room; default build). Stages whose output exists are skipped, so a stopped
 # experiment resumes (each study run by run); delete OUT to start again.
@@ -23,7 +24,7 @@ set -euo pipefail
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 out="$(realpath -m "${1:-$repo/out/experiment}")"
 train_rooms="${TRAIN_ROOMS:-24}"
-test_rooms="${TEST_ROOMS:-16}"
+test_rooms="${TEST_ROOMS:-6}"
 spacing="${SPACING:-0.04}"
 steps="${STEPS:-1500}"
 scans="${SCANS:-3}"

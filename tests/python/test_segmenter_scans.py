@@ -134,3 +134,22 @@ def test_a_model_trained_on_scans_is_seeded_and_reads_its_cache(
     with pytest.raises(ValueError, match="--mesh"):
         train(str(bare), str(tmp_path / "d.pt"),
               {**settings, "scan_cache": str(tmp_path / "other")}, **quiet)
+
+
+def test_colours_from_a_cloud_without_colours_are_refused(rooms_with_meshes,
+                                                          tmp_path):
+    dataset, _ = rooms_with_meshes
+    room = room_dirs(str(dataset))[0]
+    bare = tmp_path / "bare.ply"
+    bare.write_text("ply\nformat ascii 1.0\nelement vertex 2\n"
+                    "property float x\nproperty float y\nproperty float z\n"
+                    "end_header\n0 0 0\n1 1 1\n")
+    mesh = os.path.join(room, os.path.basename(room) + ".obj")
+    done = subprocess.run([str(CLI), "simulate", mesh, "--colour-from",
+                           str(bare), "--azimuth-step", "5",
+                           "--elevation-step", "5", "--out", str(tmp_path)],
+                          capture_output=True, text=True)
+    assert done.returncode != 0
+    assert "--colour-from" in done.stderr and "no coloured points" in \
+        done.stderr, done.stderr
+    assert not list(tmp_path.glob("*.sim.ply"))
