@@ -2,11 +2,12 @@
 studies' study.csv alone: on four small studies made here (six scenes, a
 failed run, a run that repeats another's viewpoints, a run one study lacks),
 its table is the one experiment_summary.py writes from the tool's own
-study.json, and its slopes, differences and intervals are the tool's to the digits
-study.json holds."""
+study.json, and its slopes, differences and intervals are the tool's to
+the digits study.json holds."""
 
 import os
 import pathlib
+import json
 import random
 import subprocess
 import sys
@@ -99,7 +100,6 @@ def test_the_script_reproduces_the_tools_table(tmp_path):
 
     # To the last bit: the paired comparison of scans_ideal with
     # complete_ideal (one run unpaired), as study.json holds it.
-    import json
     report = json.loads((tmp_path / "scans_ideal/study.json").read_text())
     entry = next(c for c in report["comparisons"]
                  if c["measure"] == "occlusion_level")
