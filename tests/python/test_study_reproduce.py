@@ -129,3 +129,11 @@ def test_the_script_reproduces_the_tools_table(tmp_path):
     assert same(value, own["inference"]["within_scene_slope"]["value"])
     assert same(list(bounds),
                 own["inference"]["within_scene_slope"]["interval95"])
+
+
+def test_the_docs_table_reproduces_from_the_runs_tables():
+    # files/study_issue43 holds the four study.csv of the run docs/study.md
+    # reports: the script's table from them is the doc's, line for line.
+    table = study_reproduce.table(str(ROOT / "files/study_issue43"))
+    doc = (ROOT / "docs/study.md").read_text()
+    assert table in doc
