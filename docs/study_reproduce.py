@@ -21,6 +21,12 @@ import math
 import os
 import sys
 
+# Which study is which cell, and which pairs are compared: as
+# experiment_summary.py (the tool's side of the table) names them.
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                "..", "src", "scripts"))
+from experiment_summary import CELLS, DIFFERENCES, MEASURE  # noqa: E402
+
 MASK = (1 << 64) - 1
 SEED, STREAM, RESAMPLES, MIN_SCENES = 1, 2, 2000, 5
 
@@ -145,7 +151,7 @@ def number(cell):
     return value if math.isfinite(value) else None
 
 
-def measured_runs(path, measure="occlusion_level"):
+def measured_runs(path, measure=MEASURE):
     """{(scene, configuration): (x, mIoU)} in the CSV's order (Python dicts
     keep it), as the tool takes them."""
     with open(path, newline="") as stream:
@@ -197,20 +203,6 @@ def text(estimate):
     if bounds:
         out += f" [{bounds[0]:.3f}, {bounds[1]:.3f}]"
     return out
-
-
-CELLS = [("complete_ideal", "complete rooms", "ideal"),
-         ("scans_ideal", "rooms + scans", "ideal"),
-         ("complete_laser", "complete rooms", "laser"),
-         ("scans_laser", "rooms + scans", "laser")]
-DIFFERENCES = [("scans_ideal", "complete_ideal",
-                "model: scans − complete, ideal scans"),
-               ("scans_laser", "complete_laser",
-                "model: scans − complete, laser scans"),
-               ("complete_laser", "complete_ideal",
-                "scans: laser − ideal, model complete"),
-               ("scans_laser", "scans_ideal",
-                "scans: laser − ideal, model scans")]
 
 
 def table(out):

@@ -16,8 +16,10 @@
 # Environment: TRAIN_ROOMS (24), TEST_ROOMS (6: four studies within the hour;
 # an interval needs 5 scenes), SPACING (0.04), STEPS (1500, so that both
 # models train within the hour; docs/study.md), SCANS
-# (3 laser scans per training room), THREADS (2), OCCLUSION_BUILD (the
-# folder with occlusion and generate_s3dis_room; default build). Stages whose output exists are skipped, so a stopped
+# (3 laser scans per training room), THREADS (2), CONFIG (the studies'
+# config, whose laser_* keys the training scans use too; default
+# config/experiment.json), OCCLUSION_BUILD (the folder with occlusion and
+# generate_s3dis_room; default build). Stages whose output exists are skipped, so a stopped
 # experiment resumes (each study run by run); delete OUT to start again.
 set -euo pipefail
 
@@ -32,7 +34,7 @@ threads="${THREADS:-2}"
 build="${OCCLUSION_BUILD:-$repo/build}"
 occlusion="$build/occlusion"
 generate="$build/generate_s3dis_room"
-config="$repo/config/experiment.json"
+config="$(realpath "${CONFIG:-$repo/config/experiment.json}")"
 for tool in "$occlusion" "$generate"; do
   if [[ ! -x "$tool" ]]; then
     echo "experiment: $tool is missing: build first (bash src/scripts/build.sh)" >&2
