@@ -1,7 +1,9 @@
 """python3 -m occlusion_segmenter COMMAND ...
 
   train DATASET CHECKPOINT [--steps N --batch B --points P --width W
-                            --learning-rate R --seed S --threads T]
+                            --learning-rate R --seed S --threads T
+                            --scans N --scan-config STUDY.json
+                            --occlusion PATH --scan-cache DIR]
   infer CHECKPOINT INPUT.ply OUTPUT.ply [--ids seed|s3dis]
   serve CHECKPOINT [--ids seed|s3dis]      the study's persistent worker
   evaluate CHECKPOINT DATASET              mIoU on full rooms
@@ -84,6 +86,9 @@ def main(argv=None):
         train_parser.add_argument("--" + key.replace("_", "-"),
                                   type=type(value), default=value)
     train_parser.add_argument("--threads", type=int, default=1)
+    from .train import SCAN_SETTINGS
+    for key, value in SCAN_SETTINGS.items():
+        train_parser.add_argument("--" + key.replace("_", "-"), default=value)
     infer_parser = commands.add_parser("infer")
     infer_parser.add_argument("checkpoint")
     infer_parser.add_argument("input")
@@ -103,7 +108,8 @@ def main(argv=None):
         import torch
         torch.set_num_threads(args.threads)
         from .train import train
-        settings = {key: getattr(args, key) for key in DEFAULTS}
+        settings = {key: getattr(args, key)
+                    for key in list(DEFAULTS) + list(SCAN_SETTINGS)}
         train(args.dataset, args.checkpoint, settings,
               log=lambda text: print(text, file=sys.stderr, flush=True))
         return 0

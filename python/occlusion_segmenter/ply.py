@@ -85,3 +85,19 @@ def write_labelled(path, vertices, labels):
         stream.write(out.tobytes())
     import os
     os.replace(temporary, path)
+
+
+def read_class_names(path):
+    """The class names the header's `comment class ID NAME` lines give, in
+    id order (occlusion writes them for labelled clouds)."""
+    with open(path, "rb") as stream:
+        data = stream.read(1 << 20)
+    end = data.find(b"end_header")
+    names = {}
+    for line in data[:max(end, 0)].decode("ascii", "replace").splitlines():
+        words = line.split(None, 3)
+        if len(words) == 4 and words[:2] == ["comment", "class"]:
+            names[int(words[2])] = words[3]
+    if sorted(names) != list(range(len(names))):
+        raise PlyError(f"{path}: class comments do not number 0, 1, 2, ...")
+    return [names[i] for i in range(len(names))]

@@ -5,6 +5,7 @@ every random draw comes from the seed, and torch runs deterministically on
 the threads it is given.
 """
 
+import os
 import time
 
 import numpy as np
@@ -17,15 +18,38 @@ from .rooms import read_room, room_dirs
 
 # The real settings: about 14 minutes on 2 quiet cores (docs/study.md).
 DEFAULTS = {"steps": 3000, "batch": 8, "points": 2048, "width": 64,
-            "learning_rate": 0.002, "seed": 0}
+            "learning_rate": 0.002, "seed": 0, "scans": 0}
+# How training scans are made (scans > 0): the `occlusion` program, the
+# study config whose laser_* keys describe the sensor, and the cache folder
+# ("": DATASET/scans).
+SCAN_SETTINGS = {"occlusion": "occlusion", "scan_config": "", "scan_cache": ""}
 
 
-def _room_samples(paths):
-    rooms = []
+def _room_samples(paths, settings, dataset, log):
+    """Each complete room and, with settings["scans"] = N, N virtual scans of
+    it (scans.py): (positions, features, labels) each."""
+    rooms, scans = [], []
+    options = None
+    if settings["scans"] > 0:
+        from .scans import sensor_options
+        if not settings["scan_config"]:
+            raise ValueError("--scans needs --scan-config: the study config "
+                             "whose laser_* keys describe the sensor")
+        options = sensor_options(settings["scan_config"])
+    cache = settings["scan_cache"] or os.path.join(dataset, "scans")
     for path in paths:
         positions, colours, labels = read_room(path)
         rooms.append((positions, point_features(positions, colours), labels))
-    return rooms
+        if options is None:
+            continue
+        from .scans import room_scans
+        for p, c, lab in room_scans(path, (positions, colours, labels),
+                                    settings["scans"], settings["seed"],
+                                    settings["occlusion"], options, cache):
+            scans.append((p, point_features(p, c), lab))
+        log(f"{path}: {settings['scans']} scans, "
+            f"{sum(len(s[0]) for s in scans[-settings['scans']:])} points")
+    return rooms + scans
 
 
 def _class_weights(rooms):
@@ -55,13 +79,13 @@ def _batch(rooms, rng, batch, points):
 
 
 def train(dataset, checkpoint, settings, log=print):
-    settings = {**DEFAULTS, **settings}
+    settings = {**DEFAULTS, **SCAN_SETTINGS, **settings}
     torch.manual_seed(settings["seed"])
     torch.use_deterministic_algorithms(True)
     rng = np.random.default_rng(settings["seed"])
     paths = room_dirs(dataset)
     started = time.monotonic()
-    rooms = _room_samples(paths)
+    rooms = _room_samples(paths, settings, dataset, log)
     from .model import PointNetSeg
     model = PointNetSeg(INPUT_CHANNELS, len(CLASSES), settings["width"])
     optimiser = torch.optim.Adam(model.parameters(),

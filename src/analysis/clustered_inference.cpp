@@ -41,39 +41,59 @@ double percentile(const std::vector<double>& sorted, double share) {
   return sorted[below] + (at - static_cast<double>(below)) * (sorted[above] - sorted[below]);
 }
 
+// The runs of one bootstrap draw: groups.size() scenes drawn with
+// replacement, each with all of its runs; `scene` numbers the draws (a scene
+// drawn twice is two scenes: its copies are centred separately).
+void draw_runs(Rng& random, const std::vector<std::vector<std::size_t>>& groups,
+               std::vector<std::size_t>& runs, std::vector<std::size_t>& scene) {
+  runs.clear();
+  scene.clear();
+  for (std::size_t k = 0; k < groups.size(); ++k) {
+    for (const std::size_t run : groups[draw_below(random, groups.size())]) {
+      runs.push_back(run);
+      scene.push_back(k);
+    }
+  }
+}
+
+std::vector<double> pick(const std::vector<double>& values, const std::vector<std::size_t>& runs) {
+  std::vector<double> picked;
+  picked.reserve(runs.size());
+  for (const std::size_t run : runs) picked.push_back(values[run]);
+  return picked;
+}
+
+// The percentile interval of the defined draws. Draws left out would bias
+// the interval towards the scenes that define the estimate; past a few,
+// there is no honest interval.
+void set_interval(std::vector<double> draws, std::size_t scenes, const InferenceOptions& options,
+                  ClusteredEstimate& estimate) {
+  const bool enough_defined = static_cast<double>(estimate.undefined_resamples) <=
+                              0.05 * static_cast<double>(options.resamples);
+  if (scenes < kMinScenesForInterval || !enough_defined || draws.empty()) return;
+  std::sort(draws.begin(), draws.end());
+  estimate.interval95 = Interval{percentile(draws, 0.025), percentile(draws, 0.975)};
+}
+
 void bootstrap(const std::vector<double>& x, const std::vector<double>& y,
                const std::vector<std::vector<std::size_t>>& groups, const Statistic& statistic,
                const InferenceOptions& options, std::uint64_t stream, ClusteredEstimate& estimate) {
   Rng random(options.seed, stream);
   std::vector<double> draws;
-  std::vector<double> xb, yb;
-  std::vector<std::size_t> sb;
+  std::vector<std::size_t> runs, sb;
   for (std::size_t b = 0; b < options.resamples; ++b) {
-    xb.clear();
-    yb.clear();
-    sb.clear();
-    for (std::size_t k = 0; k < groups.size(); ++k) {
-      // A scene drawn twice is two scenes: its copies are centred separately.
-      for (const std::size_t run : groups[draw_below(random, groups.size())]) {
-        xb.push_back(x[run]);
-        yb.push_back(y[run]);
-        sb.push_back(k);
-      }
-    }
-    if (const auto value = statistic(xb, yb, sb)) {
+    draw_runs(random, groups, runs, sb);
+    if (const auto value = statistic(pick(x, runs), pick(y, runs), sb)) {
       draws.push_back(*value);
     } else {
       ++estimate.undefined_resamples;
     }
   }
-  // Draws left out would bias the interval towards the scenes that define
-  // the estimate; past a few, there is no honest interval.
-  const bool enough_defined = static_cast<double>(estimate.undefined_resamples) <=
-                              0.05 * static_cast<double>(options.resamples);
-  if (groups.size() < kMinScenesForInterval || !enough_defined || draws.empty()) return;
-  std::sort(draws.begin(), draws.end());
-  estimate.interval95 = Interval{percentile(draws, 0.025), percentile(draws, 0.975)};
+  set_interval(std::move(draws), groups.size(), options, estimate);
 }
+
+// clustered_association's streams: each statistic's bootstrap and permutations.
+constexpr std::uint64_t kSlopeBootstrapStream = 2;
 
 void permutation_test(const std::vector<double>& x, const std::vector<double>& y,
                       const std::vector<std::size_t>& scene,
@@ -166,11 +186,51 @@ ClusteredAssociation clustered_association(const std::vector<double>& x,
   result.spearman.value = spearman_correlation(x, y);
   bootstrap(x, y, groups, pearson, options, 0, result.pearson);
   bootstrap(x, y, groups, spearman, options, 1, result.spearman);
-  bootstrap(x, y, groups, slope, options, 2, result.within_scene_slope);
+  bootstrap(x, y, groups, slope, options, kSlopeBootstrapStream, result.within_scene_slope);
   permutation_test(x, y, scene, groups, pearson, options, 3, result.pearson);
   permutation_test(average_ranks(x), average_ranks(y), scene, groups, pearson_of_ranks, options, 4,
                    result.spearman);
   permutation_test(x, y, scene, groups, slope, options, 5, result.within_scene_slope);
+  return result;
+}
+
+PairedSlopes paired_slopes(const std::vector<double>& x_first, const std::vector<double>& y_first,
+                           const std::vector<double>& x_second, const std::vector<double>& y_second,
+                           const std::vector<std::size_t>& scene, const InferenceOptions& options) {
+  if (options.resamples == 0) {
+    throw std::invalid_argument("paired slopes: resamples must be > 0");
+  }
+  if (x_second.size() != x_first.size()) {
+    throw std::invalid_argument("paired slopes: " + std::to_string(x_first.size()) + " and " +
+                                std::to_string(x_second.size()) + " runs do not pair");
+  }
+  PairedSlopes result;
+  result.options = options;
+  result.runs = x_first.size();
+  const std::vector<std::vector<std::size_t>> groups = runs_by_scene(scene);
+  result.scenes = groups.size();
+  result.first.value = within_scene_slope(x_first, y_first, scene);
+  result.second.value = within_scene_slope(x_second, y_second, scene);
+  if (result.first.value && result.second.value) {
+    result.difference.value = *result.second.value - *result.first.value;
+  }
+  Rng random(options.seed, kSlopeBootstrapStream);
+  std::vector<double> first_draws, second_draws, difference_draws;
+  std::vector<std::size_t> runs, sb;
+  for (std::size_t b = 0; b < options.resamples; ++b) {
+    draw_runs(random, groups, runs, sb);
+    const auto first = within_scene_slope(pick(x_first, runs), pick(y_first, runs), sb);
+    const auto second = within_scene_slope(pick(x_second, runs), pick(y_second, runs), sb);
+    if (first) first_draws.push_back(*first);
+    if (second) second_draws.push_back(*second);
+    if (first && second) difference_draws.push_back(*second - *first);
+    result.first.undefined_resamples += first ? 0 : 1;
+    result.second.undefined_resamples += second ? 0 : 1;
+    result.difference.undefined_resamples += first && second ? 0 : 1;
+  }
+  set_interval(std::move(first_draws), groups.size(), options, result.first);
+  set_interval(std::move(second_draws), groups.size(), options, result.second);
+  set_interval(std::move(difference_draws), groups.size(), options, result.difference);
   return result;
 }
 

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -102,6 +103,31 @@ LabelTransfer transfer_labels(const std::vector<Eigen::Vector3f>& source,
   result.max_matched_distance = std::sqrt(static_cast<double>(max_matched));
   result.seconds = analysis_support::seconds_since(start);
   return result;
+}
+
+void colour_from_nearest(PointCloud& target, const PointCloud& source, unsigned threads,
+                         const Progress& progress) {
+  if (target.size() == 0) return;
+  if (source.size() == 0 || !source.has_colours()) {
+    throw std::invalid_argument("no coloured points to take the colours from");
+  }
+  // Positions in the source's frame; the index of each source point is the
+  // "label" a target point takes.
+  std::vector<Eigen::Vector3f> at;
+  at.reserve(target.size());
+  for (std::size_t i = 0; i < target.size(); ++i) {
+    at.push_back(
+        source.to_local(target.to_original(target.positions[i].cast<double>())).cast<float>());
+  }
+  std::vector<std::int32_t> index(source.size());
+  for (std::size_t i = 0; i < index.size(); ++i) index[i] = static_cast<std::int32_t>(i);
+  LabelTransferOptions options;
+  options.max_distance = std::numeric_limits<double>::infinity();
+  options.threads = threads;
+  const LabelTransfer nearest = transfer_labels(source.positions, index, at, options, progress);
+  target.colours.resize(target.size());
+  for (std::size_t i = 0; i < target.size(); ++i)
+    target.colours[i] = source.colours[nearest.labels[i]];
 }
 
 }  // namespace occlusion

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "job_support.hpp"
+#include "occlusion/analysis/label_transfer.hpp"
 #include "occlusion/app/errors.hpp"
 #include "occlusion/app/json_output.hpp"
 #include "occlusion/app/memory_budget.hpp"
@@ -180,6 +181,14 @@ SimulateReport run_simulate_on(const TriangleMesh& mesh, const SimulateRequest& 
     report.scan = simulate_scan(mesh, report.stations, sensor, options, progress);
   } catch (const std::invalid_argument& e) {
     throw UsageError(std::string("simulate: ") + e.what());
+  }
+  if (!request.colour_from.empty()) {
+    const PointCloud colours = read_cloud(request.colour_from);
+    try {
+      colour_from_nearest(report.scan.cloud, colours, request.threads, progress);
+    } catch (const std::invalid_argument& e) {
+      throw KeyError("colour_from", request.colour_from + ": " + e.what());
+    }
   }
   if (report.scan.cloud.size() == 0) {
     report.warnings.push_back(

@@ -26,15 +26,16 @@ const Keys<SimulateRequest>& simulate_keys() {
        up_key(&R::up).doc("the laser's vertical axis and the camera image's up"),
        key("noise", &R::noise)
            .doc("measurement noise and depth steps; false: every return exactly on the mesh"),
-       key("max_incidence", &R::max_incidence)
-           .positive_up_to(90)
-           .unit("degrees")
-           .doc("returns whose beam meets the surface farther than this from its normal are "
-                "lost (too little light comes back)"),
-       seed_key(&R::seed),
+       max_incidence_key(&R::max_incidence), seed_key(&R::seed),
        key("truth", &R::truth)
            .doc("also write each point's true surface point (true_x, true_y, true_z), its "
                 "face's normal towards the station (true_normal_x, _y, _z) and face")},
+      {key("colour_from", &R::colour_from)
+           .path()
+           .metavar("CLOUD")
+           .doc("a coloured cloud of the same scene, in the mesh's frame (the room's points "
+                "beside generate_s3dis_room --mesh's OBJ): each return takes the colour of its "
+                "nearest point, as a scanner's camera colours its returns")},
       mount(laser_scanner_keys(), &R::laser),
       mount(depth_camera_keys(), &R::camera),
       {cloud_format_key(&R::format, "format of the written cloud"), threads_key(&R::threads),

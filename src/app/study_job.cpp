@@ -289,6 +289,9 @@ void validate(const StudyRequest& request) {
   job::validate_estimation(request.estimation);
   job::validate_segmenter(request);
   parse_shard(request.shard);
+  // A sensor's scan needs every scene's mesh: a missing one stops the study
+  // before its first run, not at that scene's.
+  for (const auto& scene : request.scenes) job::check_scene_mesh(request, scene.path);
 }
 
 StudyReport run_study(const StudyRequest& request, const Progress& progress) {
@@ -414,12 +417,14 @@ StudyReport run_study(const StudyRequest& request, const Progress& progress) {
   return report;
 }
 
-StudyReport run_study_merge(const std::vector<std::string>& inputs, const std::string& out) {
+StudyReport run_study_merge(const std::vector<std::string>& inputs, const std::string& out,
+                            const std::vector<std::string>& compare_with) {
   if (out.empty()) throw UsageError("study merge needs an output folder");
   const auto start = job::Clock::now();
   StudyReport report;
   report.job = "study_merge";
   report.request.out = out;
+  report.request.compare_with = compare_with;
   report.inputs = inputs;
   std::vector<CsvTable> tables;
   for (const auto& input : inputs) tables.push_back(read_csv(input));
@@ -430,6 +435,23 @@ StudyReport run_study_merge(const std::vector<std::string>& inputs, const std::s
   finish(report, out, start);
   return report;
 }
+
+namespace {
+
+Json::Value estimate_json(const ClusteredEstimate& e) {
+  Json::Value value(Json::objectValue);
+  value["value"] = to_json(e.value);
+  value["interval95"] = Json::Value();
+  if (e.interval95) {
+    value["interval95"].append(e.interval95->lo);
+    value["interval95"].append(e.interval95->hi);
+  }
+  value["p_value"] = to_json(e.p_value);
+  value["undefined_resamples"] = Json::UInt64(e.undefined_resamples);
+  return value;
+}
+
+}  // namespace
 
 Json::Value to_json(const StudyReport& report) {
   const StudyRequest& q = report.request;
@@ -449,27 +471,31 @@ Json::Value to_json(const StudyReport& report) {
     entry["intercept"] = to_json(fit ? std::optional<double>(fit->intercept) : std::nullopt);
     const ClusteredAssociation& a = m.association;
     entry["scenes"] = Json::UInt64(a.scenes);
-    const auto estimate = [](const ClusteredEstimate& e) {
-      Json::Value value(Json::objectValue);
-      value["value"] = to_json(e.value);
-      value["interval95"] = Json::Value();
-      if (e.interval95) {
-        value["interval95"].append(e.interval95->lo);
-        value["interval95"].append(e.interval95->hi);
-      }
-      value["p_value"] = to_json(e.p_value);
-      value["undefined_resamples"] = Json::UInt64(e.undefined_resamples);
-      return value;
-    };
-    entry["inference"]["pearson"] = estimate(a.pearson);
-    entry["inference"]["spearman"] = estimate(a.spearman);
-    entry["inference"]["within_scene_slope"] = estimate(a.within_scene_slope);
+    entry["inference"]["pearson"] = estimate_json(a.pearson);
+    entry["inference"]["spearman"] = estimate_json(a.spearman);
+    entry["inference"]["within_scene_slope"] = estimate_json(a.within_scene_slope);
     entry["inference"]["resamples"] = Json::UInt64(a.options.resamples);
     entry["inference"]["permutations"] = Json::UInt64(a.options.permutations);
     entry["inference"]["seed"] = Json::UInt64(a.options.seed);
     correlations.append(entry);
   }
   json["correlations"] = correlations;
+  Json::Value comparisons(Json::arrayValue);
+  for (const auto& c : report.comparisons) {
+    Json::Value entry(Json::objectValue);
+    entry["study"] = c.study;
+    entry["measure"] = c.measure;
+    entry["against"] = "miou";
+    entry["runs"] = Json::UInt64(c.slopes.runs);
+    entry["scenes"] = Json::UInt64(c.slopes.scenes);
+    entry["slope_there"] = estimate_json(c.slopes.first);
+    entry["slope_here"] = estimate_json(c.slopes.second);
+    entry["difference"] = estimate_json(c.slopes.difference);
+    entry["resamples"] = Json::UInt64(c.slopes.options.resamples);
+    entry["seed"] = Json::UInt64(c.slopes.options.seed);
+    comparisons.append(entry);
+  }
+  json["comparisons"] = comparisons;
   json["runs_total"] = Json::UInt64(report.runs_total);
   json["runs_in_shard"] = Json::UInt64(report.runs_in_shard);
   json["runs_skipped"] = Json::UInt64(report.runs_skipped);

@@ -4,6 +4,7 @@
 // its own job.
 
 #include "occlusion/app/region_growing_job.hpp"
+#include "occlusion/app/sensor_model_keys.hpp"
 #include "occlusion/app/shared_keys.hpp"
 #include "occlusion/app/study_job.hpp"
 
@@ -19,6 +20,17 @@ ViewpointChoice choice_from_json(const Json::Value& set) {
     points.emplace_back(p[0].asDouble(), p[1].asDouble(), p[2].asDouble());
   }
   return ViewpointChoice::from_points(std::move(points));
+}
+
+// The laser's keys, named laser_<key>: the study's own min_range and
+// max_range (which filter the scene's stations) would clash with the laser's.
+Keys<StudyRequest> laser_keys() {
+  Keys<StudyRequest> keys = mount(laser_scanner_keys(), &StudyRequest::laser);
+  for (auto& k : keys) {
+    k.info.name = "laser_" + k.info.name;
+    if (!k.info.cli_name.empty()) k.info.cli_name = "--laser-" + k.info.cli_name.substr(2);
+  }
+  return keys;
 }
 
 std::string pattern_configuration_name(int pattern) {
@@ -79,6 +91,15 @@ const std::vector<std::string>& study_scene_override_keys() {
       "primitive",      "point_radius", "disc_coverage", "normal_neighbours",
       "self_tolerance", "polygon_path", "frame",         "up"};
   return names;
+}
+
+const Keys<StudyRequest>& study_sensor_keys() {
+  using R = StudyRequest;
+  static const Keys<R> keys = join<R>({
+      {max_incidence_key(&R::max_incidence)},
+      laser_keys(),
+  });
+  return keys;
 }
 
 const Keys<StudyRequest>& study_keys() {
@@ -157,6 +178,16 @@ const Keys<StudyRequest>& study_keys() {
                 "(every point once, no other: else the run fails); labels: a bare label file, "
                 "one id per line in {input}'s order, which nothing can check (a file off by "
                 "one line scores as a slightly worse segmentation)"),
+       key("compare_with", &R::compare_with)
+           .path()
+           .cli("--compare-with")
+           .repeatable()
+           .metavar("DIR")
+           .doc("other studies' folders (their study.csv) of the same scenes and "
+                "configurations, made with another segmenter or scan_model: study.md sets "
+                "their within-scene slopes beside this one's, with the difference and its "
+                "interval from one scene bootstrap over the runs paired by scene and "
+                "configuration"),
        cloud_format_key(&R::format, "format of the scanned clouds in OUT/runs"),
        key("shard", &R::shard).metavar("I/N").doc("make only the runs k with k mod N = I"),
        max_memory_key(&R::max_memory_mb),
@@ -166,7 +197,15 @@ const Keys<StudyRequest>& study_keys() {
       mount(Keys<CloudOcclusionRequest>{frame_key(&CloudOcclusionRequest::frame),
                                         up_key(&CloudOcclusionRequest::up)},
             &R::tracing),
-      {self_tolerance_key(&R::self_tolerance)},
+      {self_tolerance_key(&R::self_tolerance),
+       key("scan_model", &R::scan_model)
+           .choices({kIdealScan, kLaserScan})
+           .doc("ideal: each run's scan is the scene's points its viewpoints see, every one, "
+                "exact; laser: a terrestrial laser scanner at each viewpoint scans the scene's "
+                "mesh (the OBJ beside it: generate_s3dis_room --mesh), with the laser_* keys' "
+                "angular grid (density falling with range), range noise and ranges, and "
+                "max_incidence; colours from the scene's nearest points (docs/study.md)")},
+      study_sensor_keys(),
       scoring_keys<R>(),
       mount(estimation_keys(), &R::estimation),
   });

@@ -75,7 +75,7 @@ Json::Value row_parameters(const StudyRequest& q) {
   Json::Value p = parameters_json(study_keys(), q);
   for (const char* key :
        {"scenes", "configurations", "patterns", "shard", "out", "threads", "skip_failed", "fresh",
-        "segmenter_timeout", "polygon_path", "mapping_path", "max_memory_mb"}) {
+        "segmenter_timeout", "polygon_path", "mapping_path", "max_memory_mb", "compare_with"}) {
     p.removeMember(key);
   }
   // Keys declared after studies were first run, whose default leaves every row
@@ -83,8 +83,12 @@ Json::Value row_parameters(const StudyRequest& q) {
   // they existed still resumes.
   static const Json::Value defaults = parameters_json(study_keys(), StudyRequest{});
   for (const char* key : {"scans", "min_range", "max_range", "class_mapping", "class_names",
-                          "frame", "up", "scoring"}) {
+                          "frame", "up", "scoring", "scan_model"}) {
     if (p.isMember(key) && same(p[key], defaults[key])) p.removeMember(key);
+  }
+  // An ideal scan uses no sensor: its rows stay when only the laser changes.
+  if (q.scan_model == kIdealScan) {
+    for (const auto& k : study_sensor_keys()) p.removeMember(k.info.name);
   }
   p["segmenter"] = segmenter_name(q.segmenter);
   p["polygon_file"] = content_digest(q.tracing.polygon_path);

@@ -1,5 +1,6 @@
 // One run of the study: scan, measure, segment, score.
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <filesystem>
@@ -102,11 +103,21 @@ StudyRow run_study_once(const StudyContext& context, const StudyRunInput& run,
   for (const auto& position : viewpoints.positions) {
     row.viewpoints.push_back(cloud.to_original(position));  // the table is in the file's frame
   }
-  const ScanReport scan =
-      run_scan_on(cloud, viewpoints, study_scan_request(request, run.scene_path), inner);
-  row.visible_fraction = scan.result.visible_fraction;
-  const std::vector<bool> seen = seen_points(scan.result);
-  PointCloud scanned = cloud.subset(seen);
+  std::vector<bool> seen;
+  PointCloud scanned;
+  if (request.scan_model == kIdealScan) {
+    const ScanReport scan =
+        run_scan_on(cloud, viewpoints, study_scan_request(request, run.scene_path), inner);
+    row.visible_fraction = scan.result.visible_fraction;
+    seen = seen_points(scan.result);
+    scanned = cloud.subset(seen);
+  } else {
+    SensorScan sensor = sensor_scan(request, cloud, run.scene_path, viewpoints, inner);
+    seen = std::move(sensor.covered);
+    scanned = std::move(sensor.scanned);
+    const auto covered = static_cast<double>(std::count(seen.begin(), seen.end(), true));
+    row.visible_fraction = cloud.size() == 0 ? 0.0 : covered / static_cast<double>(cloud.size());
+  }
   row.scanned_points = scanned.size();
   if (scanned.size() == 0) {
     throw UsageError("configuration '" + row.configuration + "' sees no point of " + row.scene);

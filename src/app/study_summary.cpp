@@ -8,6 +8,7 @@
 
 #include "job_support.hpp"
 #include "occlusion/analysis/baseline_segmenter.hpp"
+#include "occlusion/app/errors.hpp"
 #include "occlusion/io/atomic_file.hpp"
 #include "occlusion/io/svg_plot.hpp"
 #include "report_format.hpp"
@@ -82,6 +83,60 @@ void pairs(const CsvTable& table, const std::string& column, std::vector<double>
       }
     }
   }
+}
+
+// Each run key's (measure, mIoU), for the rows pairs() takes.
+std::map<std::string, std::pair<double, double>> measured_runs(const CsvTable& table,
+                                                               const std::string& column) {
+  const std::size_t c = table.column(column), miou = table.column("miou");
+  const std::vector<bool> repeated = repeated_runs(table, nullptr);
+  std::map<std::string, std::pair<double, double>> runs;
+  for (std::size_t r = 0; r < table.rows.size(); ++r) {
+    const auto& row = table.rows[r];
+    const auto a = cell_number(row[c]), b = cell_number(row[miou]);
+    if (a && b && !repeated[r]) runs[run_key(table, row)] = {*a, *b};
+  }
+  return runs;
+}
+
+// This study's rows against another study's (its folder's study.csv), one
+// comparison per measure: the runs both have, in this table's order, scenes
+// numbered as pairs() numbers them.
+std::vector<StudyComparison> compare_with_study(const CsvTable& here, const std::string& folder,
+                                                std::vector<std::string>& warnings) {
+  const std::string csv = (std::filesystem::path(folder) / "study.csv").string();
+  if (!std::filesystem::is_regular_file(csv)) {
+    throw KeyError("compare_with", folder + " has no study.csv (a study's out folder)");
+  }
+  const CsvTable there = read_study_table(csv, here.columns);
+  std::vector<StudyComparison> comparisons;
+  for (const auto& measure : kMeasures) {
+    const auto theirs = measured_runs(there, measure.column);
+    const auto ours = measured_runs(here, measure.column);
+    std::vector<double> x_there, y_there, x_here, y_here;
+    std::vector<std::size_t> scenes;
+    std::map<std::string, std::size_t> scene_numbers;
+    for (const auto& row : here.rows) {
+      const std::string key = run_key(here, row);
+      const auto mine = ours.find(key), other = theirs.find(key);
+      if (mine == ours.end() || other == theirs.end()) continue;
+      x_there.push_back(other->second.first);
+      y_there.push_back(other->second.second);
+      x_here.push_back(mine->second.first);
+      y_here.push_back(mine->second.second);
+      const std::string& scene = row[here.column("scene")];
+      scenes.push_back(scene_numbers.emplace(scene, scene_numbers.size()).first->second);
+    }
+    if (x_here.empty() && std::string(measure.column) == "exterior_occlusion_level") continue;
+    const std::size_t unpaired = ours.size() - x_here.size();
+    if (unpaired > 0) {
+      warnings.push_back(std::to_string(unpaired) + " runs with " + measure.column +
+                         " have no counterpart in " + csv + ": the comparison leaves them out");
+    }
+    comparisons.push_back({folder, measure.column,
+                           paired_slopes(x_there, y_there, x_here, y_here, scenes, kInference)});
+  }
+  return comparisons;
 }
 
 std::string fixed(const std::optional<double>& value) {
@@ -312,6 +367,19 @@ void write_markdown(std::ostream& out, const StudyReport& report, const std::str
         << with_interval(a.within_scene_slope, "%.3g") << " | "
         << format_number("%.3g", a.within_scene_slope.p_value, "–") << " | " << line << " |\n";
   }
+  if (!report.comparisons.empty()) {
+    out << "\n## Against other studies of the same runs\n\n"
+        << "| measure | other study | paired runs | scenes | slope there [95 %] | slope here "
+           "[95 %] | here − there [95 %] |\n|---|---|---:|---:|---|---|---|\n";
+    for (const auto& c : report.comparisons) {
+      out << "| " << c.measure << " | " << markdown_cell(c.study) << " | " << c.slopes.runs << " | "
+          << c.slopes.scenes << " | " << with_interval(c.slopes.first, "%.3g") << " | "
+          << with_interval(c.slopes.second, "%.3g") << " | "
+          << with_interval(c.slopes.difference, "%.3g") << " |\n";
+    }
+    out << "\nRuns are paired by scene and configuration; each bootstrap draw takes the same "
+           "scenes for both studies, so the difference's interval keeps the pairing.\n";
+  }
   out << "\nA correlation needs at least 3 runs and a measure that varies; – marks one that is "
          "undefined. Intervals: 95 % percentile intervals of a bootstrap that draws whole scenes ("
       << kInference.resamples << " draws, seed " << kInference.seed << "), given from "
@@ -395,6 +463,11 @@ void write_study_summary(StudyReport& report, const std::string& out) {
                                 " is undefined");
     }
     report.correlations.push_back({measure.column, correlation, association});
+  }
+  report.comparisons.clear();
+  for (const auto& folder : report.request.compare_with) {
+    for (auto& comparison : compare_with_study(report.table, folder, report.warnings))
+      report.comparisons.push_back(std::move(comparison));
   }
   ensure_directory(out);
   const auto path = [&](const char* name) { return (std::filesystem::path(out) / name).string(); };

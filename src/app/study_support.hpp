@@ -70,6 +70,22 @@ struct StudyRunInput {
 StudyRow run_study_once(const StudyContext& context, const StudyRunInput& run,
                         const Progress& progress, std::vector<std::string>& warnings);
 
+// A run's scan made by the scan_model's sensor: the scanned cloud in the
+// scene's frame (its labels from the mesh's groups, its colours from the
+// scene's nearest points) and, per scene point, whether a return lies
+// within twice the scene's spacing of it (what the scan covered).
+struct SensorScan {
+  PointCloud scanned;
+  std::vector<bool> covered;
+};
+SensorScan sensor_scan(const StudyRequest& request, const PointCloud& scene,
+                       const std::string& scene_path, const ViewpointChoice::Resolved& viewpoints,
+                       const Progress& progress);
+// The scene's mesh: ROOM/ROOM.obj for a folder, X.obj for a file X.ply.
+std::string scene_mesh_path(const std::string& scene_path);
+// UsageError when the scan model needs the scene's mesh and it is missing.
+void check_scene_mesh(const StudyRequest& request, const std::string& scene_path);
+
 // The request as -fscan would take it for `scene`.
 ScanRequest study_scan_request(const StudyRequest& request, const std::string& scene);
 // File stem of a run's files in runs/: scene and configuration, made safe.

@@ -51,15 +51,22 @@ void print_study(const JobRun& run, const FaceOptions&) {
 
 int run_study_merge_command(const std::vector<std::string>& args) {
   bool json = false;
-  std::vector<std::string> positional;
-  for (const auto& arg : args) {
+  std::vector<std::string> positional, compare_with;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& arg = args[i];
     if (arg == "--json") {
       json = true;
+    } else if (arg == "--compare-with") {
+      if (i + 1 == args.size()) throw UsageError("--compare-with needs a study's folder");
+      compare_with.push_back(args[++i]);
     } else if (arg == "-h" || arg == "--help") {
       std::printf(
-          "usage: occlusion study merge OUT A.csv [B.csv ...] [--json] [-q]\n\n"
+          "usage: occlusion study merge OUT A.csv [B.csv ...] [--compare-with DIR ...] "
+          "[--json] [-q]\n\n"
           "Joins the study.csv tables of shards (--shard I/N) into OUT: the table and the\n"
-          "statistics are those of one unsharded run.\n");
+          "statistics are those of one unsharded run. --compare-with: another study's\n"
+          "folder of the same runs, whose slopes study.md sets beside these (the study's\n"
+          "compare_with key).\n");
       return 0;
     } else if (arg == "-q" || arg == "--quiet") {
       // merging prints no progress
@@ -71,7 +78,7 @@ int run_study_merge_command(const std::vector<std::string>& args) {
   }
   if (positional.size() < 2) throw UsageError("usage: occlusion study merge OUT A.csv [B.csv ...]");
   const StudyReport report =
-      run_study_merge({positional.begin() + 1, positional.end()}, positional.front());
+      run_study_merge({positional.begin() + 1, positional.end()}, positional.front(), compare_with);
   print_warnings(report.warnings);
   if (json) {
     print_json(to_json(report));

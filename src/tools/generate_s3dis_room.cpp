@@ -1,7 +1,7 @@
 // generate_s3dis_room OUT_DIR [--seed S] [--spacing METRES] [--name office_1]
-//                     [--openings FILE] [--varied] [--noise METRES]
+//                     [--openings FILE] [--varied] [--noise METRES] [--mesh]
 // generate_s3dis_room --dataset OUT_DIR --rooms N [--seed S] [--spacing METRES]
-//                     [--noise METRES] [--area Area_1]
+//                     [--noise METRES] [--area Area_1] [--mesh]
 //
 // Writes labelled synthetic rooms in the S3DIS layout, so that demos, tests
 // and the study's learned segmenter have rooms without downloading the
@@ -18,7 +18,10 @@
 // in OUT_DIR/openings/<kind>_<k>.txt, and OUT_DIR/rooms.tsv naming each
 // room's kind, seed (`--varied --seed` remakes it alone) and point count.
 // --noise adds Gaussian sensor noise of that standard deviation to every
-// point. The output depends on the options only.
+// point. --mesh also writes each room's surfaces, OUT_DIR/<name>/<name>.obj,
+// one group per instance named as its Annotations file (chair_2): what a
+// virtual scanner scans (the study's scan_model laser, the segmenter's
+// training scans). The output depends on the options only.
 
 #include <cstdint>
 #include <cstdio>
@@ -51,6 +54,7 @@ struct Options {
   std::string openings;
   bool varied = false;
   bool dataset = false;
+  bool mesh = false;
   int rooms = 0;
   std::string area = "Area_1";
 };
@@ -58,9 +62,9 @@ struct Options {
 [[noreturn]] void usage(const std::string& problem) {
   std::cerr << "generate_s3dis_room: " << problem << "\n"
             << "usage: generate_s3dis_room OUT_DIR [--seed S] [--spacing METRES] "
-               "[--name office_1] [--openings FILE] [--varied] [--noise METRES]\n"
+               "[--name office_1] [--openings FILE] [--varied] [--noise METRES] [--mesh]\n"
                "       generate_s3dis_room --dataset OUT_DIR --rooms N [--seed S] "
-               "[--spacing METRES] [--noise METRES] [--area Area_1]\n";
+               "[--spacing METRES] [--noise METRES] [--area Area_1] [--mesh]\n";
   std::exit(2);
 }
 
@@ -104,6 +108,8 @@ Options parse(int argc, char** argv) {
         named = true;
       } else if (arg == "--openings") {
         options.openings = value();
+      } else if (arg == "--mesh") {
+        options.mesh = true;
       } else if (arg == "--varied") {
         options.varied = true;
       } else if (arg == "--dataset") {
@@ -158,6 +164,7 @@ void write_dataset(const Options& options) {
     const room::VariedRoom made = room::varied_room(seed, options.spacing, options.noise);
     const std::string name = made.kind + "_" + std::to_string(k + 1);
     const std::size_t points = room::write_s3dis_room(area, name, made.instances);
+    if (options.mesh) room::write_room_mesh(area, name, made.instances);
     if (!made.openings.empty()) {
       occlusion::write_polygons((fs::path(openings) / (name + ".txt")).string(), made.openings);
     }
@@ -183,6 +190,7 @@ void write_one_room(const Options& options) {
     openings = room::office_openings();
   }
   const std::size_t points = room::write_s3dis_room(options.out_dir, options.name, instances);
+  if (options.mesh) room::write_room_mesh(options.out_dir, options.name, instances);
   if (!options.openings.empty()) {
     if (openings.empty()) {
       throw std::runtime_error("this room has no door or window, so there is no --openings file");

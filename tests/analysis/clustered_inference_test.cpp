@@ -110,6 +110,54 @@ TEST(ClusteredInference, WithoutAnEffectFalseAlarmsStayNearFivePercent) {
   EXPECT_GE(covered, 170) << "of " << studies;  // 190 expected
 }
 
+TEST(ClusteredInference, PairedSlopesAndTheirDifferenceByHand) {
+  // First study: scene 0 x 0, 1 with y 1, 0 (sxx 0.5, sxy -0.5); scene 1
+  // x 0, 2 with y 1, 0 (sxx 2, sxy -1): slope -1.5 / 2.5 = -0.6.
+  // Second, its own x: scene 0 x 0, 1 with y 1, 0.5 (sxx 0.5, sxy -0.25);
+  // scene 1 x 0, 1 with y 1, 0.8 (sxx 0.5, sxy -0.1): slope -0.35.
+  // Difference, second - first: 0.25. Two scenes: no interval.
+  const std::vector<std::size_t> scene = {4, 4, 9, 9};
+  const PairedSlopes paired =
+      paired_slopes({0, 1, 0, 2}, {1, 0, 1, 0}, {0, 1, 0, 1}, {1, 0.5, 1, 0.8}, scene, {200, 1, 1});
+  EXPECT_EQ(paired.runs, 4u);
+  EXPECT_EQ(paired.scenes, 2u);
+  ASSERT_TRUE(paired.first.value && paired.second.value && paired.difference.value);
+  EXPECT_NEAR(*paired.first.value, -0.6, 1e-12);
+  EXPECT_NEAR(*paired.second.value, -0.35, 1e-12);
+  EXPECT_NEAR(*paired.difference.value, 0.25, 1e-12);
+  EXPECT_FALSE(paired.difference.interval95);
+  EXPECT_THROW(paired_slopes({0, 1}, {1, 0}, {0}, {1}, {0, 0}), std::invalid_argument);
+}
+
+TEST(ClusteredInference, PairedDifferenceKeepsThePairingThatEachSlopeVariesOver) {
+  // Eight scenes whose slopes differ widely; the second study's mIoU is the
+  // first's plus 0.3 x in every run, so every draw of scenes gives slopes
+  // 0.3 apart: the difference's interval is that point, while each slope's
+  // spans the scenes' spread. Drawn unpaired it would be as wide as theirs.
+  std::vector<double> x, y_first, y_second;
+  std::vector<std::size_t> scene;
+  for (std::size_t s = 0; s < 8; ++s) {
+    for (const double level : {0.0, 0.5, 1.0}) {
+      x.push_back(level + 0.1 * static_cast<double>(s));
+      y_first.push_back(0.7 - (0.1 + 0.1 * static_cast<double>(s)) * x.back());
+      y_second.push_back(y_first.back() + 0.3 * x.back());
+      scene.push_back(s);
+    }
+  }
+  const InferenceOptions options{500, 1, 3};
+  const PairedSlopes paired = paired_slopes(x, y_first, x, y_second, scene, options);
+  ASSERT_TRUE(paired.difference.interval95 && paired.first.interval95);
+  EXPECT_NEAR(*paired.difference.value, 0.3, 1e-12);
+  EXPECT_NEAR(paired.difference.interval95->lo, 0.3, 1e-12);
+  EXPECT_NEAR(paired.difference.interval95->hi, 0.3, 1e-12);
+  EXPECT_GT(paired.first.interval95->hi - paired.first.interval95->lo, 0.2);
+  // Each slope's interval is the one the study's own table gives.
+  const ClusteredAssociation alone = clustered_association(x, y_first, scene, options);
+  ASSERT_TRUE(alone.within_scene_slope.interval95);
+  EXPECT_EQ(alone.within_scene_slope.interval95->lo, paired.first.interval95->lo);
+  EXPECT_EQ(alone.within_scene_slope.interval95->hi, paired.first.interval95->hi);
+}
+
 TEST(ClusteredInference, RefusesBadInput) {
   const std::vector<double> x = {1, 2, 3};
   EXPECT_THROW(clustered_association(x, x, {0, 0}), std::invalid_argument);

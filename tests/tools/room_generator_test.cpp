@@ -213,6 +213,72 @@ TEST(RoomGenerator, OneCommandMakesADatasetTheReadersTakeTheSameForTheSameSeed) 
   }
 }
 
+// Whether p lies on the triangle, within `tolerance` of its plane.
+bool on_triangle(const Eigen::Vector3d& p, const room::Triangle3d& t, double tolerance) {
+  const Eigen::Vector3d e1 = t[1] - t[0], e2 = t[2] - t[0], d = p - t[0];
+  const Eigen::Vector3d normal = e1.cross(e2).normalized();
+  if (std::abs(d.dot(normal)) > tolerance) return false;
+  // Barycentric coordinates of p's projection.
+  const double d11 = e1.dot(e1), d12 = e1.dot(e2), d22 = e2.dot(e2);
+  const double p1 = d.dot(e1), p2 = d.dot(e2);
+  const double det = d11 * d22 - d12 * d12;
+  const double b1 = (d22 * p1 - d12 * p2) / det, b2 = (d11 * p2 - d12 * p1) / det;
+  const double slack = 1e-6;
+  return b1 >= -slack && b2 >= -slack && b1 + b2 <= 1 + slack;
+}
+
+TEST(RoomGenerator, TheMeshHoldsEveryPointOnItsOwnInstanceAndLeavesTheOpeningsOpen) {
+  for (const std::uint64_t seed : {3u, 8u}) {
+    const room::VariedRoom made = room::varied_room(seed, 0.15, 0.0);
+    ASSERT_FALSE(made.openings.empty()) << seed;
+    for (const auto& instance : made.instances) {
+      ASSERT_FALSE(instance.triangles.empty()) << instance.class_name;
+      // Each point was sampled on one of its instance's surfaces, then moved
+      // at most 1 mm along the normal.
+      for (const auto& point : instance.points) {
+        const bool on_surface =
+            std::any_of(instance.triangles.begin(), instance.triangles.end(),
+                        [&](const auto& t) { return on_triangle(point.position, t, 0.0011); });
+        ASSERT_TRUE(on_surface) << seed << " " << instance.class_name << " point "
+                                << point.position.transpose() << " is on no triangle of its own";
+      }
+    }
+    // A ray through a door or window's middle meets no wall.
+    for (const auto& opening : made.openings) {
+      Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+      for (const auto& corner : opening) centre += corner;
+      centre /= static_cast<double>(opening.size());
+      for (const auto& instance : made.instances) {
+        if (instance.class_name != "wall") continue;
+        for (const auto& t : instance.triangles) {
+          EXPECT_FALSE(on_triangle(centre, t, 0.05))
+              << seed << ": a wall triangle covers the opening at " << centre.transpose();
+        }
+      }
+    }
+  }
+  // The tool writes them as an OBJ with one group per instance, named as
+  // its Annotations file; without --mesh, no OBJ.
+  const ScratchDirectory dir;
+  ASSERT_EQ(run(dir.file("with") + " --varied --seed 3 --spacing 0.2 --name r --mesh"), 0);
+  ASSERT_EQ(run(dir.file("without") + " --varied --seed 3 --spacing 0.2 --name r"), 0);
+  EXPECT_FALSE(fs::exists(dir.file("without/r/r.obj")));
+  const std::string obj = read_bytes(dir.file("with/r/r.obj"));
+  std::size_t groups = 0;
+  for (const auto& entry : fs::directory_iterator(dir.file("with/r/Annotations"))) {
+    const std::string group = "\ng " + entry.path().stem().string() + "\n";
+    EXPECT_NE(obj.find(group), std::string::npos) << group;
+    ++groups;
+  }
+  std::size_t group_lines = 0;
+  for (std::size_t at = obj.find("\ng "); at != std::string::npos; at = obj.find("\ng ", at + 1))
+    ++group_lines;
+  EXPECT_EQ(group_lines, groups);  // one run of faces per instance
+  EXPECT_GT(groups, 5u);
+  // The points are those of a room made without --mesh, to the byte.
+  EXPECT_EQ(read_bytes(dir.file("with/r/r.txt")), read_bytes(dir.file("without/r/r.txt")));
+}
+
 TEST(RoomGenerator, BadOptionsAreRefused) {
   const ScratchDirectory dir;
   EXPECT_NE(run("--dataset " + dir.file("x") + " --rooms 0"), 0);

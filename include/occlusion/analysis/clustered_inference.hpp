@@ -68,6 +68,28 @@ ClusteredAssociation clustered_association(const std::vector<double>& x,
                                            const std::vector<std::size_t>& scene,
                                            const InferenceOptions& options = {});
 
+// Two studies of the same runs (run i of each is the same scene and
+// configuration: another segmenter, another sensor) and how their
+// within-scene slopes differ. One bootstrap draws the scenes for both (the
+// slope's own stream, so each slope's interval is the one
+// clustered_association gives on these runs), and each draw's difference
+// second - first makes the difference's interval: what the pairing shares
+// cancels there. No p-values.
+struct PairedSlopes {
+  std::size_t runs = 0;
+  std::size_t scenes = 0;
+  ClusteredEstimate first, second;
+  ClusteredEstimate difference;  // second - first
+  InferenceOptions options;
+};
+
+// Per run: each study's x and y, and the run's scene. Same errors as
+// clustered_association.
+PairedSlopes paired_slopes(const std::vector<double>& x_first, const std::vector<double>& y_first,
+                           const std::vector<double>& x_second, const std::vector<double>& y_second,
+                           const std::vector<std::size_t>& scene,
+                           const InferenceOptions& options = {});
+
 // The within-scene slope alone (see above); nullopt where x does not vary
 // inside any scene. Same errors as correlation.hpp's functions.
 std::optional<double> within_scene_slope(const std::vector<double>& x, const std::vector<double>& y,

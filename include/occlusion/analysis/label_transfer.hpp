@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "occlusion/core/point_cloud.hpp"
 #include "occlusion/core/progress.hpp"
 
 namespace occlusion {
@@ -40,5 +41,13 @@ LabelTransfer transfer_labels(const std::vector<Eigen::Vector3f>& source,
                               const std::vector<Eigen::Vector3f>& target,
                               const LabelTransferOptions& options = {},
                               const Progress& progress = {});
+
+// Each point of `target` takes the colour of the nearest point of `source`
+// (compared in the file's frame, each cloud's shift applied), as a scanner's
+// camera colours its returns: a virtual scan of a mesh, coloured from the
+// room's coloured points. std::invalid_argument when source has no colours
+// (or no points) and target has points.
+void colour_from_nearest(PointCloud& target, const PointCloud& source, unsigned threads = 0,
+                         const Progress& progress = {});
 
 }  // namespace occlusion

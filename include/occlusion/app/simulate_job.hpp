@@ -31,7 +31,10 @@ struct SimulateRequest {
   bool noise = true;
   double max_incidence = SimulationOptions{}.max_incidence_deg;
   std::uint64_t seed = 1;
-  bool truth = false;          // write each return's true point, normal and face
+  bool truth = false;  // write each return's true point, normal and face
+  // A coloured cloud of the same scene: each return takes the colour of its
+  // nearest point, as a scanner's camera colours its returns; "": none.
+  std::string colour_from;
   std::string format = "ply";  // of the written cloud: ply or pcd
   unsigned threads = 0;
   std::string out;
@@ -54,7 +57,8 @@ void validate(const SimulateRequest& request);
 // Every key of the job (config section occlusion.simulate), declared once.
 const Keys<SimulateRequest>& simulate_keys();
 SimulateReport run_simulate(const SimulateRequest& request, const Progress& progress = {});
-// The same on a mesh in memory (Python's arrays); nothing is read or written.
+// The same on a mesh in memory (Python's arrays); nothing is written, and
+// nothing read but colour_from's cloud.
 SimulateReport run_simulate_on(const TriangleMesh& mesh, const SimulateRequest& request,
                                const Progress& progress = {});
 // The truth as extra per-point fields (true_x .. true_normal_z, face), for writers.

@@ -30,6 +30,8 @@
 #include "occlusion/analysis/confusion_matrix.hpp"
 #include "occlusion/analysis/correlation.hpp"
 #include "occlusion/analysis/mesh_estimation.hpp"
+#include "occlusion/analysis/sensor_model.hpp"
+#include "occlusion/analysis/virtual_scanner.hpp"
 #include "occlusion/app/cloud_occlusion_job.hpp"
 #include "occlusion/app/key.hpp"
 #include "occlusion/app/viewpoint_choice.hpp"
@@ -49,6 +51,12 @@ RegionGrowingOptions default_study_estimation();
 
 // The study's reference set: a 3 x 3 grid (docs/study.md says why).
 inline constexpr unsigned kReferenceViewpoints = 9;
+
+// scan_model: the scan as the ideal subset of the scene's points that the
+// viewpoints see, or as a terrestrial laser scanner measures the scene's
+// surfaces (the virtual scanner, analysis/virtual_scanner.hpp).
+inline constexpr const char* kIdealScan = "ideal";
+inline constexpr const char* kLaserScan = "laser";
 
 // A scene of the study, and the study-wide keys it sets otherwise: rooms
 // scanned at another density, with their own openings, or exported y-up.
@@ -77,7 +85,13 @@ struct StudyRequest {
   // skip_bad_lines serve the whole study, the scan included.
   CloudOcclusionRequest tracing = default_study_tracing();
   double self_tolerance = -1.0;  // of the scan, as -fscan; negative: 2 * point_radius
-  std::string format = "ply";    // of the scanned clouds written for the segmenter
+  // kIdealScan or kLaserScan. A laser scan scans the scene's mesh (the OBJ
+  // beside it) from each configuration's viewpoints with `laser`, noise
+  // drawn from the seed, returns beyond max_incidence lost.
+  std::string scan_model = kIdealScan;
+  LaserScannerModel laser;
+  double max_incidence = SimulationOptions{}.max_incidence_deg;
+  std::string format = "ply";  // of the scanned clouds written for the segmenter
   // N: measure every scanned cloud's occlusion from the same N viewpoints on a
   // grid over the whole scene, so that the measure ranks configurations by
   // what their scans lack, not by where they stood; 0: from each
@@ -106,6 +120,10 @@ struct StudyRequest {
   MeanOver mean_over = MeanOver::support;  // as -eval: which classes mIoU averages
   std::string shard = "0/1";               // "i/n"
   std::string out;                         // required
+  // Other studies' folders (their study.csv) of the same runs: the summary
+  // sets each one's within-scene slopes beside this study's, and their
+  // difference, from one bootstrap over the paired runs.
+  std::vector<std::string> compare_with;
   // Resuming: keep the failed rows of study.csv instead of retrying them.
   bool skip_failed = false;
   // Start again: drop the rows of study.csv (even if made with other
@@ -132,6 +150,14 @@ struct MeasureCorrelation {
   ClusteredAssociation association;
 };
 
+// This study against another of the same runs, for one measure: runs paired
+// by scene and configuration (both with the measure and an mIoU).
+struct StudyComparison {
+  std::string study;    // the other study's folder, as given
+  std::string measure;  // a column: occlusion_level, ...
+  PairedSlopes slopes;  // first: the other study; second: this one
+};
+
 struct StudyReport {
   std::string job = "study";  // or "study_merge"
   StudyRequest request;       // as run (merge: out only)
@@ -146,6 +172,7 @@ struct StudyReport {
   std::size_t runs_failed = 0;  // rows of the table whose status is failed
   CsvTable table;               // every row of study.csv, in run order
   std::vector<MeasureCorrelation> correlations;
+  std::vector<StudyComparison> comparisons;  // per compare_with study and measure
   std::vector<std::string> outputs;
   std::vector<std::string> warnings;
   double total_seconds = 0.0;
@@ -159,6 +186,8 @@ void validate(const StudyRequest& request);
 StudyRequest scene_request(StudyRequest study, const StudyScene& scene);
 // Every key of the job (config section occlusion.study), declared once.
 const Keys<StudyRequest>& study_keys();
+// Those of them that only a sensor's scan uses (laser_*, max_incidence).
+const Keys<StudyRequest>& study_sensor_keys();
 // Writes OUT/study.csv (after every run), study.svg, study.md, study.json and
 // OUT/runs/ (each run's scanned cloud and prediction). UsageError for bad
 // options, a scene whose classes the mapping does not know, or a study.csv
@@ -173,8 +202,9 @@ StudyReport run_study(const StudyRequest& request, const Progress& progress = {}
 // per (scene, configuration): the first wins, and a second with other figures
 // is a warning. Then writes the summary as run_study does. UsageError for
 // CSVs with different columns or whose study.parameters.json beside them
-// differ; InputError for unreadable ones.
-StudyReport run_study_merge(const std::vector<std::string>& inputs, const std::string& out);
+// differ; InputError for unreadable ones. `compare_with` as the study's key.
+StudyReport run_study_merge(const std::vector<std::string>& inputs, const std::string& out,
+                            const std::vector<std::string>& compare_with = {});
 
 // Headline: correlations (each measure's n, pearson, spearman against miou).
 Json::Value to_json(const StudyReport& report);

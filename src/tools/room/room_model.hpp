@@ -26,10 +26,15 @@ struct Point {
   Colour colour;
 };
 
-// One object: an S3DIS class name and its points.
+using Triangle3d = std::array<Eigen::Vector3d, 3>;
+
+// One object: an S3DIS class name, its points and the surfaces they were
+// sampled from (exact, without the points' noise and jitter; openings cut
+// out), so that a virtual scanner can scan the same room (--mesh).
 struct Instance {
   std::string class_name;
   std::vector<Point> points;
+  std::vector<Triangle3d> triangles;
 };
 
 // A piece of furniture before sampling: its boxes hide the surfaces they

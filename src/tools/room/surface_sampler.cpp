@@ -24,7 +24,9 @@ void SurfaceSampler::set_solids(const std::vector<Part>& parts) {
 }
 
 Instance& SurfaceSampler::start(std::vector<Instance>& instances, const std::string& class_name) {
-  instances.push_back({class_name, {}});
+  Instance instance;
+  instance.class_name = class_name;
+  instances.push_back(std::move(instance));
   rng_ = Rng(seed_, instances.size());
   return instances.back();
 }
@@ -68,6 +70,60 @@ void SurfaceSampler::rectangle(Instance& instance, const Eigen::Vector3d& origin
       Eigen::Vector3d position = surface + noise * normal;
       if (sensor_noise_ > 0) position += sensor_offset();
       instance.points.push_back({position, point_colour});
+    }
+  }
+  add_surface(instance, origin, u, v, holes);
+}
+
+void SurfaceSampler::add_surface(Instance& instance, const Eigen::Vector3d& origin,
+                                 const Eigen::Vector3d& u, const Eigen::Vector3d& v,
+                                 const std::vector<Box>& holes) const {
+  // The rectangle cut along the outlines of the holes that cross its plane,
+  // so each cell is wholly inside a hole or wholly outside every hole. No
+  // random draw: the points stay as they were without --mesh.
+  const Eigen::Vector3d normal = u.cross(v).normalized();
+  std::vector<double> cuts_u{0.0, 1.0}, cuts_v{0.0, 1.0};
+  for (const Box& hole : holes) {
+    double lo_u = 1.0, hi_u = 0.0, lo_v = 1.0, hi_v = 0.0, lo_n = 0.0, hi_n = 0.0;
+    for (int corner = 0; corner < 8; ++corner) {
+      const Eigen::Vector3d c((corner & 1) ? hole.hi.x() : hole.lo.x(),
+                              (corner & 2) ? hole.hi.y() : hole.lo.y(),
+                              (corner & 4) ? hole.hi.z() : hole.lo.z());
+      const Eigen::Vector3d d = c - origin;
+      const double a = d.dot(u) / u.squaredNorm(), b = d.dot(v) / v.squaredNorm();
+      const double n = d.dot(normal);
+      lo_u = corner == 0 ? a : std::min(lo_u, a);
+      hi_u = corner == 0 ? a : std::max(hi_u, a);
+      lo_v = corner == 0 ? b : std::min(lo_v, b);
+      hi_v = corner == 0 ? b : std::max(hi_v, b);
+      lo_n = corner == 0 ? n : std::min(lo_n, n);
+      hi_n = corner == 0 ? n : std::max(hi_n, n);
+    }
+    if (lo_n > 0 || hi_n < 0) continue;  // the hole does not cross the surface
+    for (const double a : {lo_u, hi_u}) {
+      if (a > 0 && a < 1) cuts_u.push_back(a);
+    }
+    for (const double b : {lo_v, hi_v}) {
+      if (b > 0 && b < 1) cuts_v.push_back(b);
+    }
+  }
+  for (auto* cuts : {&cuts_u, &cuts_v}) {
+    std::sort(cuts->begin(), cuts->end());
+    cuts->erase(std::unique(cuts->begin(), cuts->end()), cuts->end());
+  }
+  for (std::size_t i = 0; i + 1 < cuts_u.size(); ++i) {
+    for (std::size_t j = 0; j + 1 < cuts_v.size(); ++j) {
+      const auto at = [&](double a, double b) -> Eigen::Vector3d { return origin + a * u + b * v; };
+      const Eigen::Vector3d centre =
+          at(0.5 * (cuts_u[i] + cuts_u[i + 1]), 0.5 * (cuts_v[j] + cuts_v[j + 1]));
+      const bool in_hole = std::any_of(holes.begin(), holes.end(),
+                                       [&](const Box& hole) { return hole.contains(centre, 0); });
+      if (in_hole) continue;
+      const Eigen::Vector3d p00 = at(cuts_u[i], cuts_v[j]), p10 = at(cuts_u[i + 1], cuts_v[j]);
+      const Eigen::Vector3d p11 = at(cuts_u[i + 1], cuts_v[j + 1]),
+                            p01 = at(cuts_u[i], cuts_v[j + 1]);
+      instance.triangles.push_back({p00, p10, p11});
+      instance.triangles.push_back({p00, p11, p01});
     }
   }
 }

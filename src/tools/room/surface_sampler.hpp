@@ -37,7 +37,8 @@ class SurfaceSampler {
   Colour jittered(const Colour& base, int jitter);
 
   // The parallelogram origin + a u + b v (a, b in [0, 1]); `own_box` (an
-  // index into solids(), or kNoBox) does not hide its own faces.
+  // index into solids(), or kNoBox) does not hide its own faces. Its
+  // surface, holes cut out, joins the instance's triangles.
   void rectangle(Instance& instance, const Eigen::Vector3d& origin, const Eigen::Vector3d& u,
                  const Eigen::Vector3d& v, const Colour& colour, const std::vector<Box>& holes,
                  std::size_t own_box = kNoBox);
@@ -49,6 +50,8 @@ class SurfaceSampler {
   void parts(std::vector<Instance>& instances, const std::vector<Part>& parts);
 
  private:
+  void add_surface(Instance& instance, const Eigen::Vector3d& origin, const Eigen::Vector3d& u,
+                   const Eigen::Vector3d& v, const std::vector<Box>& holes) const;
   bool hidden(const Eigen::Vector3d& p, const std::vector<Box>& holes, std::size_t own_box) const;
   Eigen::Vector3d sensor_offset();
 
