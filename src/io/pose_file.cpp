@@ -174,8 +174,8 @@ std::size_t number_count(const std::vector<NumberLine>& lines) {
 
 std::string format_advice() {
   return "say which format it is (" + pose_format_names() +
-         "; docs/formats.md, \"Poses\"): a project file's \"pose_format\", a pose "
-         "file's extension .pose for 3DTK";
+         "; docs/formats.md, \"Poses\"): a project file's \"pose_format\", register's "
+         "--pose-format (key pose_format), or a pose file's extension .pose for 3DTK";
 }
 
 }  // namespace
