@@ -99,17 +99,32 @@ constexpr float kStepEdge = 0.05f;
 // posed frame's points are turned back into the camera's frame.
 constexpr float kSameDepth = 1e-5f;
 
+// A point's depth along its frame's camera axis (the sensor's +z), the
+// quantity a depth camera rounds.
+class CameraDepth {
+ public:
+  explicit CameraDepth(const SensorFrame& sensor)
+      : origin_(sensor.origin), to_sensor_(sensor.orientation.conjugate()) {}
+  float operator()(const Eigen::Vector3f& position) const {
+    return static_cast<float>(std::abs((to_sensor_ * (position.cast<double>() - origin_)).z()));
+  }
+
+ private:
+  Eigen::Vector3d origin_;
+  Eigen::Quaterniond to_sensor_;
+};
+
 void add_grid_measures(const PointCloud& cloud, const std::vector<std::uint8_t>& measured,
                        const std::vector<std::uint32_t>& bin_of, GridMeasures& grid) {
   if (!cloud.has_pixels()) return;
   const std::size_t width = cloud.sensor.width, height = cloud.sensor.height;
   const float nan = std::numeric_limits<float>::quiet_NaN();
   std::vector<float> range(width * height, nan), depth(width * height, nan);
-  const Eigen::Quaterniond to_sensor = cloud.sensor.orientation.conjugate();
+  const CameraDepth camera_depth(cloud.sensor);
   for (std::size_t i = 0; i < cloud.size(); ++i) {
-    const Eigen::Vector3d local = cloud.positions[i].cast<double>() - cloud.sensor.origin;
-    range[cloud.pixels[i]] = static_cast<float>(local.norm());
-    depth[cloud.pixels[i]] = static_cast<float>(std::abs((to_sensor * local).z()));
+    range[cloud.pixels[i]] =
+        static_cast<float>((cloud.positions[i].cast<double>() - cloud.sensor.origin).norm());
+    depth[cloud.pixels[i]] = camera_depth(cloud.positions[i]);
   }
   for (std::size_t i = 0; i < cloud.size(); ++i) {
     if (!measured[i]) continue;
@@ -148,11 +163,10 @@ void add_neighbour_steps(const PointCloud& cloud, const std::vector<std::uint8_t
   const std::vector<std::uint32_t> order = morton_order(cloud.positions);
   std::vector<Eigen::Vector3f> sorted(count);
   std::vector<float> depth(count);
-  const Eigen::Quaterniond to_sensor = cloud.sensor.orientation.conjugate();
+  const CameraDepth camera_depth(cloud.sensor);
   for (std::size_t s = 0; s < count; ++s) {
     sorted[s] = cloud.positions[order[s]];
-    depth[s] = static_cast<float>(
-        std::abs((to_sensor * (sorted[s].cast<double>() - cloud.sensor.origin)).z()));
+    depth[s] = camera_depth(sorted[s]);
   }
   const MortonKnn knn(sorted);
   // Per sorted point: its step (0: none) and whether it lies inside a tread.
