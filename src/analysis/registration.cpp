@@ -327,8 +327,7 @@ RegistrationResult register_pair(const PointCloud& source, const PointCloud& tar
   result.refined = to_original_pose(pose, s, t);
   const Eigen::Isometry3d change = initial.inverse() * result.refined;
   result.moved_translation = (result.refined.translation() - initial.translation()).norm();
-  result.moved_rotation_deg =
-      Eigen::AngleAxisd(change.linear()).angle() * 180.0 / 3.14159265358979323846;
+  result.moved_rotation_deg = rotation_degrees(change);
   result.after = fit_of(s.points, full_target, to_local_pose(result.refined, s, t),
                         result.evaluation_distance, options.threads);
   result.converged = result.levels.back().converged;

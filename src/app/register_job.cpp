@@ -213,7 +213,7 @@ Json::Value pose_json(const Eigen::Isometry3d& pose) {
   json["matrix"] = rows;
   json["translation"] = to_json(Eigen::Vector3d(pose.translation()));
   const Eigen::AngleAxisd rotation(pose.linear());
-  json["rotation_deg"] = rotation.angle() * 180.0 / 3.14159265358979323846;
+  json["rotation_deg"] = rotation_degrees(pose);
   json["rotation_axis"] = to_json(Eigen::Vector3d(rotation.axis()));
   return json;
 }

@@ -19,8 +19,8 @@ void print_pose(const char* name, const Eigen::Isometry3d& pose) {
   const Eigen::Vector3d t = pose.translation();
   std::printf(
       "  %-7s translation (%.6g, %.6g, %.6g), rotation %.6g degrees about (%.4f, %.4f, %.4f)\n",
-      name, t.x(), t.y(), t.z(), rotation.angle() * 180.0 / 3.14159265358979323846,
-      rotation.axis().x(), rotation.axis().y(), rotation.axis().z());
+      name, t.x(), t.y(), t.z(), rotation_degrees(pose), rotation.axis().x(), rotation.axis().y(),
+      rotation.axis().z());
 }
 
 }  // namespace

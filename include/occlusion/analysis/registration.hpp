@@ -112,6 +112,12 @@ RegistrationResult register_pair(const PointCloud& source, const PointCloud& tar
                                  const RegistrationOptions& options = {},
                                  const Progress& progress = {});
 
+// The angle of `pose`'s rotation, in degrees (0 to 180), as the report and
+// the faces state a pose and how far it moved.
+inline double rotation_degrees(const Eigen::Isometry3d& pose) {
+  return Eigen::AngleAxisd(pose.linear()).angle() * 180.0 / 3.14159265358979323846;
+}
+
 // The overlap and RMS of `source` placed by `pose` onto `target`, within
 // `distance`, at full resolution.
 RegistrationFit measure_fit(const PointCloud& source, const PointCloud& target,
