@@ -2,7 +2,10 @@
 // header says it passes the text limit, before its bytes are held: only an
 // announced upload may be longer. The raw-socket client sends a header that
 // promises far more bytes than it ever sends, so the server's close proves it
-// did not wait to buffer them.
+// did not wait to buffer them. The client sends nothing after that header:
+// WebSocket++ drops the connection right after its 1009 close frame, and bytes
+// it never read would turn that into a reset that can reach the client before
+// it reads the frame (CI saw nullopt where 1009 was sent).
 
 #include <arpa/inet.h>
 #include <gtest/gtest.h>
@@ -121,10 +124,9 @@ TEST(TransportLimits, TextFrameOverTheLimitClosesBeforeItsBytesArrive) {
   TestServer server;  // text limit 1 MiB, uploads 256 MiB
   RawWebSocket socket(server.port());
   ASSERT_TRUE(socket.open());
-  // Says 200 MB of text, sends 64 KiB: a server that buffers up to the upload
-  // limit waits for the rest and never closes.
+  // Says 200 MB of text and sends none of it: a server that buffers up to the
+  // upload limit waits for the rest and never closes.
   socket.send_header(0x1, 200'000'000);
-  socket.send_all(std::string(64 << 10, ' '));
   EXPECT_EQ(socket.close_code(), 1009);
   EXPECT_TRUE(server.connect()->request(1, "ping").ok());
 }
@@ -143,7 +145,6 @@ TEST(TransportLimits, TextMessageFramedInPiecesIsClosedOnceItPassesTheLimit) {
   first += std::string(4, '\0');
   socket.send_all(first + std::string(4096, ' '));
   socket.send_header(0x0, 100'000'000);
-  socket.send_all(std::string(64 << 10, ' '));
   EXPECT_EQ(socket.close_code(), 1009);
 }
 
