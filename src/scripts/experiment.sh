@@ -15,7 +15,8 @@
 #
 # Environment: TRAIN_ROOMS (24), TEST_ROOMS (6: four studies within the hour;
 # an interval needs 5 scenes), SPACING (0.04), STEPS (1500, so that both
-# models train within the hour; docs/study.md), SCANS
+# models train within the hour; docs/study.md's answer is TEST_ROOMS=16
+# STEPS=3000, about an hour and a half on a busy 2-core machine), SCANS
 # (3 laser scans per training room), THREADS (2), CONFIG (the studies'
 # config, whose laser_* keys the training scans use too; default
 # config/experiment.json), OCCLUSION_BUILD (the folder with occlusion and
