@@ -3,8 +3,10 @@
 // The virtual scanner (occlusion simulate) against Intel Embree on the same
 // rays and mesh: one laser station at the generated furnished room's centre,
 // 1.5 m above its floor, its beams (a full turn, elevation -60 to 90 degrees
-// in DEG steps) traced as closest hits by our triangle octree
-// (intersect_batch, as simulate_scan traces them) and by rtcIntersect1, in
+// in DEG steps) traced as closest hits by our triangle octree in the
+// scanner's order and packets (8 x 4 tiles as given, beam_tiles.hpp), by
+// rtcIntersect1 on the same rays in the same order, and by our octree in the
+// grid's order sorted by direction (the scanner's trace before tiles), in
 // turn; then the whole simulate_scan (rays made, traced, turned into returns
 // with noise) against the Embree trace alone. See README.md.
 
