@@ -7,9 +7,11 @@
 #include <unordered_map>
 
 #include "analysis_support.hpp"
+#include "occlusion/analysis/beam_tiles.hpp"
 #include "occlusion/core/hit.hpp"
+#include "occlusion/core/large_buffer.hpp"
+#include "occlusion/core/normal_deviates.hpp"
 #include "occlusion/core/parallel.hpp"
-#include "occlusion/core/random.hpp"
 #include "occlusion/core/ray.hpp"
 #include "occlusion/core/triangle_octree.hpp"
 
@@ -22,55 +24,42 @@ using analysis_support::seconds_since;
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kDegree = kPi / 180.0;
-// Beams traced at a time: bounds the rays and hits held (a full-dome station
-// of 0.2 degree steps is 1.35 M beams, times the sub-rays of a wide beam).
-constexpr std::size_t kRaysPerBlock = 1 << 18;
-// Beams made and turned into returns at a time by one thread.
-constexpr std::size_t kGrain = 1024;
+// A band of strips is traced before its returns join the cloud: at most
+// this many beams (bounds the returns held, 44 bytes a beam) and rays (how
+// long a cancel waits), but at least one strip.
+constexpr std::size_t kBeamsPerBand = std::size_t{1} << 19;
+constexpr std::size_t kRaysPerBand = std::size_t{1} << 20;
+// Beams one thread aims, traces and turns into returns at a time, in whole
+// tiles, so that each of the octree's packets is a tile.
+constexpr std::size_t kBeamsPerBatch = 1024;
 
-// A standard normal deviate from two uniforms (Box-Muller): fully specified,
-// as Rng is, so a seed gives the same noise everywhere.
-double standard_normal(Rng& rng) {
-  const double u1 = 1.0 - rng.uniform();  // (0, 1]: the log is finite
-  const double u2 = rng.uniform();
-  return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * kPi * u2);
-}
+// One sub-ray of a divergent beam: its offset in the footprint, as a fraction
+// of the half divergence, and the tangent of its angle over that fraction.
+struct SubRay {
+  Eigen::Vector2d offset;
+  double scale = 0.0;  // 0 for the beam's centre
+};
 
-// One noise stream per beam of every station, so the answer does not depend
-// on how beams are split among threads.
-Rng beam_rng(std::uint64_t seed, std::size_t station, std::size_t beam) {
-  return Rng(seed, (static_cast<std::uint64_t>(station) << 40) ^ beam);
-}
-
-// The beam's sub-ray offsets in its footprint, as fractions of the half
-// divergence: the centre, then a sunflower spiral that fills the disc evenly.
-std::vector<Eigen::Vector2d> footprint_offsets(unsigned samples) {
-  std::vector<Eigen::Vector2d> offsets{Eigen::Vector2d::Zero()};
+// The beam's sub-rays: the centre, then a sunflower spiral that fills the disc evenly.
+std::vector<SubRay> footprint(unsigned samples, double half_angle) {
+  std::vector<SubRay> subs{SubRay{Eigen::Vector2d::Zero(), 0.0}};
   const double golden = kPi * (3.0 - std::sqrt(5.0));
   for (unsigned k = 1; k < samples; ++k) {
     const double radius = std::sqrt(static_cast<double>(k) / static_cast<double>(samples - 1));
     const double angle = golden * static_cast<double>(k);
-    offsets.emplace_back(radius * std::cos(angle), radius * std::sin(angle));
+    const Eigen::Vector2d offset(radius * std::cos(angle), radius * std::sin(angle));
+    subs.push_back(SubRay{offset, std::tan(half_angle * offset.norm()) / offset.norm()});
   }
-  return offsets;
+  return subs;
 }
 
-// What a block of beams of one station needs to turn hits into returns.
-struct BeamGeometry {
-  // Per beam: its central unit direction (laser) or its pixel ray with z = 1
-  // in the camera frame (camera: t is then the depth), in the mesh's frame.
-  std::vector<Eigen::Vector3d> directions;
-  std::vector<std::uint32_t> cells;
-};
-
 // What became of a beam.
-enum class Outcome : std::uint8_t { kPoint, kNoHit, kOutOfRange, kGrazing };
+enum class Outcome : std::uint8_t { kNoHit, kPoint, kOutOfRange, kGrazing };
 
 struct Return {
-  Outcome outcome = Outcome::kNoHit;
-  Eigen::Vector3d position;
-  Eigen::Vector3f true_point, true_normal;
+  Eigen::Vector3f position, true_point, true_normal;
   std::uint32_t face = 0;
+  Outcome outcome = Outcome::kNoHit;
 };
 
 // The face's unit normal, turned to face the ray.
@@ -79,148 +68,272 @@ Eigen::Vector3f facing_normal(const PackedTriangle& tri, const Eigen::Vector3f& 
   return n.dot(direction) > 0.0f ? Eigen::Vector3f(-n) : n;
 }
 
-class StationTracer {
- public:
-  StationTracer(const TriangleOctree& octree, const std::vector<PackedTriangle>& by_face,
-                const SimulationOptions& options)
-      : octree_(octree), by_face_(by_face), options_(options) {}
+// The laser's beam angles, once for every station: a full dome at 0.1
+// degrees is 5.4 M beams over 3,600 columns and 1,501 rows.
+struct LaserAngles {
+  std::vector<double> cos_azimuth, sin_azimuth, cos_elevation, sin_elevation;
 
-  // Traces `rays` (sub_rays per beam) and returns their hits.
-  std::vector<std::optional<Hit>> trace(const std::vector<Ray>& rays) const {
-    std::vector<std::optional<Hit>> hits(rays.size());
-    octree_.intersect_batch(rays.data(), rays.size(), nullptr, hits.data(), options_.threads);
-    return hits;
+  explicit LaserAngles(const LaserScannerModel& laser) {
+    for (std::size_t column = 0; column < laser.columns(); ++column) {
+      cos_azimuth.push_back(std::cos(laser.azimuth_deg(column) * kDegree));
+      sin_azimuth.push_back(std::sin(laser.azimuth_deg(column) * kDegree));
+    }
+    for (std::size_t row = 0; row < laser.rows(); ++row) {
+      cos_elevation.push_back(std::cos(laser.elevation_deg(row) * kDegree));
+      sin_elevation.push_back(std::sin(laser.elevation_deg(row) * kDegree));
+    }
   }
-
-  const PackedTriangle& face(PrimitiveId id) const { return by_face_[id]; }
-  const SimulationOptions& options() const { return options_; }
-
- private:
-  const TriangleOctree& octree_;
-  const std::vector<PackedTriangle>& by_face_;
-  const SimulationOptions& options_;
 };
 
-// The laser's returns for one block of beams.
-void laser_returns(const LaserScannerModel& model, const StationTracer& tracer,
-                   const Eigen::Vector3d& origin, std::size_t station, const BeamGeometry& beams,
-                   const std::vector<Eigen::Vector2d>& footprint, std::vector<Return>& out) {
-  const std::size_t subs = footprint.size();
-  const double half_angle = 0.5e-3 * model.beam_divergence_mrad;
-  const Eigen::Vector3f origin_f = origin.cast<float>();
-  std::vector<Ray> rays(beams.directions.size() * subs);
-  const unsigned threads = tracer.options().threads;
-  parallel_for(beams.directions.size(), kGrain, threads, [&](std::size_t first, std::size_t last) {
-    for (std::size_t b = first; b < last; ++b) {
-      const Eigen::Vector3d& d = beams.directions[b];
-      const Eigen::Vector3d u = d.unitOrthogonal();
-      const Eigen::Vector3d v = d.cross(u);
-      for (std::size_t s = 0; s < subs; ++s) {
-        const Eigen::Vector2d& o = footprint[s];
-        Eigen::Vector3d dir = d;
-        const double radius = o.norm();
-        if (radius > 0.0) dir += std::tan(half_angle * radius) / radius * (o.x() * u + o.y() * v);
-        dir.normalize();
-        Ray& ray = rays[b * subs + s];
-        ray.origin = origin_f;
-        ray.direction = dir.cast<float>();
-        ray.t_min = 0.0f;
-        ray.t_max = static_cast<float>(model.max_range);
-      }
+// One station's beams as the threads aim, trace and turn them into returns.
+struct StationScan {
+  const TriangleOctree& octree;
+  const LaserScannerModel* laser;  // one of the two
+  const DepthCameraModel* camera;
+  const LaserAngles* angles;  // the laser's
+  const std::vector<SubRay>& subs;
+  const SimulationOptions& options;
+  BeamTiles tiles;
+  Eigen::Vector3d origin;
+  Eigen::Matrix3d rotation;
+  std::size_t station = 0;
+  double cos_limit = 0.0;  // of the incidence limit
+
+  // The beam's central unit direction (laser) or its pixel ray with z = 1 in
+  // the camera frame (camera: t is then the depth), in the mesh's frame.
+  Eigen::Vector3d direction(std::size_t row, std::size_t column) const {
+    Eigen::Vector3d local;
+    if (laser) {
+      local = {angles->cos_elevation[row] * angles->cos_azimuth[column],
+               angles->cos_elevation[row] * angles->sin_azimuth[column],
+               angles->sin_elevation[row]};
+    } else {
+      local = {(static_cast<double>(column) - camera->principal_x()) / camera->fx,
+               (static_cast<double>(row) - camera->principal_y()) / camera->fy, 1.0};
     }
-  });
-  const std::vector<std::optional<Hit>> hits = tracer.trace(rays);
-  const double cos_limit = std::cos(tracer.options().max_incidence_deg * kDegree);
-  out.assign(beams.directions.size(), Return{});
-  parallel_for(
-      beams.directions.size(), kGrain, threads, [&](std::size_t first_beam, std::size_t last_beam) {
-        for (std::size_t b = first_beam; b < last_beam; ++b) {
-          // The first echo, and the echoes a pulse could not tell from it.
-          std::size_t nearest = subs;
-          for (std::size_t s = 0; s < subs; ++s) {
-            const auto& hit = hits[b * subs + s];
-            if (hit && (nearest == subs || hit->t_hit < hits[b * subs + nearest]->t_hit))
-              nearest = s;
-          }
-          if (nearest == subs) continue;  // no hit
-          const Hit& first = *hits[b * subs + nearest];
-          double range_sum = 0.0;
-          std::size_t merged = 0;
-          for (std::size_t s = 0; s < subs; ++s) {
-            const auto& hit = hits[b * subs + s];
-            if (hit && hit->t_hit <= first.t_hit + model.echo_window) {
-              range_sum += hit->t_hit;
-              ++merged;
-            }
-          }
-          const double range = range_sum / static_cast<double>(merged);
-          const Ray& ray = rays[b * subs + nearest];
-          const PackedTriangle& tri = tracer.face(first.primitive_id);
-          const Eigen::Vector3f normal = facing_normal(tri, ray.direction);
-          if (-normal.dot(ray.direction) < cos_limit) {
-            out[b].outcome = Outcome::kGrazing;
-            continue;
-          }
-          if (range < model.min_range) {
-            out[b].outcome = Outcome::kOutOfRange;
-            continue;
-          }
-          Rng rng = beam_rng(tracer.options().seed, station, beams.cells[b]);
-          const double measured = tracer.options().noise
-                                      ? range + model.range_sigma(range) * standard_normal(rng)
-                                      : range;
-          Return& r = out[b];
-          r.outcome = Outcome::kPoint;
-          r.position = origin + measured * beams.directions[b];
-          r.true_point = ray.at(first.t_hit);
-          r.true_normal = normal;
-          r.face = first.primitive_id;
-        }
-      });
+    return rotation * local;
+  }
+
+  // The beam's rays (subs.size() of them for the laser, one for the camera).
+  void aim(const Eigen::Vector3d& d, Ray* rays) const {
+    const Eigen::Vector3f origin_f = origin.cast<float>();
+    if (camera) {
+      rays[0].origin = origin_f;
+      rays[0].direction = d.cast<float>();  // z = 1 in the camera: t is depth
+      rays[0].t_min = 0.0f;
+      rays[0].t_max = static_cast<float>(camera->max_depth);
+      return;
+    }
+    Eigen::Vector3d u = Eigen::Vector3d::Zero(), v = Eigen::Vector3d::Zero();
+    if (subs.size() > 1) {
+      u = d.unitOrthogonal();
+      v = d.cross(u);
+    }
+    for (std::size_t s = 0; s < subs.size(); ++s) {
+      Eigen::Vector3d dir = d;
+      if (subs[s].scale > 0.0) {
+        dir += subs[s].scale * (subs[s].offset.x() * u + subs[s].offset.y() * v);
+      }
+      dir.normalize();
+      rays[s].origin = origin_f;
+      rays[s].direction = dir.cast<float>();
+      rays[s].t_min = 0.0f;
+      rays[s].t_max = static_cast<float>(laser->max_range);
+    }
+  }
+
+  // The beam's measured range with noise drawn from its own stream (seed,
+  // station, cell), so that it does not depend on which thread draws it.
+  double with_noise(double value, double sigma, std::size_t cell) const {
+    if (!options.noise) return value;
+    NormalDeviates noise(options.seed, (static_cast<std::uint64_t>(station) << 40) ^ cell);
+    return value + sigma * noise.next();
+  }
+
+  Return laser_return(const Ray* rays, const std::optional<Hit>* hits, const Eigen::Vector3d& d,
+                      std::size_t cell) const;
+  Return camera_return(const Ray& ray, const std::optional<Hit>& hit, const Eigen::Vector3d& d,
+                       std::size_t cell) const;
+};
+
+// The first echo, and the echoes a pulse could not tell from it.
+Return StationScan::laser_return(const Ray* rays, const std::optional<Hit>* hits,
+                                 const Eigen::Vector3d& d, std::size_t cell) const {
+  Return r;
+  const std::size_t count = subs.size();
+  std::size_t nearest = count;
+  for (std::size_t s = 0; s < count; ++s) {
+    if (hits[s] && (nearest == count || hits[s]->t_hit < hits[nearest]->t_hit)) nearest = s;
+  }
+  if (nearest == count) return r;  // no hit
+  const Hit& first = *hits[nearest];
+  double range_sum = 0.0;
+  std::size_t merged = 0;
+  for (std::size_t s = 0; s < count; ++s) {
+    if (hits[s] && hits[s]->t_hit <= first.t_hit + laser->echo_window) {
+      range_sum += hits[s]->t_hit;
+      ++merged;
+    }
+  }
+  const double range = range_sum / static_cast<double>(merged);
+  const Ray& ray = rays[nearest];
+  const Eigen::Vector3f normal = facing_normal(octree.shape(first.primitive_id), ray.direction);
+  if (-normal.dot(ray.direction) < cos_limit) {
+    r.outcome = Outcome::kGrazing;
+    return r;
+  }
+  if (range < laser->min_range) {
+    r.outcome = Outcome::kOutOfRange;
+    return r;
+  }
+  const double measured = with_noise(range, laser->range_sigma(range), cell);
+  r.outcome = Outcome::kPoint;
+  r.position = (origin + measured * d).cast<float>();
+  r.true_point = ray.at(first.t_hit);
+  r.true_normal = normal;
+  r.face = first.primitive_id;
+  return r;
 }
 
-// The camera's returns for one block of pixels.
-void camera_returns(const DepthCameraModel& model, const StationTracer& tracer,
-                    const Eigen::Vector3d& origin, std::size_t station, const BeamGeometry& beams,
-                    std::vector<Return>& out) {
-  const Eigen::Vector3f origin_f = origin.cast<float>();
-  std::vector<Ray> rays(beams.directions.size());
-  const unsigned threads = tracer.options().threads;
-  for (std::size_t b = 0; b < rays.size(); ++b) {
-    rays[b].origin = origin_f;
-    rays[b].direction = beams.directions[b].cast<float>();  // z = 1 in the camera: t is depth
-    rays[b].t_min = 0.0f;
-    rays[b].t_max = static_cast<float>(model.max_depth);
+Return StationScan::camera_return(const Ray& ray, const std::optional<Hit>& hit,
+                                  const Eigen::Vector3d& d, std::size_t cell) const {
+  Return r;
+  if (!hit) return r;
+  const double depth = hit->t_hit;
+  const Eigen::Vector3f unit = ray.direction.normalized();
+  const Eigen::Vector3f normal = facing_normal(octree.shape(hit->primitive_id), unit);
+  if (-normal.dot(unit) < cos_limit) {
+    r.outcome = Outcome::kGrazing;
+    return r;
   }
-  const std::vector<std::optional<Hit>> hits = tracer.trace(rays);
-  const double cos_limit = std::cos(tracer.options().max_incidence_deg * kDegree);
-  out.assign(rays.size(), Return{});
-  parallel_for(rays.size(), kGrain, threads, [&](std::size_t first, std::size_t last) {
-    for (std::size_t b = first; b < last; ++b) {
-      if (!hits[b]) continue;
-      const double depth = hits[b]->t_hit;
-      const PackedTriangle& tri = tracer.face(hits[b]->primitive_id);
-      const Eigen::Vector3f unit = rays[b].direction.normalized();
-      const Eigen::Vector3f normal = facing_normal(tri, unit);
-      if (-normal.dot(unit) < cos_limit) {
-        out[b].outcome = Outcome::kGrazing;
-        continue;
+  double measured = depth;
+  if (options.noise) {
+    measured = camera->quantised_depth(with_noise(depth, camera->depth_sigma(depth), cell));
+  }
+  if (depth < camera->min_depth || measured < camera->min_depth || measured > camera->max_depth) {
+    r.outcome = Outcome::kOutOfRange;
+    return r;
+  }
+  r.outcome = Outcome::kPoint;
+  r.position = (origin + measured * d).cast<float>();
+  r.true_point = ray.at(hit->t_hit);
+  r.true_normal = normal;
+  r.face = hit->primitive_id;
+  return r;
+}
+
+// Traces one strip's beams in tile order, about kBeamsPerBatch at a time on
+// this thread, into returns[cell - first_cell] of the band starting at
+// first_cell, and counts what became of them.
+BeamCounts scan_strip(const StationScan& scan, std::size_t strip, std::size_t first_cell,
+                      Return* returns) {
+  BeamCounts counts;  // here, not in a vector other threads write beside it
+  const std::size_t subs = scan.camera ? 1 : scan.subs.size();
+  const std::size_t tile_beams =
+      BeamTiles::kColumns * std::min(BeamTiles::kRows, scan.tiles.rows - strip * BeamTiles::kRows);
+  const std::size_t tiles_per_batch = std::max<std::size_t>(1, kBeamsPerBatch / tile_beams);
+  std::vector<Ray> rays(tiles_per_batch * tile_beams * subs);
+  std::vector<std::optional<Hit>> hits(rays.size());
+  std::vector<Eigen::Vector3d> directions(tiles_per_batch * tile_beams);
+  std::vector<std::uint32_t> cells(directions.size());
+  const std::size_t tiles = scan.tiles.tiles_per_strip();
+  for (std::size_t first = 0; first < tiles; first += tiles_per_batch) {
+    std::size_t n = 0;
+    scan.tiles.visit(strip, first, std::min(tiles, first + tiles_per_batch),
+                     [&](std::size_t row, std::size_t column) {
+                       cells[n] = static_cast<std::uint32_t>(row * scan.tiles.columns + column);
+                       directions[n] = scan.direction(row, column);
+                       scan.aim(directions[n], &rays[n * subs]);
+                       ++n;
+                     });
+    scan.octree.intersect_batch(rays.data(), n * subs, nullptr, hits.data(), 1,
+                                BatchOrder::kAsGiven);
+    for (std::size_t b = 0; b < n; ++b) {
+      Return& r = returns[cells[b] - first_cell];
+      r = scan.camera
+              ? scan.camera_return(rays[b], hits[b], directions[b], cells[b])
+              : scan.laser_return(&rays[b * subs], &hits[b * subs], directions[b], cells[b]);
+      ++counts.beams;
+      counts.returns += r.outcome == Outcome::kPoint;
+      counts.no_hit += r.outcome == Outcome::kNoHit;
+      counts.out_of_range += r.outcome == Outcome::kOutOfRange;
+      counts.grazing += r.outcome == Outcome::kGrazing;
+    }
+  }
+  return counts;
+}
+
+void add_counts(BeamCounts& total, const BeamCounts& part) {
+  total.beams += part.beams;
+  total.returns += part.returns;
+  total.no_hit += part.no_hit;
+  total.out_of_range += part.out_of_range;
+  total.grazing += part.grazing;
+}
+
+// As PointCloud::reserve_positions does for positions.
+template <class T>
+void reserve_huge_pages(std::vector<T>& values, std::size_t count) {
+  values.reserve(count);
+  advise_huge_pages(values.data(), values.capacity() * sizeof(T));
+}
+
+// The scan's per-point arrays, each grown to hold `count` points without
+// moving again: a station's worth at a time, offered huge pages (the cloud
+// of a 0.1 degree station is 5 M points, 280 MB, which 4 KiB pages fault in
+// 70,000 times).
+void reserve_points(SimulatedScan& scan, std::size_t count) {
+  PointCloud& cloud = scan.cloud;
+  if (count <= cloud.positions.capacity()) return;
+  count = std::max(count, 2 * cloud.positions.capacity());  // many stations: linear, not quadratic
+  reserve_huge_pages(cloud.positions, count);
+  reserve_huge_pages(cloud.labels, count);
+  reserve_huge_pages(cloud.instances, count);
+  reserve_huge_pages(cloud.station_ids, count);
+  reserve_huge_pages(scan.true_points, count);
+  reserve_huge_pages(scan.true_normals, count);
+  reserve_huge_pages(scan.faces, count);
+  reserve_huge_pages(scan.beam_cells, count);
+}
+
+// Appends the band's points to the scan in cell order: each strip's points
+// (counts[k].returns of strip first_strip + k) copied at its own offset, the
+// strips in parallel.
+void append_band(SimulatedScan& scan, const StationScan& station, std::size_t first_strip,
+                 const std::vector<BeamCounts>& counts, const Return* returns,
+                 const TriangleMesh& mesh, const std::vector<std::int32_t>& group_label) {
+  std::vector<std::size_t> offset(counts.size() + 1, scan.cloud.positions.size());
+  for (std::size_t k = 0; k < counts.size(); ++k) offset[k + 1] = offset[k] + counts[k].returns;
+  const std::size_t size = offset.back();
+  PointCloud& cloud = scan.cloud;
+  cloud.positions.resize(size);
+  cloud.labels.resize(size);
+  cloud.instances.resize(size);
+  cloud.station_ids.resize(size);
+  scan.true_points.resize(size);
+  scan.true_normals.resize(size);
+  scan.faces.resize(size);
+  scan.beam_cells.resize(size);
+  const std::size_t band_first = station.tiles.first_cell(first_strip);
+  const auto station_id = static_cast<std::int32_t>(station.station);
+  parallel_for(counts.size(), 1, station.options.threads, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k) {
+      std::size_t out = offset[k];
+      const std::size_t last = station.tiles.first_cell(first_strip + k + 1);
+      for (std::size_t cell = station.tiles.first_cell(first_strip + k); cell < last; ++cell) {
+        const Return& r = returns[cell - band_first];
+        if (r.outcome != Outcome::kPoint) continue;
+        const std::uint32_t group = mesh.face_group[r.face];
+        cloud.positions[out] = r.position;
+        cloud.labels[out] = group_label[group];
+        cloud.instances[out] = static_cast<std::int32_t>(group);
+        cloud.station_ids[out] = station_id;
+        scan.true_points[out] = r.true_point;
+        scan.true_normals[out] = r.true_normal;
+        scan.faces[out] = r.face;
+        scan.beam_cells[out] = static_cast<std::uint32_t>(cell);
+        ++out;
       }
-      double measured = depth;
-      if (tracer.options().noise) {
-        Rng rng = beam_rng(tracer.options().seed, station, beams.cells[b]);
-        measured = model.quantised_depth(depth + model.depth_sigma(depth) * standard_normal(rng));
-      }
-      if (depth < model.min_depth || measured < model.min_depth || measured > model.max_depth) {
-        out[b].outcome = Outcome::kOutOfRange;
-        continue;
-      }
-      Return& r = out[b];
-      r.outcome = Outcome::kPoint;
-      r.position = origin + measured * beams.directions[b];
-      r.true_point = rays[b].at(hits[b]->t_hit);
-      r.true_normal = normal;
-      r.face = hits[b]->primitive_id;
     }
   });
 }
@@ -286,11 +399,8 @@ SimulatedScan simulate_scan(const TriangleMesh& mesh, const std::vector<ScannerS
 
   auto start = Clock::now();
   progress("octree", 0.0);
-  LargeVector<PackedTriangle> packed = pack_triangles(mesh, cloud.shift);
-  const std::vector<PackedTriangle> by_face(packed.begin(), packed.end());
-  const TriangleOctree octree(std::move(packed), OctreeOptions{}, progress);
+  const TriangleOctree octree(pack_triangles(mesh, cloud.shift), OctreeOptions{}, progress);
   scan.build_seconds = seconds_since(start);
-  const StationTracer tracer(octree, by_face, options);
 
   // Classes and instances from the groups.
   std::vector<std::int32_t> group_label(mesh.group_names.size());
@@ -302,99 +412,68 @@ SimulatedScan simulate_scan(const TriangleMesh& mesh, const std::vector<ScannerS
     group_label[g] = found.first->second;
   }
 
-  const std::vector<Eigen::Vector2d> footprint = footprint_offsets(
-      laser != nullptr && laser->beam_divergence_mrad > 0.0 ? laser->beam_samples : 1);
-  const std::size_t columns = laser ? laser->columns() : camera->width;
-  const std::size_t rows = laser ? laser->rows() : camera->height;
-  const std::size_t cells = columns * rows;
+  const std::vector<SubRay> subs =
+      laser != nullptr && laser->beam_divergence_mrad > 0.0
+          ? footprint(laser->beam_samples, 0.5e-3 * laser->beam_divergence_mrad)
+          : footprint(1, 0.0);
+  const BeamTiles tiles{laser ? laser->columns() : camera->width,
+                        laser ? laser->rows() : camera->height};
+  const std::size_t cells = tiles.columns * tiles.rows;
   if (cells > std::size_t{1} << 32) {
     throw std::invalid_argument("virtual scanner: more than 2^32 beams a station");
   }
-  // The laser's angles, once: a full dome at 0.1 degrees is 5.4 M beams.
-  std::vector<double> cos_azimuth, sin_azimuth, cos_elevation, sin_elevation;
-  if (laser) {
-    for (std::size_t column = 0; column < columns; ++column) {
-      cos_azimuth.push_back(std::cos(laser->azimuth_deg(column) * kDegree));
-      sin_azimuth.push_back(std::sin(laser->azimuth_deg(column) * kDegree));
-    }
-    for (std::size_t row = 0; row < rows; ++row) {
-      cos_elevation.push_back(std::cos(laser->elevation_deg(row) * kDegree));
-      sin_elevation.push_back(std::sin(laser->elevation_deg(row) * kDegree));
-    }
-  }
+  const std::optional<LaserAngles> angles =
+      laser ? std::optional<LaserAngles>(*laser) : std::nullopt;
+  const std::size_t strip_beams = BeamTiles::kRows * tiles.columns;
+  const std::size_t strips_per_band = std::max<std::size_t>(
+      1, std::min(kBeamsPerBand / strip_beams, kRaysPerBand / (strip_beams * subs.size())));
+  LargeVector<Return> returns(std::min(cells, strips_per_band * strip_beams));
+  const double cos_limit = std::cos(options.max_incidence_deg * kDegree);
+
   start = Clock::now();
   scan.per_station.resize(stations.size());
   for (std::size_t s = 0; s < stations.size(); ++s) {
     const ScannerStation& station = stations[s];
-    const Eigen::Vector3d origin = station.position - cloud.shift;
-    const Eigen::Matrix3d rotation = station.orientation.normalized().toRotationMatrix();
+    const StationScan station_scan{octree,
+                                   laser,
+                                   camera,
+                                   angles ? &*angles : nullptr,
+                                   subs,
+                                   options,
+                                   tiles,
+                                   station.position - cloud.shift,
+                                   station.orientation.normalized().toRotationMatrix(),
+                                   s,
+                                   cos_limit};
     Station recorded;
     recorded.name = station.name;
-    recorded.frame.origin = origin;
+    recorded.frame.origin = station_scan.origin;
     recorded.frame.orientation = station.orientation.normalized();
     if (laser) {
-      recorded.frame.width = columns;
-      recorded.frame.height = rows;
+      recorded.frame.width = tiles.columns;
+      recorded.frame.height = tiles.rows;
     }
     cloud.stations.push_back(recorded);
+    reserve_points(scan, cloud.size() + cells);
 
     BeamCounts& counts = scan.per_station[s];
-    const std::size_t block = std::max<std::size_t>(kGrain, kRaysPerBlock / footprint.size());
-    for (std::size_t first = 0; first < cells; first += block) {
+    for (std::size_t first = 0; first < tiles.strips(); first += strips_per_band) {
       progress.check_cancel();
-      progress("scanning",
-               (static_cast<double>(s) + static_cast<double>(first) / static_cast<double>(cells)) /
-                   static_cast<double>(stations.size()));
-      const std::size_t last = std::min(cells, first + block);
-      BeamGeometry beams;
-      beams.directions.resize(last - first);
-      beams.cells.resize(last - first);
-      parallel_for(last - first, kGrain, options.threads, [&](std::size_t begin, std::size_t end) {
-        for (std::size_t b = begin; b < end; ++b) {
-          const std::size_t cell = first + b;
-          const std::size_t row = cell / columns, column = cell % columns;
-          Eigen::Vector3d local;
-          if (laser) {
-            local = {cos_elevation[row] * cos_azimuth[column],
-                     cos_elevation[row] * sin_azimuth[column], sin_elevation[row]};
-          } else {
-            local = {(static_cast<double>(column) - camera->principal_x()) / camera->fx,
-                     (static_cast<double>(row) - camera->principal_y()) / camera->fy, 1.0};
-          }
-          beams.directions[b] = rotation * local;
-          beams.cells[b] = static_cast<std::uint32_t>(cell);
+      progress("scanning", (static_cast<double>(s) +
+                            static_cast<double>(first) / static_cast<double>(tiles.strips())) /
+                               static_cast<double>(stations.size()));
+      const std::size_t last = std::min(tiles.strips(), first + strips_per_band);
+      std::vector<BeamCounts> strip_counts(last - first);
+      const std::size_t band_first = tiles.first_cell(first);
+      parallel_for(last - first, 1, options.threads, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t k = begin; k < end; ++k) {
+          strip_counts[k] = scan_strip(station_scan, first + k, band_first, returns.data());
         }
       });
-      std::vector<Return> returns;
-      if (laser) {
-        laser_returns(*laser, tracer, origin, s, beams, footprint, returns);
-      } else {
-        camera_returns(*camera, tracer, origin, s, beams, returns);
-      }
-      for (std::size_t b = 0; b < returns.size(); ++b) {
-        const Return& r = returns[b];
-        ++counts.beams;
-        if (r.outcome == Outcome::kNoHit) ++counts.no_hit;
-        if (r.outcome == Outcome::kOutOfRange) ++counts.out_of_range;
-        if (r.outcome == Outcome::kGrazing) ++counts.grazing;
-        if (r.outcome != Outcome::kPoint) continue;
-        ++counts.returns;
-        cloud.positions.push_back(r.position.cast<float>());
-        const std::uint32_t group = mesh.face_group[r.face];
-        cloud.labels.push_back(group_label[group]);
-        cloud.instances.push_back(static_cast<std::int32_t>(group));
-        cloud.station_ids.push_back(static_cast<std::int32_t>(s));
-        scan.true_points.push_back(r.true_point);
-        scan.true_normals.push_back(r.true_normal);
-        scan.faces.push_back(r.face);
-        scan.beam_cells.push_back(beams.cells[b]);
-      }
+      append_band(scan, station_scan, first, strip_counts, returns.data(), mesh, group_label);
+      for (const BeamCounts& strip : strip_counts) add_counts(counts, strip);
     }
-    scan.counts.beams += counts.beams;
-    scan.counts.returns += counts.returns;
-    scan.counts.no_hit += counts.no_hit;
-    scan.counts.out_of_range += counts.out_of_range;
-    scan.counts.grazing += counts.grazing;
+    add_counts(scan.counts, counts);
   }
   // One camera is an organised frame: its grid gives the disc model its
   // neighbours (surfel_estimation's pixel window), as a depth frame read from
