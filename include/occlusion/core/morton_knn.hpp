@@ -79,7 +79,7 @@ class MortonKnn {
     return static_cast<std::size_t>((static_cast<std::uint64_t>(count_) * j) >> depth);
   }
   void gather(const Box& around, float radius, Scratch& scratch) const;
-  void select_nearest(std::size_t count, float guess, std::size_t k, Scratch& scratch) const;
+  void select_nearest(float guess, std::size_t k, Scratch& scratch) const;
   void search_alone(const Eigen::Vector3f& query, std::size_t k, float bound,
                     Scratch& scratch) const;
 
