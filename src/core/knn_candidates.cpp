@@ -3,6 +3,8 @@
 #include <array>
 #include <cstring>
 
+#include "occlusion/core/morton_knn.hpp"
+
 // GCC's per-function target pragmas; clang ignores them, so a clang build (the
 // sanitized one) runs the scalar form.
 #if defined(__x86_64__) && defined(__SSE2__) && defined(__GNUC__) && !defined(__clang__)
@@ -21,13 +23,7 @@ std::size_t scalar_squared_distances(const float* x, const float* y, const float
                                      float* d2) {
   const std::size_t end = padded(count);
   for (std::size_t c = 0; c < end; ++c) {
-    const float dx = query.x() - x[c];
-    const float dy = query.y() - y[c];
-    const float dz = query.z() - z[c];
-    float sum = dx * dx;
-    sum += dy * dy;
-    sum += dz * dz;
-    d2[c] = sum;
+    d2[c] = knn_squared_distance(query, Eigen::Vector3f(x[c], y[c], z[c]));
   }
   std::size_t inside = 0;
   for (std::size_t c = 0; c < count; ++c) inside += d2[c] <= within ? 1 : 0;
