@@ -6,9 +6,11 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
+#include "knn_candidates.hpp"
 #include "occlusion/core/parallel.hpp"
 
 namespace occlusion {
@@ -38,9 +40,11 @@ float gap(float lo, float hi, float x) {
 }  // namespace
 
 struct MortonKnn::Scratch {
-  // The gathered points, in increasing index.
+  // The gathered points [0, count), in increasing index, padded
+  // (knn_candidates.hpp); the arrays may be longer.
   std::vector<float> x, y, z, d2;
   std::vector<std::uint32_t> ids;
+  std::size_t count = 0;
   std::vector<std::uint64_t> keys;
   std::vector<std::uint32_t> last_ids;  // the answer of the query before
   // The best so far: (squared distance, index) increasing.
@@ -111,10 +115,16 @@ MortonKnn::MortonKnn(const Eigen::Vector3f* points, std::size_t count, unsigned 
 }
 
 void MortonKnn::gather(const Box& around, float radius, Scratch& scratch) const {
-  scratch.x.clear();
-  scratch.y.clear();
-  scratch.z.clear();
-  scratch.ids.clear();
+  std::size_t got = 0;
+  // Room for `more` points past the kept ones (the arrays only grow).
+  const auto make_room = [&](std::size_t more) {
+    if (scratch.ids.size() >= got + more) return;
+    const std::size_t size = std::max(got + more, 2 * scratch.ids.size());
+    scratch.x.resize(size);
+    scratch.y.resize(size);
+    scratch.z.resize(size);
+    scratch.ids.resize(size);
+  };
   const float reach = radius * radius;
   scratch.stack.assign(1, {0, 0});
   while (!scratch.stack.empty()) {
@@ -134,17 +144,42 @@ void MortonKnn::gather(const Box& around, float radius, Scratch& scratch) const 
       continue;
     }
     const std::size_t j = node - ((std::size_t{1} << depth_) - 1);
-    for (std::size_t i = begin_of(depth_, j); i < begin_of(depth_, j + 1); ++i) {
+    const std::size_t first = begin_of(depth_, j), last = begin_of(depth_, j + 1);
+    make_room(last - first);
+    float* x = scratch.x.data();
+    float* y = scratch.y.data();
+    float* z = scratch.z.data();
+    std::uint32_t* ids = scratch.ids.data();
+    // Each point is written, and kept by moving past it: whether it is
+    // within reach is a coin toss that a branch mispredicted (an eighth of
+    // a 1M-point -poc's samples were in this loop).
+    for (std::size_t i = first; i < last; ++i) {
       const Eigen::Vector3f& p = points_[i];
       const float gx = gap(around.lo.x(), around.hi.x(), p.x());
       const float gy = gap(around.lo.y(), around.hi.y(), p.y());
       const float gz = gap(around.lo.z(), around.hi.z(), p.z());
-      if (gx * gx + gy * gy + gz * gz > reach) continue;
-      scratch.x.push_back(p.x());
-      scratch.y.push_back(p.y());
-      scratch.z.push_back(p.z());
-      scratch.ids.push_back(static_cast<std::uint32_t>(i));
+      x[got] = p.x();
+      y[got] = p.y();
+      z[got] = p.z();
+      ids[got] = static_cast<std::uint32_t>(i);
+      got += gx * gx + gy * gy + gz * gz > reach ? 0 : 1;
     }
+  }
+  scratch.count = got;
+  const std::size_t padded = knn_detail::padded(got);
+  make_room(padded - got);
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  std::fill(scratch.x.begin() + static_cast<std::ptrdiff_t>(got),
+            scratch.x.begin() + static_cast<std::ptrdiff_t>(padded), nan);
+  std::fill(scratch.y.begin() + static_cast<std::ptrdiff_t>(got),
+            scratch.y.begin() + static_cast<std::ptrdiff_t>(padded), nan);
+  std::fill(scratch.z.begin() + static_cast<std::ptrdiff_t>(got),
+            scratch.z.begin() + static_cast<std::ptrdiff_t>(padded), nan);
+  std::fill(scratch.ids.begin() + static_cast<std::ptrdiff_t>(got),
+            scratch.ids.begin() + static_cast<std::ptrdiff_t>(padded), 0u);
+  if (scratch.d2.size() < padded) scratch.d2.resize(padded);
+  if (scratch.keys.size() < padded + knn_detail::kLanes) {
+    scratch.keys.resize(padded + knn_detail::kLanes);
   }
 }
 
@@ -185,25 +220,19 @@ void MortonKnn::search_alone(const Eigen::Vector3f& query, std::size_t k, float 
 }
 
 // The k smallest (squared distance, index) among the gathered points whose
-// distance is within `guess` (all of them when fewer than k are). Squared
-// distances are never negative, so their bits order as they do, and a pair
-// is one 64-bit key: sorting keys sorts by distance, then index.
-void MortonKnn::select_nearest(std::size_t count, float guess, std::size_t k,
-                               Scratch& scratch) const {
+// distance is within `guess` (all of them when fewer than k are), as keys
+// (knn_candidates.hpp).
+void MortonKnn::select_nearest(float guess, std::size_t k, Scratch& scratch) const {
   std::vector<std::uint64_t>& keys = scratch.keys;
-  keys.resize(count);
-  const auto key = [&](std::size_t c) {
-    std::uint32_t bits;
-    std::memcpy(&bits, &scratch.d2[c], sizeof bits);
-    return std::uint64_t{bits} << 32 | scratch.ids[c];
-  };
-  std::size_t kept = 0;
-  for (std::size_t c = 0; c < count; ++c) {
-    keys[kept] = key(c);
-    kept += scratch.d2[c] <= guess ? 1 : 0;
-  }
+  const std::size_t count = scratch.count;
+  std::size_t kept =
+      knn_detail::keys_within(scratch.d2.data(), scratch.ids.data(), count, guess, keys.data());
   if (kept < k) {
-    for (std::size_t c = 0; c < count; ++c) keys[c] = key(c);
+    for (std::size_t c = 0; c < count; ++c) {
+      std::uint32_t bits;
+      std::memcpy(&bits, &scratch.d2[c], sizeof bits);
+      keys[c] = knn_detail::key_bits(bits, scratch.ids[c]);
+    }
     kept = count;
   }
   scratch.reset_best(k);
@@ -255,60 +284,50 @@ void MortonKnn::search(const std::uint32_t* subset, std::size_t first, std::size
     // The first leaf searches alone: its k-th distances size the next gather.
     const bool batch = radius >= 0.0f && extent <= kWideLeaf * radius;
     const float r = radius;
-    if (batch) {
-      gather(box, r, scratch);
-      scratch.d2.resize(scratch.ids.size());
-    }
+    if (batch) gather(box, r, scratch);
     scratch.kth.clear();
     for (; m < leaf_last; ++m) {
       const std::size_t q = query_of(m);
       const Eigen::Vector3f& p = points_[q];
       // The query before's k neighbours are k points: none of this query's
-      // k nearest is farther than the farthest of them. Candidates beyond
-      // are skipped with one comparison.
-      float guess = std::numeric_limits<float>::infinity();
-      if (scratch.last_ids.size() == k) {
-        guess = 0.0f;
-        for (const std::uint32_t id : scratch.last_ids) {
-          guess = std::max(guess, knn_squared_distance(p, points_[id]));
+      // k nearest is farther than the farthest of them. Asked for only where
+      // the tighter bound below does not hold k points.
+      const auto query_before_bound = [&] {
+        float guess = std::numeric_limits<float>::infinity();
+        if (scratch.last_ids.size() == k) {
+          guess = 0.0f;
+          for (const std::uint32_t id : scratch.last_ids) {
+            guess = std::max(guess, knn_squared_distance(p, points_[id]));
+          }
         }
-      }
+        return guess;
+      };
       bool certain = false;
-      float bound = guess;
+      std::optional<float> bound;
       if (batch) {
-        const std::size_t count = scratch.ids.size();
-        for (std::size_t c = 0; c < count; ++c) {
-          const float dx = p.x() - scratch.x[c];
-          const float dy = p.y() - scratch.y[c];
-          const float dz = p.z() - scratch.z[c];
-          float sum = dx * dx;
-          sum += dy * dy;
-          sum += dz * dz;
-          scratch.d2[c] = sum;
-        }
         // A tighter bound when it holds k points: the query before's k-th
         // distance, a little widened (the same density around a point next
-        // to it), keeps about k of the gathered points where `guess` keeps
-        // about three times as many, each then weighed in the selection.
-        float threshold = guess;
+        // to it), keeps about k of the gathered points where the query
+        // before's farthest neighbour keeps about three times as many, each
+        // then weighed in the selection. Any bound that holds k points
+        // gives the same k nearest: those left out are farther than all k.
         const float tight = kTightRadius * kTightRadius * last_kth_d2;
-        if (tight < guess) {
-          std::size_t within = 0;
-          for (std::size_t c = 0; c < count; ++c) within += scratch.d2[c] <= tight ? 1 : 0;
-          if (within >= k) threshold = tight;
-        }
-        select_nearest(count, threshold, k, scratch);
+        const std::size_t count = scratch.count;
+        const std::size_t within =
+            knn_detail::squared_distances(scratch.x.data(), scratch.y.data(), scratch.z.data(),
+                                          count, p, tight, scratch.d2.data());
+        select_nearest(within >= k ? tight : query_before_bound(), k, scratch);
         if (scratch.found == k) {
           bound = scratch.best_d2[k - 1];
           // A point left out lies farther than r from the box, so farther
           // than r plus the query's depth inside the box from the query.
           const float inside = std::min((p - box.lo).minCoeff(), (box.hi - p).minCoeff());
-          certain = count == n || std::sqrt(static_cast<double>(bound)) <
+          certain = count == n || std::sqrt(static_cast<double>(*bound)) <
                                       static_cast<double>(r) + inside - margin_;
         }
       }
       if (!certain) {
-        search_alone(p, k, bound, scratch);
+        search_alone(p, k, bound ? *bound : query_before_bound(), scratch);
         if (scratch.found < k) search_alone(p, k, std::numeric_limits<float>::infinity(), scratch);
       }
       scratch.last_ids.assign(scratch.best_ids.begin(), scratch.best_ids.end());

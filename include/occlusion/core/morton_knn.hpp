@@ -10,7 +10,10 @@
 // the leaf takes its k nearest among them, first among those within 1.2 times
 // the k-th distance of the query before when at least k are (the same density
 // a step away), else within the farthest of that query's k neighbours from
-// this one (k points, so never fewer). Its answer is certain when its
+// this one (k points, so never fewer; any bound that holds k points gives
+// the same k nearest). The distances to the gathered points and the packing
+// of those within the bound go eight at a time in AVX2 where the CPU has it
+// (knn_candidates.hpp, the same bits). Its answer is certain when its
 // k-th distance is below r plus its own distance to the box's faces (a point
 // left out is farther than that); r follows the k-th distances of the leaf
 // before. A query that is not certain (too few points within reach: a stray
@@ -79,7 +82,7 @@ class MortonKnn {
     return static_cast<std::size_t>((static_cast<std::uint64_t>(count_) * j) >> depth);
   }
   void gather(const Box& around, float radius, Scratch& scratch) const;
-  void select_nearest(std::size_t count, float guess, std::size_t k, Scratch& scratch) const;
+  void select_nearest(float guess, std::size_t k, Scratch& scratch) const;
   void search_alone(const Eigen::Vector3f& query, std::size_t k, float bound,
                     Scratch& scratch) const;
 
