@@ -201,6 +201,39 @@ void add_neighbour_steps(const PointCloud& cloud, const std::vector<std::uint8_t
   }
 }
 
+// A laser station in beam order whose rows are great circles (planes
+// through the station): each return's offset from its neighbours' chord,
+// doubled (its standard deviation is sqrt(3/2) sigma, a second difference's
+// sqrt(6) sigma), joins the bin's second differences. A laser rounds its
+// ranges too (PCL's room scans to 1 cm: at 10 cm below the scanner most
+// consecutive returns share theirs, and both measures read 0): the range
+// changes to the next return count as a frame's depth steps. Rows at one
+// elevation are left out: they are cones, whose chords bend off a flat
+// surface by about step^2 / 2 of the range (0.46 mm at 3 m for 1 degree
+// steps), and which sweep a floor at one range all round, so a noise-free
+// scan would read both as noise.
+void add_beam_measures(const PointCloud& cloud, const std::vector<Station>& stations,
+                       const BeamOrder& beams, const std::vector<std::uint8_t>& measured,
+                       const std::vector<std::uint32_t>& bin_of, GridMeasures& grid) {
+  if (cloud.has_pixels()) return;
+  for_each_beam_triple(cloud, stations, beams, [&](const BeamTriple& triple) {
+    if (!measured[triple.point]) return;
+    const auto station =
+        static_cast<std::size_t>(measuring_station(cloud, stations.size(), triple.point));
+    if (beams.model[station] != BeamOrder::Model::kAngle) return;
+    const std::uint32_t bin = bin_of[triple.point];
+    const double change = std::abs(triple.next_range - triple.range);
+    ++grid.points[bin];
+    if (change <= kSameDepth * triple.range) {
+      ++grid.treads[bin];
+    } else if (change < kStepEdge * triple.range) {
+      grid.depth_steps[bin].push_back(static_cast<float>(change));
+    }
+    if (std::abs(triple.offset) >= kStepEdge * triple.range) return;  // a depth edge
+    grid.second_differences[bin].push_back(static_cast<float>(2.0 * std::abs(triple.offset)));
+  });
+}
+
 // The bin's sigma read off the grid (negative: none), the larger of the
 // second differences' and the rounding's.
 double grid_sigma(GridMeasures& grid, std::size_t bin) {
@@ -221,7 +254,8 @@ double grid_sigma(GridMeasures& grid, std::size_t bin) {
 
 SurfaceNoise measure_surface_noise(const PointCloud& cloud, const LargeVector<Surfel>& surfels,
                                    const std::vector<float>& thickness,
-                                   const std::vector<std::uint8_t>& measured) {
+                                   const std::vector<std::uint8_t>& measured,
+                                   const BeamOrder& beams) {
   const std::vector<Station> stations = scan_stations(cloud);
   const Binning binning = make_binning(cloud, stations);
   const std::size_t bins = binning.first_bin.back() + 1;
@@ -238,6 +272,7 @@ SurfaceNoise measure_surface_noise(const PointCloud& cloud, const LargeVector<Su
   }
   add_grid_measures(cloud, measured, bin_of, grid);
   add_neighbour_steps(cloud, measured, bin_of, grid);
+  add_beam_measures(cloud, stations, beams, measured, bin_of, grid);
 
   std::vector<std::size_t> points(bins);
   std::vector<double> sigma(bins, -1.0);
@@ -275,6 +310,10 @@ SurfaceNoise measure_surface_noise(const PointCloud& cloud, const LargeVector<Su
     for (std::size_t b = 0; b < count; ++b) sigma[first + b] = filled[b];
     StationNoise station;
     station.station = s < stations.size() ? stations[s].name : "";
+    if (s < stations.size()) {
+      station.beam_order = beams.in_beam_order(s);
+      station.beam_step = beams.step[s];
+    }
     for (std::size_t b = 0; b < count; ++b) {
       if (points[first + b] == 0) continue;
       NoiseBin bin;

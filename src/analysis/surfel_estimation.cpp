@@ -670,7 +670,9 @@ SurfelEstimate estimate_surfels(const PointCloud& cloud, const SurfelOptions& op
   });
   release(fitted);
   if (options.keep_thickness) {
-    estimate.noise = measure_surface_noise(cloud, estimate.surfels, estimate.thickness, measured);
+    estimate.beam_order = find_beam_order(cloud, scan_stations(cloud));
+    estimate.noise = measure_surface_noise(cloud, estimate.surfels, estimate.thickness, measured,
+                                           estimate.beam_order);
     if (options.carve_sight_lines) {
       estimate.carving = carve_sight_lines(cloud, estimate, options.threads, progress);
     }

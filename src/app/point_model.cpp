@@ -110,12 +110,21 @@ PointModel choose_point_model(const PointCloud& cloud, const PointSettings& sett
     report.carving = model.surfels->carving;
     for (const SightLineCarving::UncarvedStation& station : report.carving->implausible) {
       std::ostringstream message;
-      message << "the model hides " << percent(station.blocked_share) << " of the points station "
-              << (station.name.empty() ? std::string("(unnamed)") : station.name)
-              << " recorded from that station itself (more than " << percent(kMaxBlockedShare)
-              << "): its pose is probably not where they were measured from, or its noise "
-                 "exceeds the model's bands; its lines of sight were not carved (README, Point "
-                 "model)";
+      const std::string name = station.name.empty() ? std::string("(unnamed)") : station.name;
+      if (station.beam_order) {
+        message << percent(station.by_others_share) << " of the lines of sight from station "
+                << name << " to the points it recorded cross other stations' scans (more than "
+                << percent(kMaxBlockedShare)
+                << "): its pose among them is probably wrong (register the scans: occlusion "
+                   "register); its lines of sight were not carved (README, Point model)";
+      } else {
+        message << "the model hides " << percent(station.blocked_share) << " of the points station "
+                << name << " recorded from that station itself (more than "
+                << percent(kMaxBlockedShare)
+                << "): its pose is probably not where they were measured from, or its noise "
+                   "exceeds the model's bands; its lines of sight were not carved (README, "
+                   "Point model)";
+      }
       warnings.push_back(message.str());
     }
   }
@@ -173,6 +182,8 @@ Json::Value point_model_json(const PointModelReport& model) {
       Json::Value entry(Json::objectValue);
       entry["station"] = station.name;
       entry["blocked_share"] = station.blocked_share;
+      entry["beam_order"] = station.beam_order;
+      entry["blocked_by_other_stations_share"] = station.by_others_share;
       uncarved.append(entry);
     }
     carving["uncarved_stations"] = uncarved;
@@ -196,6 +207,11 @@ Json::Value point_model_json(const PointModelReport& model) {
         bins.append(row);
       }
       entry["bins"] = bins;
+      // Stored as its beams swept (analysis/beam_order.hpp): its noise read
+      // from consecutive returns too, its position checked, its step.
+      entry["beam_order"] = station.beam_order;
+      entry["beam_step_degrees"] =
+          station.beam_order ? Json::Value(station.beam_step * 180.0 / M_PI) : Json::Value();
       stations.append(entry);
     }
     noise["stations"] = stations;

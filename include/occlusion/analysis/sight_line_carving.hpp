@@ -33,7 +33,11 @@ inline constexpr double kMaxBlockedShare = 0.1;
 struct SightLineCarving {
   struct UncarvedStation {
     std::string name;
-    double blocked_share = 0.0;
+    double blocked_share = 0.0;  // of its lines, blocked before carving
+    // In beam order, so judged by the other stations' discs alone: this
+    // share of its lines crosses them.
+    bool beam_order = false;
+    double by_others_share = 0.0;
   };
   std::vector<UncarvedStation> implausible;  // stations left uncarved (kMaxBlockedShare)
   std::size_t lines = 0;                     // lines of sight traced (points with a known station)

@@ -18,7 +18,12 @@
 // for Gaussian noise, 0.6745 sqrt(6) sigma, or, where most neighbouring
 // pixels' depths are exactly equal (a real depth camera's rounded depths,
 // whose treads are flat), the rounding's error: the median step between
-// neighbours over sqrt(12). A bin of fewer than
+// neighbours over sqrt(12). A laser station stored in its beams' order
+// (beam_order.hpp) reads its range noise the same way from consecutive
+// returns, their offsets from their neighbours' chords, which a fitted
+// plane's residuals underrate (a real scanner's noise has long tails, and a
+// point's nearest neighbours in space are those its noise moved least). A
+// bin of fewer than
 // kMinBinPoints points takes its nearest filled bin's; a cloud whose points
 // no station claims is one bin.
 
@@ -27,6 +32,7 @@
 #include <string>
 #include <vector>
 
+#include "occlusion/analysis/beam_order.hpp"
 #include "occlusion/core/large_buffer.hpp"
 #include "occlusion/core/point_cloud.hpp"
 #include "occlusion/core/surfel.hpp"
@@ -42,6 +48,8 @@ struct NoiseBin {
 struct StationNoise {
   std::string station;  // its name, or "" for points no station claims
   std::vector<NoiseBin> bins;
+  bool beam_order = false;  // its points are stored as its beams swept (beam_order.hpp)
+  double beam_step = 0.0;   // then the angle between consecutive beams, radians
 };
 
 struct SurfaceNoise {
@@ -67,9 +75,11 @@ inline constexpr double kNoiseBinRatio = 1.25;
 // `surfels`, `thickness` and `measured` are one per point
 // (surfel_estimation.hpp); measured[i] != 0 where point i's thickness was
 // measured from a plane fitted to its neighbours (a disc that faces its
-// station for want of a plane was not).
+// station for want of a plane was not). `beams` is find_beam_order's for
+// the cloud's scan_stations.
 SurfaceNoise measure_surface_noise(const PointCloud& cloud, const LargeVector<Surfel>& surfels,
                                    const std::vector<float>& thickness,
-                                   const std::vector<std::uint8_t>& measured);
+                                   const std::vector<std::uint8_t>& measured,
+                                   const BeamOrder& beams);
 
 }  // namespace occlusion

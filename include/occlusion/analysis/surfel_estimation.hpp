@@ -104,6 +104,7 @@ struct SurfelEstimate {
   LargeVector<Surfel> surfels;   // one per point, in the cloud's order
   std::vector<float> thickness;  // per point (0 for spheres); empty unless keep_thickness
   SurfaceNoise noise;            // measured when keep_thickness (surface_noise.hpp)
+  BeamOrder beam_order;          // of scan_stations(cloud), when keep_thickness (beam_order.hpp)
   // With keep_thickness and carve_sight_lines (sight_line_carving.hpp); the
   // stats' radius quantiles are before carving.
   SightLineCarving carving;
