@@ -3,6 +3,7 @@
 #include "moc_replay.hpp"
 #include "occlusion/analysis/mesh_sampling.hpp"
 #include "occlusion/analysis/sphere_directions.hpp"
+#include "occlusion/core/morton_order.hpp"
 
 namespace occlusion::bench {
 
@@ -35,19 +36,21 @@ double poc_level_from_hits(const std::uint8_t* hit, std::size_t count) {
 
 namespace {
 
-// ScanRays of `points` points, ray v * points + i = make_ray(viewpoints[v], i).
+// ScanRays to the points at `positions`, ray v * points + k =
+// make_ray(viewpoints[v], i) for the k-th point i in Morton order.
 template <class MakeRay>
-ScanRays make_rays(std::size_t points, const std::vector<Eigen::Vector3d>& viewpoints,
-                   const MakeRay& make_ray) {
+ScanRays make_rays(const std::vector<Eigen::Vector3f>& positions,
+                   const std::vector<Eigen::Vector3d>& viewpoints, const MakeRay& make_ray) {
   ScanRays out;
-  out.points = points;
+  out.points = positions.size();
   out.viewpoints = viewpoints.size();
   out.rays.resize(out.points * out.viewpoints);
   out.ignore.resize(out.rays.size());
+  const std::vector<std::uint32_t> order = morton_order(positions);
   for (std::size_t v = 0; v < out.viewpoints; ++v) {
-    for (std::size_t i = 0; i < out.points; ++i) {
-      out.rays[v * out.points + i] = make_ray(viewpoints[v], i);
-      out.ignore[v * out.points + i] = static_cast<PrimitiveId>(i);
+    for (std::size_t k = 0; k < out.points; ++k) {
+      out.rays[v * out.points + k] = make_ray(viewpoints[v], order[k]);
+      out.ignore[v * out.points + k] = order[k];
     }
   }
   return out;
@@ -57,26 +60,29 @@ ScanRays make_rays(std::size_t points, const std::vector<Eigen::Vector3d>& viewp
 
 ScanRays make_scan_rays(const PointCloud& cloud, const std::vector<Eigen::Vector3d>& viewpoints,
                         const ScanOptions& options) {
-  return make_rays(cloud.size(), viewpoints, [&](const Eigen::Vector3d& viewpoint, std::size_t i) {
-    return scan_shadow_ray(viewpoint, cloud.positions[i], options);
-  });
+  return make_rays(cloud.positions, viewpoints,
+                   [&](const Eigen::Vector3d& viewpoint, std::size_t i) {
+                     return scan_shadow_ray(viewpoint, cloud.positions[i], options);
+                   });
 }
 
 ScanRays make_scan_surfel_rays(const SurfelEstimate& surfels,
                                const std::vector<Eigen::Vector3d>& viewpoints,
                                const ScanOptions& options) {
   const double near_viewpoint = 2.0 * surfels.stats.radius_median;
-  return make_rays(surfels.surfels.size(), viewpoints,
-                   [&](const Eigen::Vector3d& viewpoint, std::size_t i) {
-                     return scan_surfel_ray(viewpoint, surfels.surfels[i], surfels.thickness[i],
-                                            near_viewpoint, options.self_tolerance);
-                   });
+  std::vector<Eigen::Vector3f> centers;
+  centers.reserve(surfels.surfels.size());
+  for (const Surfel& surfel : surfels.surfels) centers.push_back(surfel.center);
+  return make_rays(centers, viewpoints, [&](const Eigen::Vector3d& viewpoint, std::size_t i) {
+    return scan_surfel_ray(viewpoint, surfels.surfels[i], surfels.thickness[i], near_viewpoint,
+                           options.self_tolerance);
+  });
 }
 
 double visible_fraction_from_flags(const ScanRays& scan, const std::uint8_t* blocked) {
   std::vector<std::uint8_t> seen(scan.points, 0);
   for (std::size_t r = 0; r < scan.rays.size(); ++r) {
-    if (!blocked[r]) seen[r % scan.points] = 1;
+    if (!blocked[r]) seen[scan.ignore[r]] = 1;
   }
   std::size_t visible = 0;
   for (const std::uint8_t s : seen) visible += s;

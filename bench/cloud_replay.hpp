@@ -32,8 +32,10 @@ std::vector<Ray> make_poc_rays(const std::vector<Eigen::Vector3d>& viewpoints,
 double poc_level_from_hits(const std::uint8_t* hit, std::size_t count);
 
 struct ScanRays {
-  // Viewpoint-major like the analysis: ray v * points + i goes from viewpoint v
-  // to point i, direction = point - viewpoint (t = 1 at the point).
+  // Viewpoint-major like the analysis, the points in Morton order as
+  // scan_cloud takes them (traced as given, BatchOrder::kAsGiven): ray
+  // v * points + k goes from viewpoint v to point ignore[v * points + k],
+  // direction = point - viewpoint (t = 1 at the point).
   std::vector<Ray> rays;
   // The target point, which the query must not count as a blocker.
   std::vector<PrimitiveId> ignore;

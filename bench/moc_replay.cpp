@@ -16,9 +16,11 @@ ShadowRays make_shadow_rays(const MeshSamples& samples,
   out.rays.reserve(out.samples * out.viewpoints);
   out.ignore.reserve(out.rays.capacity());
   out.slot.reserve(out.rays.capacity());
-  // Viewpoint by viewpoint, as compute_mesh_occlusion casts them.
+  // Viewpoint by viewpoint, the samples in Morton order, as
+  // compute_mesh_occlusion casts them (it orders each block of samples so).
+  const std::vector<std::uint32_t> order = mesh_sample_order(samples, 0, samples.size());
   for (std::size_t v = 0; v < out.viewpoints; ++v) {
-    for (std::size_t s = 0; s < out.samples; ++s) {
+    for (const std::size_t s : order) {
       Ray ray;
       if (!mesh_shadow_ray(samples.points[s], viewpoints[v], epsilon, ray)) continue;
       out.rays.push_back(ray);

@@ -27,7 +27,9 @@ struct ShadowRays {
   std::size_t viewpoints = 0;
 };
 
-// Each ray is the analysis' own (mesh_shadow_ray); pass mesh_shadow_epsilon.
+// Each ray is the analysis' own (mesh_shadow_ray), viewpoint by viewpoint in
+// its order (mesh_sample_order), to be traced as given (BatchOrder::kAsGiven)
+// as the analysis traces them; pass mesh_shadow_epsilon.
 ShadowRays make_shadow_rays(const MeshSamples& samples,
                             const std::vector<Eigen::Vector3d>& viewpoints, double epsilon);
 

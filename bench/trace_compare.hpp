@@ -54,7 +54,7 @@ PointTraces trace_both(const Tree& tree, const Embree& embree, const std::vector
       [&] {
         return timed([&] {
           tree.occluded_batch(scan_rays.rays.data(), ns, scan_rays.ignore.data(),
-                              r.our_blocked.data(), threads);
+                              r.our_blocked.data(), threads, BatchOrder::kAsGiven);
         });
       },
       [&] {

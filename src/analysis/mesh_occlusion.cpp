@@ -8,6 +8,7 @@
 #include "analysis_support.hpp"
 #include "occlusion/analysis/inside_solid.hpp"
 #include "occlusion/analysis/mesh_sampling.hpp"
+#include "occlusion/core/morton_order.hpp"
 #include "occlusion/core/parallel.hpp"
 #include "occlusion/core/triangle_octree.hpp"
 
@@ -100,6 +101,13 @@ bool mesh_shadow_ray(const Eigen::Vector3d& sample, const Eigen::Vector3d& viewp
   return true;
 }
 
+std::vector<std::uint32_t> mesh_sample_order(const MeshSamples& samples, std::size_t first,
+                                             std::size_t count, unsigned threads) {
+  std::vector<Eigen::Vector3f> positions(count);
+  for (std::size_t k = 0; k < count; ++k) positions[k] = samples.points[first + k].cast<float>();
+  return morton_order(positions, threads);
+}
+
 MeshOcclusionResult compute_mesh_occlusion(const TriangleMesh& mesh,
                                            const std::vector<Eigen::Vector3d>& viewpoints,
                                            const MeshOcclusionOptions& options,
@@ -146,7 +154,8 @@ MeshOcclusionResult compute_mesh_occlusion(const TriangleMesh& mesh,
   // so that a viewpoint's rays trace together as packets, and the rays are
   // made on all threads: made one by one they took as long as tracing them.
   // A pair too close to need a ray gets one with an empty interval, which
-  // nothing blocks, so the sample counts as seen from there.
+  // nothing blocks, so the sample counts as seen from there. A block's samples
+  // go in Morton order (mesh_sample_order), which keeps its memory to the block.
   const std::size_t samples_per_block = std::max<std::size_t>(1, kRaysPerBlock / view_count);
   LargeVector<Ray> rays(std::min(samples.size(), samples_per_block) * view_count);
   LargeVector<PrimitiveId> ignore(rays.size());
@@ -154,10 +163,12 @@ MeshOcclusionResult compute_mesh_occlusion(const TriangleMesh& mesh,
   progress("tracing", 0.0);
   for (std::size_t first = 0; first < samples.size(); first += samples_per_block) {
     const std::size_t count = std::min(samples.size(), first + samples_per_block) - first;
+    const std::vector<std::uint32_t> order =
+        mesh_sample_order(samples, first, count, options.threads);
     parallel_for(count * view_count, kMadeRaysGrain, options.threads,
                  [&](std::size_t begin, std::size_t end) {
                    for (std::size_t i = begin; i < end; ++i) {
-                     const std::size_t v = i / count, s = first + i % count;
+                     const std::size_t v = i / count, s = first + order[i % count];
                      if (!mesh_shadow_ray(samples.points[s] - origin, local_viewpoints[v], epsilon,
                                           rays[i], reach)) {
                        rays[i] = analysis_support::unblockable_ray(local_viewpoints[v]);
@@ -166,10 +177,10 @@ MeshOcclusionResult compute_mesh_occlusion(const TriangleMesh& mesh,
                    }
                  });
     tree.occluded_batch(rays.data(), count * view_count, ignore.data(), blocked.data(),
-                        options.threads);
+                        options.threads, BatchOrder::kAsGiven);
     for (std::size_t v = 0; v < view_count; ++v) {
       for (std::size_t k = 0; k < count; ++k) {
-        seen[(first + k) * view_count + v] = blocked[v * count + k] ? 0 : 1;
+        seen[(first + order[k]) * view_count + v] = blocked[v * count + k] ? 0 : 1;
       }
     }
     progress.check_cancel();

@@ -9,6 +9,7 @@
 #include "analysis_support.hpp"
 #include "occlusion/analysis/banded_discs.hpp"
 #include "occlusion/analysis/scan_tracer.hpp"
+#include "occlusion/core/morton_order.hpp"
 #include "occlusion/core/parallel.hpp"
 #include "occlusion/core/sphere_octree.hpp"
 #include "surfel_ray_rule.hpp"
@@ -140,7 +141,7 @@ void ScanTracer::trace(const Eigen::Vector3d& viewpoint, const std::uint32_t* po
     for (std::size_t k = b; k < e; ++k) rays[k] = ray(viewpoint, points[k]);
   });
   static_assert(sizeof(PrimitiveId) == sizeof(std::uint32_t), "point indices are primitive ids");
-  occluded(rays, count, points, blocked, options_.threads);
+  occluded(rays, count, points, blocked, options_.threads, BatchOrder::kAsGiven);
   for (std::size_t k = 0; k < count; ++k) seen[k] = blocked[k] ? 0 : 1;
 }
 
@@ -169,10 +170,12 @@ ScanResult scan_cloud(const PointCloud& cloud, const std::vector<Eigen::Vector3d
   std::vector<Ray> rays(block_capacity);
   std::vector<std::uint32_t> inside(block_capacity);
   std::vector<std::uint8_t> blocked(block_capacity), seen(block_capacity);
+  // Viewpoint by viewpoint, the points in Morton order: a viewpoint's rays
+  // share their origin and go to neighbouring points, so they are traced as
+  // given, in packets that stay together down the tree, as -moc's are
+  // (mesh_sample_order); the cloud's own order may be any.
+  const std::vector<std::uint32_t> order = morton_order(cloud.positions, options.threads);
   progress("tracing", 0.0);
-  // Viewpoint by viewpoint: a viewpoint's rays share their origin and go to
-  // neighbouring points, which keeps a thread's traversals in the same part
-  // of the tree.
   std::size_t traced = 0;
   for (std::size_t v = 0; v < viewpoints.size(); ++v) {
     const Eigen::Vector3d& viewpoint = viewpoints[v];
@@ -180,13 +183,14 @@ ScanResult scan_cloud(const PointCloud& cloud, const std::vector<Eigen::Vector3d
       const std::size_t last = std::min(points, first + kRaysPerBlock);
       // Points outside the station's window are not seen: no ray is traced.
       std::size_t count = 0;
-      for (std::size_t point = first; point < last; ++point) {
+      for (std::size_t k = first; k < last; ++k) {
+        const std::uint32_t point = order[k];
         if (options.field_of_view &&
             !options.field_of_view->contains(cloud.positions[point].cast<double>() - viewpoint)) {
           ++result.outside_view_rays;
           continue;
         }
-        inside[count++] = static_cast<std::uint32_t>(point);
+        inside[count++] = point;
       }
       tracer.trace(viewpoint, inside.data(), count, seen.data(), rays.data(), blocked.data());
       for (std::size_t k = 0; k < count; ++k) {

@@ -107,10 +107,11 @@ MemoryEstimate cloud_occlusion_memory(std::size_t points, std::size_t viewpoints
 }
 
 MemoryEstimate scan_memory(std::size_t points, std::size_t viewpoints, bool discs) {
-  // The octree, the counts and first stations, and the written subset (a copy
-  // of the cloud at most); per viewpoint only its few counters.
+  // The octree, the counts and first stations, the points' Morton order, and
+  // the written subset (a copy of the cloud at most; the order's sort needs
+  // less, before); per viewpoint only its few counters.
   const std::uint64_t bytes =
-      times(points, kSphereOctreeBytes + 4 + 4 + 32 + (discs ? kDiscModelBytes : 0));
+      times(points, kSphereOctreeBytes + 4 + 4 + 4 + 32 + (discs ? kDiscModelBytes : 0));
   return {bytes,
           count(points) + (discs ? " points as discs, " : " points, ") + count(viewpoints) +
               " viewpoints",

@@ -98,8 +98,9 @@ inline Lanes gather(const float* base, const std::int32_t* offset) {
   return load(lanes);
 }
 
-// Rays rays[0 .. kLanes) as lanes of their eight floats: false, gathers do it here.
-inline bool load_rays(const float*, Lanes*) {
+// Lane j's ray is the eight floats at base + offset[j]; load_rays puts them
+// in lanes where that beats gathers and says whether it did: not here.
+inline bool load_rays(const float*, const std::int32_t*, Lanes*) {
   return false;
 }
 
@@ -228,11 +229,12 @@ inline void transpose8(__m256* rows) {
   rows[7] = _mm256_permute2f128_ps(u3, u7, 0x31);
 }
 
-// Eight consecutive rays of eight floats: one load each and a transpose,
-// where gathers cost about a load per float.
-inline bool load_rays(const float* rays, Lanes* out) {
+// Eight rays of eight floats, wherever they lie: one load each and a
+// transpose. AVX2 gathers cost about a load per float (on AMD Zen 3 the eight
+// gathers of a packet took 12 % of bench_moc's shadow rays, issue 44).
+inline bool load_rays(const float* base, const std::int32_t* offset, Lanes* out) {
   __m256 rows[8];
-  for (int k = 0; k < 8; ++k) rows[k] = _mm256_loadu_ps(rays + 8 * k);
+  for (int k = 0; k < 8; ++k) rows[k] = _mm256_loadu_ps(base + offset[k]);
   transpose8(rows);
   for (int c = 0; c < 8; ++c) out[c] = rows[c];
   return true;
@@ -361,11 +363,11 @@ inline Lanes gather(const float* base, const std::int32_t* offset) {
   return out;
 }
 
-// Register i takes rays 8i .. 8i + 7, loaded and transposed.
-inline bool load_rays(const float* rays, Lanes* out) {
+// Register i takes lanes 8i .. 8i + 7, loaded and transposed.
+inline bool load_rays(const float* base, const std::int32_t* offset, Lanes* out) {
   for (int i = 0; i < kRegisters; ++i) {
     __m256 rows[8];
-    for (int k = 0; k < 8; ++k) rows[k] = _mm256_loadu_ps(rays + 64 * i + 8 * k);
+    for (int k = 0; k < 8; ++k) rows[k] = _mm256_loadu_ps(base + offset[8 * i + k]);
     packet_avx2::transpose8(rows);
     for (int c = 0; c < 8; ++c) out[c].r[i] = rows[c];
   }
@@ -480,7 +482,7 @@ inline Lanes gather(const float* base, const std::int32_t* offset) {
 }
 
 // Gathers do it here.
-inline bool load_rays(const float*, Lanes*) {
+inline bool load_rays(const float*, const std::int32_t*, Lanes*) {
   return false;
 }
 

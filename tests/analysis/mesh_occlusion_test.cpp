@@ -75,12 +75,12 @@ TEST(MeshOcclusion, GridAlignedShadowIsExact) {
   EXPECT_NEAR(result.occlusion_level, shadow_area(1.0) / total_area(1.0), 1e-12);
 }
 
-TEST(MeshOcclusion, FacesFullyInOrOutOfShadowAreExact) {
-  // The floor grid has 0.5 m cells: the cells inside [1,3]^2 are entirely in the
-  // shadow and the ones outside entirely lit, whatever the samples.
+// The floor grid has 0.5 m cells: the cells inside [1,3]^2 are entirely in the
+// shadow and the ones outside entirely lit, whatever the samples.
+void expect_faces_fully_in_or_out_of_shadow(double samples_per_unit_area) {
   const TriangleMesh mesh = room_with_plate();
   MeshOcclusionOptions options;
-  options.samples_per_unit_area = 50;
+  options.samples_per_unit_area = samples_per_unit_area;
   const auto result = compute_mesh_occlusion(mesh, {kLamp}, options);
   std::size_t dark = 0;
   for (std::size_t f = 0; f < mesh.face_count(); ++f) {
@@ -93,6 +93,31 @@ TEST(MeshOcclusion, FacesFullyInOrOutOfShadowAreExact) {
     dark += under_plate ? 1 : 0;
   }
   EXPECT_EQ(dark, 32u);  // 16 cells of 0.5 m, two triangles each
+}
+
+TEST(MeshOcclusion, FacesFullyInOrOutOfShadowAreExact) {
+  expect_faces_fully_in_or_out_of_shadow(50);
+}
+
+TEST(MeshOcclusion, SamplesTracedInMortonOrderGoBackToTheirFaces) {
+  // 1,000 samples per m^2 of 81 m^2: two blocks of samples, each traced in
+  // Morton order (mesh_sample_order), not face by face; every flag must still
+  // land on its own sample.
+  expect_faces_fully_in_or_out_of_shadow(1000);
+}
+
+TEST(MeshOcclusion, SampleOrderIsTheBlocksMortonOrder) {
+  // The eight corners of a cube, shuffled, after two samples outside the
+  // block: Morton order takes x fastest, then y, then z.
+  MeshSamples samples;
+  samples.points = {{9, 9, 9}, {9, 9, 9}, {0, 2, 2}, {2, 2, 0}, {0, 0, 0},
+                    {2, 0, 2}, {0, 2, 0}, {2, 2, 2}, {2, 0, 0}, {0, 0, 2}};
+  const std::vector<std::uint32_t> order = mesh_sample_order(samples, 2, 8);
+  std::vector<Eigen::Vector3d> corners;
+  for (const std::uint32_t k : order) corners.push_back(samples.points[2 + k] / 2.0);
+  const std::vector<Eigen::Vector3d> expected = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0},
+                                                 {0, 0, 1}, {1, 0, 1}, {0, 1, 1}, {1, 1, 1}};
+  EXPECT_EQ(corners, expected);
 }
 
 TEST(MeshOcclusion, MoreViewpointsNeverSeeLess) {

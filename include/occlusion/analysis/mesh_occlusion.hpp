@@ -21,6 +21,8 @@
 
 namespace occlusion {
 
+struct MeshSamples;  // analysis/mesh_sampling.hpp
+
 struct MeshOcclusionOptions {
   double samples_per_unit_area = 100.0;
   OctreeOptions octree;
@@ -95,5 +97,16 @@ double mesh_shadow_epsilon(const TriangleMesh& mesh, const MeshOcclusionOptions&
 bool mesh_shadow_ray(const Eigen::Vector3d& sample, const Eigen::Vector3d& viewpoint,
                      double epsilon, Ray& ray,
                      double reach = std::numeric_limits<double>::infinity());
+
+// The order compute_mesh_occlusion casts the rays of samples [first, first +
+// count) in, each viewpoint's in turn: offsets into that range, in Morton
+// order of the samples' positions. One viewpoint's rays to neighbouring
+// samples then stay together down the octree, so they are traced as given
+// (BatchOrder::kAsGiven) instead of sorted by direction: bench_moc's shadow
+// rays took 0.5 to 0.6 of the time on AVX2, and samples in a random order
+// (a mesh whose faces are, or a big face's own samples) trace as fast as in
+// face order (issue 44).
+std::vector<std::uint32_t> mesh_sample_order(const MeshSamples& samples, std::size_t first,
+                                             std::size_t count, unsigned threads = 0);
 
 }  // namespace occlusion

@@ -62,7 +62,9 @@ class ScanTracer {
 
   // seen[k] = 1 if `viewpoint` sees point points[k], else 0, for k < count;
   // `rays` and `blocked` are scratch of at least `count` elements. The rays
-  // are made and traced on options.threads threads.
+  // are made and traced on options.threads threads, in the order given
+  // (BatchOrder::kAsGiven): pass the points in Morton order (scan_cloud does),
+  // so that rays to neighbouring points form the packets.
   void trace(const Eigen::Vector3d& viewpoint, const std::uint32_t* points, std::size_t count,
              std::uint8_t* seen, Ray* rays, std::uint8_t* blocked) const;
   // The same for rays made by the caller, ignoring ignore[k] (a point's own
