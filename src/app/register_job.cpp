@@ -137,8 +137,12 @@ RegisterReport run_register_project(const RegisterRequest& request, const Progre
         std::filesystem::absolute(request.path).parent_path().lexically_normal();
     const bool same_dir = std::filesystem::equivalent(project_dir, request.out);
     for (SceneScan& scan : scans) {
-      // Named paths are relative to the project's folder: elsewhere, resolved ones.
-      if (!same_dir) scan.named_path.clear();
+      // Named paths are relative to the project's folder: elsewhere, resolved
+      // ones, made absolute (a resolved path may still be relative to the
+      // working folder, which the written project's folder is not).
+      if (same_dir) continue;
+      scan.named_path.clear();
+      scan.path = std::filesystem::absolute(scan.path).lexically_normal().string();
     }
     std::string name = std::filesystem::path(request.path).filename().string();
     name = name.substr(0, name.size() - std::string(kProjectFileSuffix).size());

@@ -108,15 +108,22 @@ std::string tutorial_pose_json() {
 }
 
 TEST(RegisterCli, AProjectsScansAreRefinedOntoTheFirstAndTheProjectWrittenBack) {
+  // The scans beside the project, named relative to it: the refined project
+  // written into another folder must still find them.
   const TempDir dir;
+  for (const char* name : {"room_scan1.pcd", "room_scan2.pcd"}) {
+    std::filesystem::copy_file(kSource + "/files/pcl/" + name, dir.file(name));
+  }
   dir.write("room.project.json",
-            "{\"scans\": [{\"path\": \"" + kSource +
-                "/files/pcl/room_scan1.pcd\", \"pose\": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], "
-                "[0, 0, 0, 1]]},\n {\"path\": \"" +
-                kSource + "/files/pcl/room_scan2.pcd\", \"pose\": " + tutorial_pose_json() +
-                "}]}\n");
-  const Json::Value report =
-      run_json("register '" + dir.file("room.project.json") + "' --out '" + dir.path() + "/out'");
+            "{\"scans\": [{\"path\": \"room_scan1.pcd\", \"pose\": [[1, 0, 0, 0], [0, 1, 0, "
+            "0], [0, 0, 1, 0], [0, 0, 0, 1]]},\n {\"path\": \"room_scan2.pcd\", \"pose\": " +
+                tutorial_pose_json() + "}]}\n");
+  // Named from the working folder (the CLI's too): its scans resolve to
+  // paths relative to it, which the folder written into is not.
+  const std::string project =
+      std::filesystem::relative(dir.file("room.project.json"), std::filesystem::current_path())
+          .string();
+  const Json::Value report = run_json("register '" + project + "' --out '" + dir.path() + "/out'");
   ASSERT_EQ(report["project_scans"].size(), 1u);
   const Json::Value& scan = report["project_scans"][0];
   EXPECT_TRUE(scan["converged"].asBool());
