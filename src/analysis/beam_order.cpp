@@ -33,16 +33,16 @@ class Consecutive {
     }
   }
 
-  // Calls step(station, before, last, point) for each point that follows two
-  // points of its own station.
-  template <class Step>
-  void walk(Step&& step) {
+  // Calls visit(station, before, last, point) for each point that follows
+  // two points of its own station.
+  template <class Visit>
+  void walk(Visit&& visit) {
     for (std::size_t i = 0; i < cloud_.size(); ++i) {
       const std::ptrdiff_t s = measuring_station(cloud_, stations_.size(), i);
       if (s < 0) continue;
       const auto st = static_cast<std::size_t>(s);
       if (last_[st] != kNone && cloud_.positions[last_[st]] == cloud_.positions[i]) continue;
-      if (before_[st] != kNone) step(st, before_[st], last_[st], i);
+      if (before_[st] != kNone) visit(st, before_[st], last_[st], i);
       before_[st] = last_[st];
       last_[st] = i;
     }
