@@ -136,13 +136,19 @@ RegisterReport run_register_project(const RegisterRequest& request, const Progre
     const std::filesystem::path project_dir =
         std::filesystem::absolute(request.path).parent_path().lexically_normal();
     const bool same_dir = std::filesystem::equivalent(project_dir, request.out);
+    // Named paths (a scan's and its pose file's) are relative to the
+    // project's folder: elsewhere, resolved ones, made absolute (a resolved
+    // path may still be relative to the working folder, which the written
+    // project's folder is not).
+    const auto absolute = [](const std::string& path) {
+      return std::filesystem::absolute(path).lexically_normal().string();
+    };
     for (SceneScan& scan : scans) {
-      // Named paths are relative to the project's folder: elsewhere, resolved
-      // ones, made absolute (a resolved path may still be relative to the
-      // working folder, which the written project's folder is not).
       if (same_dir) continue;
       scan.named_path.clear();
-      scan.path = std::filesystem::absolute(scan.path).lexically_normal().string();
+      scan.path = absolute(scan.path);
+      scan.named_pose_file.clear();
+      if (!scan.pose_path.empty()) scan.pose_path = absolute(scan.pose_path);
     }
     std::string name = std::filesystem::path(request.path).filename().string();
     name = name.substr(0, name.size() - std::string(kProjectFileSuffix).size());

@@ -114,9 +114,12 @@ TEST(RegisterCli, AProjectsScansAreRefinedOntoTheFirstAndTheProjectWrittenBack) 
   for (const char* name : {"room_scan1.pcd", "room_scan2.pcd"}) {
     std::filesystem::copy_file(kSource + "/files/pcl/" + name, dir.file(name));
   }
+  // The first scan's pose from a file beside them, which the refined
+  // project names as it is (the first scan is not refined).
+  dir.write("identity.txt", "1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n");
   dir.write("room.project.json",
-            "{\"scans\": [{\"path\": \"room_scan1.pcd\", \"pose\": [[1, 0, 0, 0], [0, 1, 0, "
-            "0], [0, 0, 1, 0], [0, 0, 0, 1]]},\n {\"path\": \"room_scan2.pcd\", \"pose\": " +
+            "{\"scans\": [{\"path\": \"room_scan1.pcd\", \"pose_file\": \"identity.txt\"},\n "
+            "{\"path\": \"room_scan2.pcd\", \"pose\": " +
                 tutorial_pose_json() + "}]}\n");
   // Named from the working folder (the CLI's too): its scans resolve to
   // paths relative to it, which the folder written into is not.
