@@ -13,6 +13,8 @@ import { percent } from "../ui/format";
 import { RAY_DISPLAY, cloudJobParams } from "../settings_defaults";
 import { sessionMeasure } from "../study_measures";
 import type { AppContext } from "./context";
+import { viewpointColours } from "./viewpoint_colours";
+import type { MarkerSpot } from "./viewpoint_colours";
 
 export class Occlusion {
   constructor(private readonly ctx: AppContext) {}
@@ -65,7 +67,8 @@ export class Occlusion {
     if (s.visibilityScan) {
       // At the defaults -fscan names its own viewpoints (they may not be the markers).
       const scan = { path: info.path, ...chosen, ...cloudJobParams(s, "scan") };
-      jobs.push(this.scan(scan, defaults ? [] : names));
+      const spots = viewpoints.map((position, i) => ({ position, colour: colours[i]! }));
+      jobs.push(this.scan(scan, defaults ? [] : names, spots));
     }
     await Promise.all(jobs);
   }
@@ -165,7 +168,12 @@ export class Occlusion {
     viewer.requestRender();
   }
 
-  private async scan(params: Record<string, unknown>, names: string[]): Promise<void> {
+  /** -fscan; `markers`: the enabled markers, whose colours its viewpoints wear where they stand. */
+  private async scan(
+    params: Record<string, unknown>,
+    names: string[],
+    markers: MarkerSpot[],
+  ): Promise<void> {
     const defaults = this.ctx.view.info?.result.default_viewpoints?.scan?.viewpoints;
     const count = (params.viewpoints as unknown[] | undefined)?.length ?? defaults?.length ?? 1;
     const outcome = await this.ctx.runner.run<JobReport>("Visibility scan", "scan", params, {
@@ -178,14 +186,22 @@ export class Occlusion {
       (o) => o.endsWith(".scan.ply") || o.endsWith(".scan.pcd"),
     );
     if (seen) this.ctx.history.scanOutput.set(String(params.path), seen);
+    const colours = viewpointColours(
+      (report.viewpoints ?? []).map((v) => v.position),
+      markers,
+    );
     if (outcome.decoded?.kind === "visibility") {
       try {
-        this.ctx.view.setVisibility(outcome.decoded as VisibilityData, scanNames(report, names));
+        this.ctx.view.setVisibility(
+          outcome.decoded as VisibilityData,
+          scanNames(report, names),
+          colours,
+        );
       } catch (error) {
         this.ctx.notices.fromError(error, "Visibility scan");
       }
     }
-    this.ctx.results.setCard("occlusion", "scan", scanCard(report, names));
+    this.ctx.results.setCard("occlusion", "scan", scanCard(report, names, colours));
   }
 
   private remember(path: string, report: JobReport): void {

@@ -11,6 +11,7 @@ import type {
   VisibilityData,
 } from "../decode/types";
 import { diagonal, robustBounds, serverExtent } from "../decode/robust_extent";
+import type { Rgb } from "../decode/colour_maps";
 import type { Bounds } from "../decode/types";
 import { FileFrame } from "../file_frame";
 import type { LoadResult } from "../results";
@@ -243,9 +244,12 @@ export class SceneView {
     return true;
   }
 
-  /** A scan's per-point answers; `names`: its viewpoints, which the first-viewpoint colours number. */
-  setVisibility(visibility: VisibilityData, names: string[] = []): void {
-    this.cloud?.setVisibility(visibility, names);
+  /**
+   * A scan's per-point answers; `names` and `colours`: its viewpoints', which
+   * the first-viewpoint colours number.
+   */
+  setVisibility(visibility: VisibilityData, names: string[] = [], colours: Rgb[] = []): void {
+    this.cloud?.setVisibility(visibility, names, colours);
     // An estimated mesh (planes) left from an earlier job would hide the coloured points.
     if (this.mesh && this.cloud) {
       this.gui.set("showMesh", false);
@@ -360,7 +364,12 @@ export class SceneView {
           const v = cloud.visibilityData!;
           const counts = new Array<number>(v.max + 1).fill(0);
           for (const k of v.firstStation ?? []) counts[Math.max(0, k)]! += 1;
-          this.legend.show({ kind: "first", names: cloud.visibilityNames, counts });
+          this.legend.show({
+            kind: "first",
+            names: cloud.visibilityNames,
+            colours: cloud.visibilityColours,
+            counts,
+          });
           return;
         }
         case "cluster":

@@ -7,13 +7,13 @@ import { FrameError } from "../protocol/frame";
 import type { Frame } from "../protocol/frame";
 import type { FrameInfo } from "../protocol/messages";
 import {
-  UNSEEN_COLOUR,
   classColour,
+  firstViewpointColour,
   ramp,
   segmentColour,
-  stationColour,
   visibilityColour,
 } from "./colour_maps";
+import type { Rgb } from "./colour_maps";
 import type {
   AssembleContext,
   Bounds,
@@ -345,11 +345,16 @@ export function assembleVisibility(
     max,
     histogram,
     firstStation,
-    firstColours:
-      firstStation === null
-        ? null
-        : paintByKey(firstStation, (k) => (k < 1 ? UNSEEN_COLOUR : stationColour(k))),
+    firstColours: firstStation === null ? null : paintFirstViewpoint(firstStation),
   };
+}
+
+/** Per point, the colour of the first viewpoint that sees it (firstViewpointColour). */
+export function paintFirstViewpoint(
+  firstStation: Int32Array,
+  colours: readonly Rgb[] = [],
+): Uint8Array {
+  return paintByKey(firstStation, (k) => firstViewpointColour(k, colours));
 }
 
 export function assembleCoveredBy(frame: Frame): CoveredByData {
@@ -367,7 +372,7 @@ export function assembleCoveredBy(frame: Frame): CoveredByData {
     kind: "covered_by",
     count: rank.length,
     rank,
-    colours: paintByKey(rank, (k) => (k < 1 ? UNSEEN_COLOUR : stationColour(k))),
+    colours: paintByKey(rank, (k) => firstViewpointColour(k)),
     covered,
   };
 }

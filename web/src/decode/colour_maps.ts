@@ -94,6 +94,17 @@ export function stationColour(rank: number): Rgb {
 }
 
 /**
+ * The colour of a scan's viewpoint `k` (from 1; below 1: seen by none):
+ * `colours[k - 1]`, its marker's colour where the viewer knows it, else the
+ * numbered station colour. The points it is the first to see, its legend row
+ * and its row in the scan's table all wear it.
+ */
+export function firstViewpointColour(k: number, colours: readonly Rgb[] = []): Rgb {
+  if (k < 1) return UNSEEN_COLOUR;
+  return colours[k - 1] ?? stationColour(k);
+}
+
+/**
  * A candidate's colour on the plan's heat map: the ramp at its gain left as a
  * share of the largest one (the best next station is the ramp's top); a
  * candidate that adds nothing is the ramp's bottom. Largest 0: all bottom.

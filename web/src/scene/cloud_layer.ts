@@ -11,7 +11,9 @@ import {
   PointsMaterial,
   Texture,
 } from "three";
+import { paintFirstViewpoint } from "../decode/assemble";
 import { ramp } from "../decode/colour_maps";
+import type { Rgb } from "../decode/colour_maps";
 import type { Bounds, CloudData, VisibilityData } from "../decode/types";
 
 export type CloudColourMode =
@@ -162,15 +164,23 @@ export class CloudLayer {
 
   /** The names of the viewpoints a visibility's first-viewpoint numbers count (from 1). */
   visibilityNames: string[] = [];
+  /** Their colours, where known (firstViewpointColour). */
+  visibilityColours: Rgb[] = [];
 
-  setVisibility(visibility: VisibilityData, names: string[] = []): void {
+  setVisibility(visibility: VisibilityData, names: string[] = [], colours: Rgb[] = []): void {
     if (visibility.count !== this.data.count) {
       throw new Error(
         `visibility: ${visibility.count} counts for a cloud of ${this.data.count} points`,
       );
     }
-    this.visibility = visibility;
+    // The decoder painted the first viewpoints in the numbered colours; the
+    // viewpoints' own (their markers') replace them.
+    this.visibility =
+      colours.length > 0 && visibility.firstStation !== null
+        ? { ...visibility, firstColours: paintFirstViewpoint(visibility.firstStation, colours) }
+        : visibility;
     this.visibilityNames = names;
+    this.visibilityColours = colours;
     this.attributes.delete("visibility");
     this.attributes.delete("first");
   }

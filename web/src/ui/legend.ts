@@ -2,13 +2,13 @@
 // visibility scale (seen by k viewpoints) or a continuous colour bar.
 
 import {
-  UNSEEN_COLOUR,
   css,
   classColour,
+  firstViewpointColour,
   rampCss,
-  stationColour,
   visibilityColour,
 } from "../decode/colour_maps";
+import type { Rgb } from "../decode/colour_maps";
 import { clear, h } from "./dom";
 import { integer, percent } from "./format";
 
@@ -17,8 +17,11 @@ export type LegendContent =
   | { kind: "classes"; names: string[]; counts: number[]; unlabelled: number }
   | { kind: "segments"; count: number; label: string; noun: string }
   | { kind: "visibility"; histogram: number[]; max: number }
-  /** counts[k]: points first seen by viewpoint k (from 1, names[k - 1]); counts[0] by none. */
-  | { kind: "first"; names: string[]; counts: number[] }
+  /**
+   * counts[k]: points first seen by viewpoint k (from 1, names[k - 1], in
+   * firstViewpointColour(k, colours)); counts[0] by none.
+   */
+  | { kind: "first"; names: string[]; colours: Rgb[]; counts: number[] }
   | { kind: "colourbar"; title: string; min: number; max: number; mean?: number }
   | { kind: "text"; text: string };
 
@@ -111,7 +114,7 @@ export class Legend {
           const name = k === 0 ? "none (unseen)" : (content.names[k - 1] ?? `#${k}`);
           box.append(
             h("div", { class: "flex items-center gap-2 py-0.5", testid: "legend-first" }, [
-              swatch(k === 0 ? UNSEEN_COLOUR : stationColour(k)),
+              swatch(firstViewpointColour(k, content.colours)),
               h("span", { class: "flex-1", text: name }),
               h("span", {
                 class: "tabular-nums text-slate-400",

@@ -1,7 +1,8 @@
 // Occlusion figures: the headline level, per-viewpoint figures and, for
 // meshes, the most occluded groups; the visibility scan's figures.
 
-import { css, stationColour } from "../decode/colour_maps";
+import { css, firstViewpointColour } from "../decode/colour_maps";
+import type { Rgb } from "../decode/colour_maps";
 import type { JobReport } from "../results";
 import { num } from "../results";
 import { h } from "./dom";
@@ -246,7 +247,7 @@ export function stationRows(report: JobReport, names: string[] = []): string[][]
 }
 
 /** The rows as a table, each of the first `stations` with its first-viewpoint colour. */
-function stationTable(rows: string[][], stations: number): HTMLElement {
+function stationTable(rows: string[][], stations: number, colours: Rgb[]): HTMLElement {
   return table(
     [
       "station",
@@ -263,7 +264,8 @@ function stationTable(rows: string[][], stations: number): HTMLElement {
         ? h("span", { class: "flex items-center gap-1.5" }, [
             h("span", {
               class: "inline-block h-2.5 w-2.5 shrink-0 rounded-full",
-              style: { background: css(stationColour(i + 1)) },
+              style: { background: css(firstViewpointColour(i + 1, colours)) },
+              testid: "scan-station-colour",
             }),
             h("span", { text: name! }),
           ])
@@ -275,7 +277,12 @@ function stationTable(rows: string[][], stations: number): HTMLElement {
   );
 }
 
-export function scanCard(report: JobReport, names: string[] = []): HTMLElement {
+/** The scan's card; `names` and `colours`: its viewpoints' (their markers'), where known. */
+export function scanCard(
+  report: JobReport,
+  names: string[] = [],
+  colours: Rgb[] = [],
+): HTMLElement {
   const fraction = num(report.visible_fraction);
   const classes = Array.isArray(report.classes)
     ? (report.classes as Record<string, unknown>[])
@@ -297,7 +304,7 @@ export function scanCard(report: JobReport, names: string[] = []): HTMLElement {
       ]),
       pointModelLine(report),
       h("div", { class: "mt-3", testid: "scan-stations" }, [
-        stationTable(stationRows(report, names), (report.viewpoints ?? []).length),
+        stationTable(stationRows(report, names), (report.viewpoints ?? []).length, colours),
       ]),
       h("details", { class: "mt-2" }, [
         h("summary", { class: "cursor-pointer text-xs text-slate-400", text: "positions" }),

@@ -128,6 +128,30 @@ describe("per-station answers and station toggles (e2e)", () => {
     expect(legend.rows.length).toBe(3);
     expect(legend.rows[0]).toContain("none");
     stations.forEach((s, i) => expect(legend.rows[i + 1]).toContain(s.name));
+    // One station, one colour: its marker's is the colour of its legend row,
+    // of its row in the scan's table and of the points it is the first to see.
+    const worn = await page.evaluate(() => {
+      const ctx = (window as any).__occlusion.app.ctx;
+      const rgb = (c: number[]) => `rgb(${c.map((v) => Math.round(v * 255)).join(", ")})`;
+      const markers = ctx.markers.enabled().map((m: any) => rgb(ctx.markers.colour(m.name)));
+      const background = (e: Element) => getComputedStyle(e).backgroundColor;
+      const legendRows = [...document.querySelectorAll("[data-testid=legend-first]")];
+      const legend = legendRows.slice(1).map((r) => background(r.firstElementChild!));
+      const table = [...document.querySelectorAll("[data-testid=scan-station-colour]")].map(
+        background,
+      );
+      // The first point each station is the first to see, in the cloud's "first" colours.
+      const visibility = ctx.view.cloud.visibilityData;
+      const points = [1, 2].map((k) => {
+        const i = visibility.firstStation.indexOf(k);
+        return rgb([...visibility.firstColours.slice(3 * i, 3 * i + 3)].map((v) => v / 255));
+      });
+      return { markers, legend, table, points };
+    });
+    expect(new Set(worn.markers).size).toBe(2);
+    expect(worn.legend).toEqual(worn.markers);
+    expect(worn.table).toEqual(worn.markers);
+    expect(worn.points).toEqual(worn.markers);
     await screenshot(page, "stations-first");
 
     // Untick the second station: -fscan runs from the first alone.
@@ -145,6 +169,15 @@ describe("per-station answers and station toggles (e2e)", () => {
     const one = await stationRows();
     expect(one.length).toBe(3);
     expect(one[0]![0]).toBe(stations[0]!.name);
+    // The first station keeps its marker's colour with the second unticked.
+    const kept = await page.evaluate(() => {
+      const ctx = (window as any).__occlusion.app.ctx;
+      const name = ctx.markers.enabled()[0].name;
+      const marker = ctx.markers.colour(name).map((v: number) => Math.round(v * 255));
+      const dot = document.querySelector("[data-testid=scan-station-colour]")!;
+      return { marker: `rgb(${marker.join(", ")})`, table: getComputedStyle(dot).backgroundColor };
+    });
+    expect(kept.table).toBe(kept.marker);
     // Alone, the first station sees what it saw and only it sees all of that.
     expect(one[0]![1]).toBe(percent(stations[0]!.visible_fraction));
     expect(one[0]![2]).toBe(percent(stations[0]!.visible_fraction));

@@ -1,4 +1,7 @@
 import { describe, expect, test } from "vitest";
+import { viewpointColours } from "../../src/app/viewpoint_colours";
+import { paintFirstViewpoint } from "../../src/decode/assemble";
+import { UNSEEN_COLOUR, firstViewpointColour, stationColour } from "../../src/decode/colour_maps";
 import type { JobReport } from "../../src/results";
 import { scanNames, stationRows } from "../../src/ui/occlusion_view";
 
@@ -35,5 +38,68 @@ describe("the scan's per-station table", () => {
     const rows = stationRows({ viewpoints: [{ name: "a" }] });
     expect(rows[0]).toEqual(["a", "—", "—"]);
     expect(rows[1]![2]).toBe("—");
+  });
+});
+
+describe("a scan's viewpoints wear their markers' colours", () => {
+  const markers = [
+    {
+      position: [1, 2, 1.5] as [number, number, number],
+      colour: [1, 0.5, 0] as [number, number, number],
+    },
+    {
+      position: [4, 2, 1.5] as [number, number, number],
+      colour: [0, 0, 1] as [number, number, number],
+    },
+  ];
+
+  test("by position, whatever the order the job reports them in", () => {
+    // The job reports the second marker first, then a viewpoint of its own.
+    const colours = viewpointColours(
+      [
+        [4, 2, 1.5],
+        [1, 2, 1.5],
+        [7, 7, 7],
+      ],
+      markers,
+    );
+    expect(colours).toEqual([[0, 0, 255], [255, 128, 0], stationColour(3)]);
+  });
+
+  test("a georeferenced position back through the viewer's frame still matches", () => {
+    const far = {
+      position: [512345.25, 5412345.5, 310.125] as [number, number, number],
+      colour: [0, 1, 0] as [number, number, number],
+    };
+    const shifted = far.position.map(
+      (v, i) => v - [512000, 5412000, 300][i]! + [512000, 5412000, 300][i]!,
+    );
+    expect(viewpointColours([shifted as [number, number, number]], [far])).toEqual([[0, 255, 0]]);
+    // A centimetre off is another place: the numbered colour.
+    expect(viewpointColours([[512345.26, 5412345.5, 310.125]], [far])).toEqual([stationColour(1)]);
+  });
+
+  test("a viewpoint without a position takes its number's colour", () => {
+    expect(viewpointColours([undefined], markers)).toEqual([stationColour(1)]);
+  });
+
+  test("the points first seen by a viewpoint are painted in its colour, unseen ones red", () => {
+    const first = new Int32Array([1, 2, -1, 3]);
+    const colours = viewpointColours(
+      [
+        [1, 2, 1.5],
+        [4, 2, 1.5],
+      ],
+      markers,
+    );
+    const painted = paintFirstViewpoint(first, colours);
+    expect([...painted]).toEqual([
+      ...[255, 128, 0],
+      ...[0, 0, 255],
+      ...UNSEEN_COLOUR,
+      ...stationColour(3),
+    ]);
+    expect(firstViewpointColour(0, colours)).toEqual(UNSEEN_COLOUR);
+    expect(firstViewpointColour(2, colours)).toEqual([0, 0, 255]);
   });
 });
