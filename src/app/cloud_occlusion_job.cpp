@@ -10,6 +10,7 @@
 #include "occlusion/app/errors.hpp"
 #include "occlusion/app/json_output.hpp"
 #include "occlusion/app/memory_budget.hpp"
+#include "occlusion/app/no_return_pile.hpp"
 #include "occlusion/app/work_budget.hpp"
 #include "occlusion/io/atomic_file.hpp"
 #include "occlusion/io/cloud_io.hpp"
@@ -209,6 +210,7 @@ CloudOcclusionReport run_cloud_occlusion_on(const PointCloud& cloud,
   report.shift = cloud.shift;
   report.warnings.insert(report.warnings.end(), viewpoints.warnings.begin(),
                          viewpoints.warnings.end());
+  warn_no_return_piles(cloud, request.max_range, report.warnings);
   report.openings = openings.size();
   const std::vector<PlanarPolygon> local_openings =
       job::openings_in_frame(openings, cloud, request.polygon_path);

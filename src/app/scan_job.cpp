@@ -7,6 +7,7 @@
 #include "occlusion/app/first_station_field.hpp"
 #include "occlusion/app/json_output.hpp"
 #include "occlusion/app/memory_budget.hpp"
+#include "occlusion/app/no_return_pile.hpp"
 #include "occlusion/app/work_budget.hpp"
 #include "occlusion/io/atomic_file.hpp"
 #include "occlusion/io/cloud_io.hpp"
@@ -64,6 +65,7 @@ ScanReport run_scan_on(const PointCloud& cloud, const ViewpointChoice::Resolved&
   report.frame = viewpoints.frame;
   report.warnings.insert(report.warnings.end(), viewpoints.warnings.begin(),
                          viewpoints.warnings.end());
+  warn_no_return_piles(cloud, request.max_range, report.warnings);
   report.shift = cloud.shift;
   for (const auto& position : viewpoints.positions) {
     report.viewpoint_positions.push_back(cloud.to_original(position));
