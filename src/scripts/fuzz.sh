@@ -27,26 +27,46 @@ mkdir -p "$build/findings" "$build/logs"
 # Leaks are findings too; an input that takes over 10 s or 2 GB is a hang or a bomb.
 export ASAN_OPTIONS="${ASAN_OPTIONS:-abort_on_error=1:detect_leaks=1}"
 export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
-failed=()
-for target in "${targets[@]}"; do
+# One target a core at a time (libFuzzer runs one process each); each writes
+# its verdict to a file, read in the targets' order once all have ended.
+jobs="${OCCLUSION_JOBS:-$(nproc)}"
+fuzz_one() {
+  local target="$1" seeds corpus log start status=0 elapsed runs
   seeds="$root/tests/fuzz/corpus/${target#fuzz_}"
   corpus="$build/corpus/${target#fuzz_}"
   mkdir -p "$corpus"
   log="$build/logs/$target.log"
   start=$(date +%s)
-  status=0
   "$build/tests/fuzz/$target" "$corpus" "$seeds" -max_total_time="$seconds" -timeout=10 \
     -rss_limit_mb=2048 -max_len=65536 -print_final_stats=1 \
     -artifact_prefix="$build/findings/$target-" >"$log" 2>&1 || status=$?
   elapsed=$(($(date +%s) - start))
   runs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' || echo "?")
   if ((status == 0)); then
-    echo "fuzz: $target ran ${elapsed} s, $runs inputs, no finding"
+    echo "fuzz: $target ran ${elapsed} s, $runs inputs, no finding" >"$log.verdict"
   else
-    echo "fuzz: $target FOUND a problem after ${elapsed} s (log $log, input in $build/findings/)"
-    grep -m 5 -E 'ERROR|fuzz:|runtime error' "$log" || true
-    failed+=("$target")
+    {
+      echo "fuzz: $target FOUND a problem after ${elapsed} s (log $log, input in $build/findings/)"
+      grep -m 5 -E 'ERROR|fuzz:|runtime error' "$log" || true
+    } >"$log.verdict"
+    echo "$target" >"$log.failed"
   fi
+}
+running=0
+for target in "${targets[@]}"; do
+  rm -f "$build/logs/$target.log.verdict" "$build/logs/$target.log.failed"
+  if ((running >= jobs)); then
+    wait -n
+    running=$((running - 1))
+  fi
+  fuzz_one "$target" &
+  running=$((running + 1))
+done
+wait
+failed=()
+for target in "${targets[@]}"; do
+  cat "$build/logs/$target.log.verdict"
+  [[ -f "$build/logs/$target.log.failed" ]] && failed+=("$target")
 done
 if ((${#failed[@]} > 0)); then
   echo "fuzz: findings in ${failed[*]}" >&2

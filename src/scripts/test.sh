@@ -115,7 +115,7 @@ bash "$root/src/scripts/build_sanitized.sh"
 # TIMEOUT; the guard is the outer one.
 stage "ASan+UBSan ctest"
 guard 3600 "$only" bash "$root/src/scripts/sanitize.sh"
-# Every reader under libFuzzer, 15 s each (docs/fuzzing.md); libFuzzer stops
+# Every reader under libFuzzer, 15 s each, a core each (docs/fuzzing.md); libFuzzer stops
 # each by itself, and a slow input is a finding (-timeout=10).
 stage "fuzz (every target)"
 FUZZ_SECONDS="${FUZZ_SECONDS:-15}" guard 3600 bash "$root/src/scripts/fuzz.sh"
