@@ -1,9 +1,10 @@
 #pragma once
 // A scanner that writes a fixed range for a beam that met nothing (3DTK's SICK
 // scans: 32.77 m) leaves a shell of points at its station's farthest range, as
-// if a sphere stood there. They are no surface: they hide nothing real, and
-// count in every figure as points seen. `max_range` (app/station_filter)
-// drops them; this finds them when it is off, so the job can say so.
+// if a sphere stood there. They are no surface, yet count in every figure as
+// points seen, and their discs can stand in other stations' way. `max_range`
+// (app/station_filter) drops them; this finds them when it is off, so the job
+// can say so.
 
 #include <cstddef>
 #include <string>
