@@ -7,12 +7,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <random>
+#include <limits>
 #include <string>
 
 #include "occlusion/app/in_memory_jobs.hpp"
 #include "occlusion/app/no_return_pile.hpp"
 #include "occlusion/app/station_filter.hpp"
+#include "occlusion/core/random.hpp"
+#include "occlusion/core/sampling.hpp"
 #include "occlusion/io/cloud_io.hpp"
 
 namespace occlusion {
@@ -22,16 +24,15 @@ std::string repository_file(const std::string& path) {
   return std::string(OCCLUSION_SOURCE_DIR) + "/files/" + path;
 }
 
-Eigen::Vector3f random_direction(std::mt19937& random) {
-  std::normal_distribution<float> normal;
-  Eigen::Vector3f d(normal(random), normal(random), normal(random));
-  return d.normalized();
+Eigen::Vector3f random_direction(Rng& rng) {
+  const double r1 = rng.uniform();
+  return sample_sphere_direction(r1, rng.uniform()).cast<float>();
 }
 
 // A closed 8 x 6 x 3 m room seen from a station at (4, 3, 1.5): each point
 // where a random direction from the station meets a wall, floor or ceiling.
-PointCloud room_scan(std::size_t points, std::uint32_t seed) {
-  std::mt19937 random(seed);
+PointCloud room_scan(std::size_t points, std::uint64_t seed) {
+  Rng random(seed);
   const Eigen::Vector3f station(4.0f, 3.0f, 1.5f);
   const Eigen::Vector3f lo(0, 0, 0), hi(8, 6, 3);
   PointCloud cloud;
@@ -51,8 +52,8 @@ PointCloud room_scan(std::size_t points, std::uint32_t seed) {
 }
 
 // `cloud` with `count` more points at `range` from its station in random directions.
-void add_no_returns(PointCloud& cloud, std::size_t count, float range, std::uint32_t seed) {
-  std::mt19937 random(seed);
+void add_no_returns(PointCloud& cloud, std::size_t count, float range, std::uint64_t seed) {
+  Rng random(seed);
   const Eigen::Vector3f station = cloud.stations.at(0).frame.origin.cast<float>();
   for (std::size_t i = 0; i < count; ++i) {
     cloud.positions.push_back(station + range * random_direction(random));
